@@ -1,0 +1,28 @@
+// Small dense linear algebra on the 3x3 block of a transform, done with the
+// care that the validator and the decomposition need.
+#pragma once
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace scene {
+
+// The upper-left 3x3 block: the linear part of an affine transform.
+glm::dmat3 linearPart(const glm::dmat4& m);
+
+// Singular values in descending order, by one-sided Jacobi rotations, which
+// keep relative accuracy even for a nearly singular block.
+glm::dvec3 singularValues(const glm::dmat3& a);
+
+// The 2-norm condition number sigma_max / sigma_min; infinity when singular.
+double conditionNumber(const glm::dmat3& a);
+
+// conditionNumber(a) > limit, where a cheap Frobenius-norm bound decides most
+// matrices without the SVD (the validator runs this once per object).
+bool conditionNumberExceeds(const glm::dmat3& a, double limit);
+
+// The transpose of a 4x4, as a file written column by column needs.
+glm::dmat4 transposed(const glm::dmat4& m);
+
+}  // namespace scene

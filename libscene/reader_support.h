@@ -1,0 +1,35 @@
+// What the two readers share beyond tokens: numbers on a line, comments,
+// invalid bytes and unknown keywords, each reported the same way.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "libscene/diagnostic.h"
+#include "libscene/text_lines.h"
+
+namespace scene {
+
+// Reports an invalid byte or a comment on the cursor's line; true if there
+// was one (the line is then not read any further).
+bool reportUnreadableLine(const LineCursor& cursor, DiagnosticList& out);
+
+// Reads exactly `count` numbers from the tokens starting at `first`; `what`
+// names them for the diagnostics ("the colour", "LOCATION"). Every bad token
+// is reported; false if any was.
+bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count, double* values,
+                 std::string_view what, DiagnosticList& out);
+
+// The closest candidate to `word`: the same word in another case, or one at
+// a small edit distance.
+std::optional<std::string_view> suggestKeyword(std::string_view word,
+                                               std::span<const std::string_view> candidates);
+
+// "unknown keyword 'sphere'" with a did-you-mean hint and fix-it when one of
+// `candidates` is close; `expected` describes what may stand there.
+void reportUnknownKeyword(const LineCursor& cursor, std::size_t tokenIndex,
+                          std::span<const std::string_view> candidates, std::string_view expected,
+                          DiagnosticList& out);
+
+}  // namespace scene

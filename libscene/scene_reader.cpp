@@ -1,0 +1,70 @@
+#include "libscene/scene_reader.h"
+
+#include <cctype>
+
+#include "libscene/instruction_reader.h"
+#include "libscene/sf_reader.h"
+#include "libscene/text_lines.h"
+
+namespace scene {
+
+namespace {
+
+bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {
+  if (text.size() < prefix.size()) return false;
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    if (std::toupper(static_cast<unsigned char>(text[i])) != prefix[i]) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+SceneFormat detectFormat(std::string_view text) {
+  LineCursor cursor(text);
+  while (cursor.next()) {
+    if (cursor.blank()) continue;
+    std::string_view first = cursor.token(0).text;
+    if (first == "OUTPUT_FILE" || first == "START" || first == "END") {
+      return SceneFormat::InstructionFile;
+    }
+    // A scene file whose names are misspelt or in lower case is still a
+    // scene file: its reader says what is wrong with better words.
+    for (std::string_view name : {"CAMERA", "LIGHT", "PLANE", "SPHERE", "CYLINDER", "CUBE"}) {
+      if (startsWithIgnoringCase(first, name.substr(0, 3))) return SceneFormat::SceneFile;
+    }
+    if (startsWithIgnoringCase(first, "OUTPUT") || startsWithIgnoringCase(first, "START")) {
+      return SceneFormat::InstructionFile;
+    }
+    return SceneFormat::Unknown;
+  }
+  return SceneFormat::SceneFile;
+}
+
+ReadResult parseScene(std::string_view text, std::string fileName, const ReadOptions& options) {
+  switch (detectFormat(text)) {
+    case SceneFormat::SceneFile:
+      return parseSceneFile(text, std::move(fileName), options);
+    case SceneFormat::InstructionFile:
+      return parseInstructionFile(text, std::move(fileName), options);
+    case SceneFormat::Unknown:
+      break;
+  }
+  ReadResult result{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
+  LineCursor cursor(text);
+  SourceSpan where{1, 1, 0};
+  while (cursor.next()) {
+    if (!cursor.blank()) {
+      where = cursor.tokenSpan(0);
+      break;
+    }
+  }
+  result.diagnostics
+      .error(DiagnosticCode::UnknownFormat, where,
+             "not a scene file or an instruction file")
+      .hint =
+      "a scene file starts with a CAMERA record, an instruction file with OUTPUT_FILE";
+  return result;
+}
+
+}  // namespace scene

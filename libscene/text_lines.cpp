@@ -1,0 +1,77 @@
+#include "libscene/text_lines.h"
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+namespace scene {
+
+LineCursor::LineCursor(std::string_view text) : text_(text) {
+  if (text_.starts_with("\xEF\xBB\xBF")) offset_ = 3;
+}
+
+bool LineCursor::next() {
+  if (offset_ >= text_.size()) return false;
+  ++lineNumber_;
+  // Columns count from the start of the line; the BOM belongs to no column.
+  const char* begin = text_.data() + offset_;
+  std::size_t remaining = text_.size() - offset_;
+  const void* newline = std::memchr(begin, '\n', remaining);
+  std::size_t length = newline ? static_cast<const char*>(newline) - begin : remaining;
+  offset_ += newline ? length + 1 : length;
+  if (length > 0 && begin[length - 1] == '\r') --length;
+  line_ = std::string_view(begin, length);
+
+  tokenCount_ = 0;
+  invalidByteColumn_.reset();
+  std::size_t i = 0;
+  while (i < length) {
+    unsigned char c = static_cast<unsigned char>(begin[i]);
+    if (c == ' ' || c == '\t') {
+      ++i;
+      continue;
+    }
+    std::size_t start = i;
+    while (i < length) {
+      c = static_cast<unsigned char>(begin[i]);
+      if (c == ' ' || c == '\t') break;
+      if ((c < 0x20 || c > 0x7E) && !invalidByteColumn_) {
+        invalidByteColumn_ = static_cast<std::uint32_t>(i + 1);
+        invalidByte_ = c;
+      }
+      ++i;
+    }
+    if (tokenCount_ < kMaxTokens) {
+      tokens_[tokenCount_] =
+          Token{std::string_view(begin + start, i - start), static_cast<std::uint32_t>(start + 1)};
+    }
+    ++tokenCount_;
+  }
+  return true;
+}
+
+SourceSpan LineCursor::endOfLine() const {
+  return SourceSpan{lineNumber_, static_cast<std::uint32_t>(line_.size() + 1), 0};
+}
+
+SourceSpan LineCursor::lineSpan() const {
+  if (tokenCount_ == 0) return endOfLine();
+  const Token& first = tokens_[0];
+  const Token& last = tokens_[storedTokens() - 1];
+  return SourceSpan{lineNumber_, first.column,
+                    static_cast<std::uint32_t>(last.column + last.text.size() - first.column)};
+}
+
+std::string describeInvalidByte(unsigned char byte) {
+  char buffer[64];
+  if (byte == 0) return "NUL byte";
+  if (byte == '\r') return "carriage return not followed by a line feed";
+  if (byte < 0x20 || byte == 0x7F) {
+    std::snprintf(buffer, sizeof buffer, "control character 0x%02X", byte);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "byte 0x%02X, which is not ASCII", byte);
+  }
+  return buffer;
+}
+
+}  // namespace scene

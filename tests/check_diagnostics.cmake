@@ -1,0 +1,27 @@
+# Runs sfcheck on one testdata file and compares what it prints with the
+# expected diagnostics beside the file (NAME.expect), or with nothing when
+# there is no such file. The exit status must be 1 exactly when an error is
+# expected. Called as: cmake -DSFCHECK=... -DDIR=... -DNAME=... -P this
+execute_process(
+  COMMAND ${SFCHECK} ${NAME}
+  WORKING_DIRECTORY ${DIR}
+  RESULT_VARIABLE status
+  OUTPUT_VARIABLE out
+  ERROR_VARIABLE err
+  TIMEOUT 20)
+# The last line is the summary; the rest are the diagnostics.
+string(REGEX REPLACE "sfcheck: [^\n]*\n$" "" diagnostics "${err}")
+set(expected "")
+if(EXISTS ${DIR}/${NAME}.expect)
+  file(READ ${DIR}/${NAME}.expect expected)
+endif()
+if(NOT diagnostics STREQUAL expected)
+  message(FATAL_ERROR "diagnostics differ for ${NAME}\n--- expected\n${expected}--- got\n${diagnostics}")
+endif()
+set(want_status 0)
+if(expected MATCHES ": error: ")
+  set(want_status 1)
+endif()
+if(NOT status EQUAL want_status)
+  message(FATAL_ERROR "sfcheck ${NAME} exited with ${status}, expected ${want_status}")
+endif()

@@ -1,0 +1,15 @@
+// The exit statuses every tool shares (TOOLS.md), in one place.
+#pragma once
+
+namespace tools {
+
+enum class ExitCode : int {
+  Success = 0,       // warnings allowed
+  InvalidInput = 1,  // the input is invalid, or the conversion cannot be done as asked
+  Usage = 2,         // the command line is wrong
+  IoError = 3,       // a file could not be read or written
+};
+
+inline int toInt(ExitCode code) { return static_cast<int>(code); }
+
+}  // namespace tools
