@@ -101,7 +101,12 @@ glm::dmat4 cameraFromLookAt(const glm::dvec3& location, const glm::dvec3& lookAt
   }
   glm::dvec3 right = glm::normalize(glm::cross(forward, upHint));
   glm::dvec3 up = glm::cross(right, forward);
-  return glm::dmat4(glm::dvec4(right, 0.0), glm::dvec4(up, 0.0), glm::dvec4(-forward, 0.0),
+  // Cross products of axis vectors give -0 entries; adding +0 clears the
+  // sign, which no reader of the matrix should have to see.
+  glm::dvec3 back = -forward + 0.0;
+  right += 0.0;
+  up += 0.0;
+  return glm::dmat4(glm::dvec4(right, 0.0), glm::dvec4(up, 0.0), glm::dvec4(back, 0.0),
                     glm::dvec4(location, 1.0));
 }
 
@@ -132,21 +137,22 @@ TransformDecomposition decomposeTransform(const glm::dmat4& m) {
   out.translation = glm::dvec3(m[3]);
   glm::dvec3 norms(glm::length(a[0]), glm::length(a[1]), glm::length(a[2]));
 
-  // Step 1: signs of the scale factors. A mirror needs an odd number of
-  // negative factors; of the sign choices that match det(A), take the one
-  // whose rotation turns least (largest trace), so that SCALE 1 -1 -1 stays
-  // a scale rather than becoming a half turn.
+  // Step 1: signs of the scale factors. Scales stay positive unless A is a
+  // mirror; then one factor is negative, the one whose rotation turns least
+  // (largest trace), so that SCALE -1 1 1 comes back as itself.
   double det = glm::determinant(a);
   glm::dvec3 bestSigns(1.0);
-  double bestTrace = -std::numeric_limits<double>::infinity();
-  for (int mask = 0; mask < 8; ++mask) {
-    glm::dvec3 signs((mask & 1) ? -1.0 : 1.0, (mask & 2) ? -1.0 : 1.0, (mask & 4) ? -1.0 : 1.0);
-    if ((signs.x * signs.y * signs.z < 0.0) != (det < 0.0)) continue;
-    double trace = 0.0;
-    for (int i = 0; i < 3; ++i) trace += signs[i] * a[i][i] / norms[i];
-    if (trace > bestTrace + 1e-12) {
-      bestTrace = trace;
-      bestSigns = signs;
+  if (det < 0.0) {
+    double bestTrace = -std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::dvec3 signs(1.0);
+      signs[axis] = -1.0;
+      double trace = 0.0;
+      for (int i = 0; i < 3; ++i) trace += signs[i] * a[i][i] / norms[i];
+      if (trace > bestTrace) {
+        bestTrace = trace;
+        bestSigns = signs;
+      }
     }
   }
   out.scale = bestSigns * norms;
