@@ -1,5 +1,6 @@
 #include "libscene/instruction_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -29,10 +30,10 @@ std::optional<Block> blockFromName(std::string_view name) {
 }
 
 // Every keyword a line may start with, for did-you-mean.
-constexpr std::array<std::string_view, 20> kAllKeywords = {
-    "OUTPUT_FILE", "START",     "END",       "LOCATION",  "LOOK_AT",  "COLOUR",   "AMBIENT",
-    "DIFFUSE",     "SPECULAR",  "SHININESS", "REFLECTIVITY", "TRANSPARENCY", "RI", "SCALE",
-    "TRANSLATE",   "ROTATE_X",  "ROTATE_Y",  "ROTATE_Z",  "CAMERA",   "OBJECT"};
+constexpr std::array<std::string_view, 18> kLineKeywords = {
+    "OUTPUT_FILE", "START",    "END",       "LOCATION",     "LOOK_AT",      "COLOUR",
+    "AMBIENT",     "DIFFUSE",  "SPECULAR",  "SHININESS",    "REFLECTIVITY", "TRANSPARENCY",
+    "RI",          "SCALE",    "TRANSLATE", "ROTATE_X",     "ROTATE_Y",     "ROTATE_Z"};
 
 constexpr std::array<std::string_view, 4> kObjectKinds = {"PLANE", "SPHERE", "CYLINDER", "CUBE"};
 
@@ -97,6 +98,7 @@ struct OpenBlock {
   std::vector<std::pair<std::string_view, SourceSpan>> seen;
   std::array<glm::dvec3, 2> vectors{};  // CAMERA: location, look_at; LIGHT: location, colour
   bool valuesOk = true;
+  bool duplicate = false;  // a second CAMERA: checked, then dropped
 
   const SourceSpan* find(std::string_view keyword) const {
     for (const auto& [k, span] : seen) {
@@ -113,8 +115,17 @@ class InstructionParser {
 
   void run() {
     while (!out_.full() && cursor_.next()) {
-      if (cursor_.blank() || reportUnreadableLine(cursor_, out_)) continue;
-      std::string_view keyword = cursor_.token(0).text;
+      if (cursor_.blank() || reportComment(cursor_, out_)) continue;
+      if (reportInvalidByte(cursor_, out_)) {
+        // A damaged START or END is still read, as far as the damage, so
+        // that the blocks stay balanced; any other damaged line is skipped.
+        cursor_.cutAtInvalidByte();
+        if (!stack_.empty()) stack_.back().valuesOk = false;
+        sawContent_ = true;
+        std::string_view first = cursor_.blank() ? "" : cursor_.token(0).text;
+        if (first != "START" && first != "END") continue;
+      }
+      std::string_view keyword = lineKeyword();
       if (skipping_ && !endsSkippedBlock(keyword)) continue;
       if (!sawContent_) {
         sawContent_ = true;
@@ -154,20 +165,60 @@ class InstructionParser {
     scene_.outputFileSpan = cursor_.tokenSpan(1);
   }
 
-  // While an unknown block is skipped: true for the line that ends the skip,
-  // its own END (consumed here) or a START of a known top-level block.
+  // The line's first token, or the keyword it spells in another case (which
+  // is reported, and then read as that keyword so that blocks stay balanced).
+  std::string_view lineKeyword() {
+    std::string_view word = cursor_.token(0).text;
+    if (std::find(kLineKeywords.begin(), kLineKeywords.end(), word) != kLineKeywords.end()) {
+      return word;
+    }
+    if (auto keyword = keywordInOtherCase(word, kLineKeywords)) {
+      reportUnknownKeyword(cursor_, 0, kLineKeywords, expectedHere(), out_);
+      return *keyword;
+    }
+    return word;
+  }
+
+  // What may start a line where the cursor is, in words.
+  std::string expectedHere() const {
+    if (stack_.empty()) return "START or END";
+    Block block = stack_.back().block;
+    if (block == Block::Object) return "START MATERIAL, START TRANSFORMATION or END";
+    return "a property of " + article(block) + std::string(blockName(block)) + " block";
+  }
+
+  // The block a START or END names (token 1), spelt right or in another case.
+  std::optional<Block> namedBlock() {
+    std::string_view word = cursor_.token(1).text;
+    if (auto block = blockFromName(word)) return block;
+    if (auto name = keywordInOtherCase(word, kBlockNames)) {
+      reportUnknownKeyword(cursor_, 1, kBlockNames, "a block name", out_);
+      return blockFromName(*name);
+    }
+    return std::nullopt;
+  }
+
+  // While an unknown block is skipped: true for a line that ends the skip
+  // and is then read as usual (an END of an open block, a START of a
+  // top-level block); its own END ends the skip and is consumed.
   bool endsSkippedBlock(std::string_view keyword) {
-    if (cursor_.tokenCount() < 2) return false;
+    if (cursor_.tokenCount() < 2 || (keyword != "END" && keyword != "START")) return false;
     std::string_view name = cursor_.token(1).text;
     if (keyword == "END" && name == *skipping_) {
       skipping_.reset();
       return false;
     }
-    if (keyword == "START" && (name == "CAMERA" || name == "LIGHT" || name == "OBJECT")) {
-      skipping_.reset();
-      return true;
-    }
-    return false;
+    std::optional<Block> block = blockFromName(name);
+    if (!block) return false;
+    bool endsOpenBlock = keyword == "END" && std::any_of(stack_.begin(), stack_.end(),
+                                                         [&](const OpenBlock& open) {
+                                                           return open.block == *block;
+                                                         });
+    bool startsTopLevel = keyword == "START" && (*block == Block::Camera ||
+                                                 *block == Block::Light ||
+                                                 *block == Block::Object);
+    if (endsOpenBlock || startsTopLevel) skipping_.reset();
+    return !skipping_;
   }
 
   void readStart() {
@@ -175,14 +226,14 @@ class InstructionParser {
       out_.error(DiagnosticCode::TokenCount, cursor_.endOfLine(), "START needs a block name");
       return;
     }
-    std::string_view name = cursor_.token(1).text;
-    std::optional<Block> block = blockFromName(name);
+    std::optional<Block> block = namedBlock();
     if (!block) {
       reportUnknownKeyword(cursor_, 1, kBlockNames, "a block name", out_);
       // Its lines would only repeat the error: skip to its END.
-      skipping_ = std::string(name);
+      skipping_ = std::string(cursor_.token(1).text);
       return;
     }
+    std::string name(blockName(*block));
     bool section = *block == Block::Material || *block == Block::Transformation;
     // A START that cannot nest here most likely means the open block lacks
     // its END: close what is open until the START fits.
@@ -222,16 +273,30 @@ class InstructionParser {
                                          std::string(kindName.substr(0, 40)) +
                                          "', expected PLANE, SPHERE, CYLINDER or CUBE");
           if (auto guess = suggestKeyword(kindName, kObjectKinds)) {
-            d.hint = "did you mean '" + std::string(*guess) + "'?";
             d.fixIt = FixIt{cursor_.tokenSpan(2), std::string(*guess)};
+            d.hint = "did you mean '" + std::string(*guess) + "'?";
+            if (keywordInOtherCase(kindName, kObjectKinds)) {
+              // "sphere" is read as the SPHERE it means.
+              d.hint = "keywords are upper case: " + d.hint;
+              object.kind = *objectKindFromName(*guess);
+            }
           }
-          open.valuesOk = false;
+          if (!keywordInOtherCase(kindName, kObjectKinds)) open.valuesOk = false;
         }
       } else {
         open.valuesOk = false;
       }
       object_ = std::move(object);
       transformStart_.reset();
+    }
+    if (*block == Block::Camera) {
+      if (cameraSpan_) {
+        out_.error(DiagnosticCode::DuplicateCamera, open.start, "a scene has exactly one CAMERA")
+            .notes.push_back({*cameraSpan_, "the first CAMERA is here"});
+        open.duplicate = true;
+      } else {
+        cameraSpan_ = open.start;
+      }
     }
     if (section && !stack_.empty()) {
       if (const SourceSpan* previous = stack_.back().find(name)) {
@@ -255,12 +320,12 @@ class InstructionParser {
       out_.error(DiagnosticCode::TokenCount, cursor_.tokenSpan(2),
                  "unexpected text after END " + std::string(cursor_.token(1).text));
     }
-    std::string_view name = cursor_.token(1).text;
-    std::optional<Block> block = blockFromName(name);
+    std::optional<Block> block = namedBlock();
     if (!block) {
       reportUnknownKeyword(cursor_, 1, kBlockNames, "a block name", out_);
       return;
     }
+    std::string name(blockName(*block));
     // Which open block does this END close?
     std::size_t match = stack_.size();
     for (std::size_t i = stack_.size(); i-- > 0;) {
@@ -295,7 +360,7 @@ class InstructionParser {
                    std::string(keyword) + " must stand inside a block")
             .hint = "only START lines may stand between blocks";
       } else {
-        reportUnknownKeyword(cursor_, 0, kAllKeywords, "START or END", out_);
+        reportUnknownKeyword(cursor_, 0, kLineKeywords, "START or END", out_);
       }
       return;
     }
@@ -307,20 +372,13 @@ class InstructionParser {
                    std::string(keyword) + " does not belong in " + article(open.block) +
                        std::string(blockName(open.block)) + " block");
       } else {
-        std::vector<std::string_view> candidates = keywordsOf(open.block);
-        std::string expected = "a property of " + article(open.block) +
-                               std::string(blockName(open.block)) + " block";
-        if (open.block == Block::Object) expected = "START MATERIAL, START TRANSFORMATION or END";
-        reportUnknownKeyword(cursor_, 0, candidates, expected, out_);
+        reportUnknownKeyword(cursor_, 0, keywordsOf(open.block), expectedHere(), out_);
       }
       open.valuesOk = false;
       return;
     }
-    double values[3] = {0.0, 0.0, 0.0};
-    if (!readNumbers(cursor_, 1, static_cast<std::size_t>(rule->count), values, keyword, out_)) {
-      open.valuesOk = false;
-      return;
-    }
+    // A property counts as given even when its numbers are bad, so that it
+    // is not also reported missing.
     SourceSpan keywordSpan = cursor_.tokenSpan(0);
     if (open.block != Block::Transformation) {
       if (const SourceSpan* previous = open.find(keyword)) {
@@ -332,6 +390,11 @@ class InstructionParser {
         return;
       }
       open.seen.emplace_back(rule->keyword, keywordSpan);
+    }
+    double values[3] = {0.0, 0.0, 0.0};
+    if (!readNumbers(cursor_, 1, static_cast<std::size_t>(rule->count), values, keyword, out_)) {
+      open.valuesOk = false;
+      return;
     }
     glm::dvec3 v(values[0], values[1], values[2]);
     switch (open.block) {
@@ -453,13 +516,7 @@ class InstructionParser {
                  "LOOK_AT is the camera's own LOCATION, so it looks nowhere");
       ok = false;
     }
-    if (cameraSpan_) {
-      out_.error(DiagnosticCode::DuplicateCamera, open.start, "a scene has exactly one CAMERA")
-          .notes.push_back({*cameraSpan_, "the first CAMERA is here"});
-      return;
-    }
-    cameraSpan_ = open.start;
-    if (!ok) return;
+    if (!ok || open.duplicate) return;
     scene_.camera.matrix = cameraFromLookAt(open.vectors[0], open.vectors[1]);
     scene_.camera.lookAt = open.vectors[1];
     scene_.camera.colour = glm::dvec3(0.0);

@@ -44,13 +44,16 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 
 }  // namespace
 
-bool reportUnreadableLine(const LineCursor& cursor, DiagnosticList& out) {
-  if (auto column = cursor.invalidByteColumn()) {
-    out.error(DiagnosticCode::InvalidByte, SourceSpan{cursor.lineNumber(), *column, 1},
-              "line contains a " + describeInvalidByte(cursor.invalidByte()))
-        .hint = "scene and instruction files are plain ASCII text";
-    return true;
-  }
+bool reportInvalidByte(const LineCursor& cursor, DiagnosticList& out) {
+  auto column = cursor.invalidByteColumn();
+  if (!column) return false;
+  out.error(DiagnosticCode::InvalidByte, SourceSpan{cursor.lineNumber(), *column, 1},
+            "line contains a " + describeInvalidByte(cursor.invalidByte()))
+      .hint = "scene and instruction files are plain ASCII text";
+  return true;
+}
+
+bool reportComment(const LineCursor& cursor, DiagnosticList& out) {
   if (!cursor.blank()) {
     std::string_view first = cursor.token(0).text;
     if (first.starts_with("#") || first.starts_with("//")) {
@@ -107,11 +110,17 @@ bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count,
   return ok;
 }
 
-std::optional<std::string_view> suggestKeyword(std::string_view word,
-                                               std::span<const std::string_view> candidates) {
+std::optional<std::string_view> keywordInOtherCase(std::string_view word,
+                                                   std::span<const std::string_view> candidates) {
   for (std::string_view c : candidates) {
     if (equalsIgnoringCase(word, c)) return c;
   }
+  return std::nullopt;
+}
+
+std::optional<std::string_view> suggestKeyword(std::string_view word,
+                                               std::span<const std::string_view> candidates) {
+  if (auto same = keywordInOtherCase(word, candidates)) return same;
   std::optional<std::string_view> best;
   std::size_t bestDistance = std::max<std::size_t>(1, word.size() / 3) + 1;
   for (std::string_view c : candidates) {

@@ -11,9 +11,12 @@
 
 namespace scene {
 
-// Reports an invalid byte or a comment on the cursor's line; true if there
-// was one (the line is then not read any further).
-bool reportUnreadableLine(const LineCursor& cursor, DiagnosticList& out);
+// Reports the first invalid byte on the cursor's line; true if there was one.
+bool reportInvalidByte(const LineCursor& cursor, DiagnosticList& out);
+
+// Reports a line that starts like a comment; true if it does (the line is
+// then skipped: it holds nothing either format can read).
+bool reportComment(const LineCursor& cursor, DiagnosticList& out);
 
 // Reads exactly `count` numbers from the tokens starting at `first`; `what`
 // names them for the diagnostics ("the colour", "LOCATION"). Every bad token
@@ -25,6 +28,11 @@ bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count,
 // a small edit distance.
 std::optional<std::string_view> suggestKeyword(std::string_view word,
                                                std::span<const std::string_view> candidates);
+
+// The candidate that `word` spells in another case ("sphere" -> "SPHERE"):
+// the reader reports the word and then reads on as if it were the keyword.
+std::optional<std::string_view> keywordInOtherCase(std::string_view word,
+                                                   std::span<const std::string_view> candidates);
 
 // "unknown keyword 'sphere'" with a did-you-mean hint and fix-it when one of
 // `candidates` is close; `expected` describes what may stand there.

@@ -25,6 +25,9 @@ SceneFormat detectFormat(std::string_view text) {
   while (cursor.next()) {
     if (cursor.blank()) continue;
     std::string_view first = cursor.token(0).text;
+    // Comments are errors in both formats, which the reader reports; they
+    // say nothing about which format this is.
+    if (first.starts_with("#") || first.starts_with("//")) continue;
     if (first == "OUTPUT_FILE" || first == "START" || first == "END") {
       return SceneFormat::InstructionFile;
     }

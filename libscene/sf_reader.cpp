@@ -66,7 +66,14 @@ class SceneFileParser {
 
   void run() {
     while (!out_.full() && pull()) {
-      if (cursor_.blank() || reportUnreadableLine(cursor_, out_)) continue;
+      if (cursor_.blank() || reportComment(cursor_, out_)) continue;
+      if (reportInvalidByte(cursor_, out_)) {
+        // Most likely a damaged record name: its body follows, and reading
+        // it as a record of no kind keeps its lines from being misread.
+        resyncing_ = false;
+        readBody(RecordKind::Unknown, "damaged", cursor_.lineSpan(), true);
+        continue;
+      }
       parseRecord();
     }
     finish();
@@ -110,8 +117,13 @@ class SceneFileParser {
                  "a record name stands alone on its line");
     }
     noteRecordOrder(kind, nameSpan);
+    readBody(kind, name, nameSpan, false);
+  }
 
-    // The colour line and the four matrix rows.
+  // The colour line and the four matrix rows of a record whose name line is
+  // the cursor's; `damaged` when that line was unreadable, and then a record
+  // cut short goes unreported (the damage is the error).
+  void readBody(RecordKind kind, std::string_view name, SourceSpan nameSpan, bool damaged) {
     RecordSpans spans;
     spans.record = nameSpan;
     std::array<double, 3> colour{};
@@ -121,7 +133,7 @@ class SceneFileParser {
     int linesRead = 0;
     while (linesRead < 5) {
       if (!cursor_.next()) {
-        reportTruncated(name, nameSpan, linesRead, "the file ends");
+        if (!damaged) reportTruncated(name, nameSpan, linesRead, "the file ends");
         return;
       }
       if (cursor_.blank()) {
@@ -133,13 +145,14 @@ class SceneFileParser {
         }
         continue;
       }
+      if (reportComment(cursor_, out_)) continue;
       if (recordKindFromName(cursor_.token(0).text) != RecordKind::Unknown) {
-        reportTruncated(name, nameSpan, linesRead, "the next record starts");
+        if (!damaged) reportTruncated(name, nameSpan, linesRead, "the next record starts");
         pending_ = true;
         return;
       }
       ++linesRead;
-      if (reportUnreadableLine(cursor_, out_)) {
+      if (reportInvalidByte(cursor_, out_)) {
         valuesOk = false;
         continue;
       }
@@ -234,8 +247,9 @@ class SceneFileParser {
   void finish() {
     if (out_.full()) return;
     if (!firstRecord_) {
-      out_.error(DiagnosticCode::MissingCamera, SourceSpan{1, 1, 0}, "file holds no records")
-          .hint = "a scene file starts with a CAMERA record";
+      out_.error(DiagnosticCode::MissingCamera, SourceSpan{1, 1, 0},
+                 out_.hasErrors() ? "scene has no CAMERA record" : "file holds no records")
+          .hint = "a scene file starts with a CAMERA record, an instruction file with OUTPUT_FILE";
       return;
     }
     if (!cameraSpan_) {

@@ -50,6 +50,21 @@ bool LineCursor::next() {
   return true;
 }
 
+void LineCursor::cutAtInvalidByte() {
+  if (!invalidByteColumn_) return;
+  std::uint32_t cut = *invalidByteColumn_;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < storedTokens(); ++i) {
+    Token& token = tokens_[i];
+    if (token.column >= cut) break;
+    std::size_t room = cut - token.column;
+    if (token.text.size() > room) token.text = token.text.substr(0, room);
+    ++kept;
+  }
+  tokenCount_ = kept;
+  line_ = line_.substr(0, cut - 1);
+}
+
 SourceSpan LineCursor::endOfLine() const {
   return SourceSpan{lineNumber_, static_cast<std::uint32_t>(line_.size() + 1), 0};
 }

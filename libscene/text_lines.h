@@ -44,6 +44,10 @@ class LineCursor {
   std::optional<std::uint32_t> invalidByteColumn() const { return invalidByteColumn_; }
   unsigned char invalidByte() const { return invalidByte_; }
 
+  // Drops what stands from the invalid byte on, so that a reader can go on
+  // with the start of a damaged line instead of losing the whole of it.
+  void cutAtInvalidByte();
+
   // A span just past the last character of the line, for "expected more".
   SourceSpan endOfLine() const;
   SourceSpan tokenSpan(std::size_t i) const { return tokens_[i].span(lineNumber_); }

@@ -1,0 +1,237 @@
+// The tools run in-process with their streams captured, as a user runs them.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tools/common/exit_code.h"
+#include "tools/common/file_io.h"
+#include "tools/sfcheck/sfcheck.h"
+#include "tools/sfconvert/sfconvert.h"
+
+namespace tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kValidScene =
+    "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+    "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
+    "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+
+const std::string kInstructions =
+    "OUTPUT_FILE pic.ppm\nSTART CAMERA\nLOCATION 0 0 5\nLOOK_AT 0 0 0\nEND CAMERA\n"
+    "START LIGHT\nLOCATION 3 3 3\nCOLOUR 1 1 1\nEND LIGHT\n"
+    "START OBJECT CUBE\nSTART MATERIAL\nCOLOUR 0 0 1\nAMBIENT 0.15\nEND MATERIAL\n"
+    "START TRANSFORMATION\nSCALE 0.5 0.5 0.5\nROTATE_Y 1.5707963267948966\n"
+    "END TRANSFORMATION\nEND OBJECT\n";
+
+class ToolTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("sftools-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::string write(const std::string& name, const std::string& content) const {
+    std::ofstream(path(name), std::ios::binary) << content;
+    return path(name);
+  }
+
+  std::string read(const std::string& name) const {
+    std::string error;
+    return readWholeFile(path(name), error).value_or("<missing>");
+  }
+
+  // Files in the folder, to see that nothing half-written stayed behind.
+  std::vector<std::string> files() const {
+    std::vector<std::string> out;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      out.push_back(entry.path().filename().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  template <typename Tool>
+  int run(Tool tool, std::vector<std::string> args) {
+    out_.str("");
+    err_.str("");
+    std::vector<const char*> argv;
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    return tool(static_cast<int>(argv.size()), argv.data(), out_, err_);
+  }
+
+  fs::path dir_;
+  std::ostringstream out_;
+  std::ostringstream err_;
+};
+
+TEST_F(ToolTest, SfcheckSumsUpAndExitsZeroOnValidFiles) {
+  std::string a = write("a.sf", kValidScene);
+  std::string b = write("b.txt", kInstructions);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", a, b}), 0);
+  EXPECT_EQ(err_.str(), "sfcheck: 2 files checked, 0 errors, 0 warnings\n");
+}
+
+TEST_F(ToolTest, SfcheckPrintsDiagnosticsInTheCompilersForm) {
+  std::string bad = write("bad.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+                                    "sphere\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", bad}), toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(err_.str(),
+            bad + ":7:1: error: unknown keyword 'sphere', expected a record name (CAMERA, LIGHT, "
+                  "PLANE, SPHERE, CYLINDER or CUBE) [unknown-keyword]\n"
+                  "  hint: keywords are upper case: did you mean 'SPHERE'?\n"
+                  "sfcheck: 1 file checked, 1 error, 0 warnings\n");
+}
+
+TEST_F(ToolTest, SfcheckWerrorAndJson) {
+  std::string unlit = write("unlit.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", unlit}), 0);
+  EXPECT_NE(err_.str().find("warning: scene has no LIGHT [no-light]"), std::string::npos);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", unlit}), 1);
+  EXPECT_NE(err_.str().find("error: scene has no LIGHT [no-light]"), std::string::npos);
+
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", unlit}), 0);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["summary"]["warnings"], 1);
+  EXPECT_EQ(report["files"][0]["format"], "scene-file");
+  const nlohmann::json& d = report["files"][0]["diagnostics"][0];
+  EXPECT_EQ(d["code"], "no-light");
+  EXPECT_EQ(d["severity"], "warning");
+  EXPECT_EQ(d["line"], 1);
+  EXPECT_EQ(d["column"], 1);
+}
+
+TEST_F(ToolTest, SfcheckWarnsWhenOutputFileLeavesItsFolder) {
+  std::string escape = write("e.txt", "OUTPUT_FILE ../../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                                      "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                                      "COLOUR 1 1 1\nEND LIGHT\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", escape}), 0);
+  EXPECT_NE(err_.str().find(":1:13: warning: OUTPUT_FILE '../../x.ppm' leaves the instruction "
+                            "file's folder [output-file-escapes]"),
+            std::string::npos)
+      << err_.str();
+  // Through a link that leads out of the folder.
+  fs::create_directory_symlink(fs::temp_directory_path(), dir_ / "out");
+  std::string linked = write("l.txt", "OUTPUT_FILE out/x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                                      "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                                      "COLOUR 1 1 1\nEND LIGHT\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", linked}), 1);
+  std::string inside = write("i.txt", "OUTPUT_FILE sub/../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                                      "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                                      "COLOUR 1 1 1\nEND LIGHT\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", inside}), 0) << err_.str();
+}
+
+TEST_F(ToolTest, ExitCodesForUsageAndUnreadableFiles) {
+  EXPECT_EQ(run(runSfcheck, {"sfcheck"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--bogus", "x"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", path("missing.sf")}), toInt(ExitCode::IoError));
+  EXPECT_NE(err_.str().find("cannot read the file: No such file or directory"),
+            std::string::npos);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--help"}), 0);
+  EXPECT_NE(out_.str().find("--werror"), std::string::npos);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--version"}), 0);
+  EXPECT_EQ(out_.str(), std::string(SCENEFILE_VERSION) + "\n");
+}
+
+TEST_F(ToolTest, SfconvertInstructionsToSceneFileReportsLosses) {
+  std::string in = write("in.txt", kInstructions);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("out.sf")}), 0);
+  EXPECT_NE(err_.str().find("warning: AMBIENT 0.15 of CUBE object 1 is dropped"),
+            std::string::npos);
+  EXPECT_EQ(read("out.sf").substr(0, 7), "CAMERA\n");
+  // --no-loss: an error, and no file at all.
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--no-loss", in, path("strict.sf")}), 1);
+  EXPECT_NE(err_.str().find("error: AMBIENT 0.15"), std::string::npos);
+  EXPECT_EQ(files(), (std::vector<std::string>{"in.txt", "out.sf"}));
+}
+
+TEST_F(ToolTest, SfconvertRoundTripsThroughBothFormats) {
+  std::string in = write("in.sf", kValidScene);
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("a.txt")}), 0) << err_.str();
+  EXPECT_NE(read("a.txt").find("OUTPUT_FILE a.ppm\n"), std::string::npos);
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", path("a.txt"), path("b.sf")}), 0) << err_.str();
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("n.sf")}), 0) << err_.str();
+  EXPECT_EQ(read("b.sf"), read("n.sf"));
+}
+
+TEST_F(ToolTest, SfconvertNeverWritesOverItsInput) {
+  std::string in = write("scene.sf", kValidScene);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, in}), toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(read("scene.sf"), kValidScene);
+  fs::create_symlink(in, dir_ / "alias.sf");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("alias.sf")}), 1);
+  EXPECT_EQ(read("scene.sf"), kValidScene);
+}
+
+TEST_F(ToolTest, SfconvertOutputFormatAndStdout) {
+  std::string in = write("scene.sf", kValidScene);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("out.xyz")}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("out.xyz"), "--to", "instructions"}), 0);
+  EXPECT_EQ(read("out.xyz").substr(0, 12), "OUTPUT_FILE ");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, "-", "--to", "sf"}), 0);
+  EXPECT_EQ(out_.str().substr(0, 7), "CAMERA\n");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, "-"}), toInt(ExitCode::Usage));
+}
+
+TEST_F(ToolTest, SfconvertRepairsTransposedFiles) {
+  std::string in = write("t.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 5 1\n"
+                                 "CUBE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n2 3 4 1\n");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("bad.sf")}), 1);
+  EXPECT_NE(err_.str().find("'sfconvert --transpose-matrices' repairs such files"),
+            std::string::npos);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--transpose-matrices", in, path("fixed.sf")}), 0);
+  EXPECT_EQ(read("fixed.sf"),
+            "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+            "\nCUBE\n1 1 1\n1 0 0 2\n0 1 0 3\n0 0 1 4\n0 0 0 1\n");
+}
+
+TEST_F(ToolTest, SfconvertApproximatesOnlyWhenAsked) {
+  std::string in = write("shear.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+                                     "CUBE\n1 1 1\n1 0.5 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("s.txt")}), 1);
+  EXPECT_NE(err_.str().find("[matrix-not-expressible]"), std::string::npos);
+  EXPECT_FALSE(fs::exists(path("s.txt")));
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--approximate", in, path("s.txt")}), 0);
+  EXPECT_NE(err_.str().find("note: m01 moves from 0.5 to"), std::string::npos) << err_.str();
+  EXPECT_TRUE(fs::exists(path("s.txt")));
+}
+
+TEST_F(ToolTest, SfconvertRejectsInvalidInputAndWritesNothing) {
+  std::string in = write("bad.sf", "CAMERA\n0 0 0\n");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("out.sf")}), 1);
+  EXPECT_NE(err_.str().find("[truncated-record]"), std::string::npos);
+  EXPECT_EQ(files(), std::vector<std::string>{"bad.sf"});
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("no/such/folder/out.sf")}), 1);
+  std::string good = write("good.sf", kValidScene);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", good, path("no/such/folder/out.sf")}),
+            toInt(ExitCode::IoError));
+}
+
+TEST(FileIo, AtomicWriteReplacesWholeAndLeavesNoTemporary) {
+  fs::path dir = fs::temp_directory_path() / ("sfatomic-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string error;
+  ASSERT_TRUE(writeFileAtomically(dir / "f", "old", error)) << error;
+  ASSERT_TRUE(writeFileAtomically(dir / "f", std::string(1 << 20, 'x'), error)) << error;
+  EXPECT_EQ(readWholeFile(dir / "f", error)->size(), 1u << 20);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tools
