@@ -1,0 +1,77 @@
+// A bounding volume hierarchy over boxes, built with the surface area
+// heuristic in binned form, stored flat in depth-first order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "renderer/bounds.h"
+
+namespace render {
+
+struct BvhNode {
+  Bounds bounds;
+  // Interior: index of the second child (the first follows this node).
+  // Leaf: index of the first item in `Bvh::items`.
+  std::uint32_t offset = 0;
+  std::uint16_t count = 0;  // items in a leaf; 0 for an interior node
+  std::uint8_t axis = 0;    // split axis of an interior node
+};
+
+class Bvh {
+ public:
+  static constexpr int kStackSize = 128;
+
+  Bvh() = default;
+  // Builds over the boxes; items are indices into `boxes`.
+  explicit Bvh(const std::vector<Bounds>& boxes);
+
+  bool empty() const { return nodes_.empty(); }
+  const std::vector<BvhNode>& nodes() const { return nodes_; }
+  const std::vector<std::uint32_t>& items() const { return items_; }
+
+  // Calls visit(item) for every item whose leaf box the ray meets within
+  // [0, tMax]; visit returns the new tMax (smaller after a hit, to prune) or
+  // a negative value to stop at once (for any-hit queries).
+  template <typename Visit>
+  void traverse(const BoxRay& ray, double tMax, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    bool negative[3] = {ray.inverseDirection.x < 0.0, ray.inverseDirection.y < 0.0,
+                        ray.inverseDirection.z < 0.0};
+    std::uint32_t stack[kStackSize];
+    int top = 0;
+    std::uint32_t current = 0;
+    for (;;) {
+      const BvhNode& node = nodes_[current];
+      if (hitsBox(node.bounds, ray, 0.0, tMax)) {
+        if (node.count > 0) {
+          for (std::uint32_t i = 0; i < node.count; ++i) {
+            tMax = visit(items_[node.offset + i]);
+            if (tMax < 0.0) return;
+          }
+        } else {
+          // Visit the child on the ray's near side first.
+          if (negative[node.axis]) {
+            stack[top++] = current + 1;
+            current = node.offset;
+          } else {
+            stack[top++] = node.offset;
+            current = current + 1;
+          }
+          continue;
+        }
+      }
+      if (top == 0) return;
+      current = stack[--top];
+    }
+  }
+
+ private:
+  std::uint32_t build(const std::vector<Bounds>& boxes, std::vector<glm::dvec3>& centres,
+                      std::uint32_t begin, std::uint32_t end, int depth);
+
+  std::vector<BvhNode> nodes_;
+  std::vector<std::uint32_t> items_;
+};
+
+}  // namespace render

@@ -1,0 +1,169 @@
+#include "renderer/render.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <numbers>
+#include <thread>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+namespace render {
+
+namespace {
+
+constexpr int kTileSize = 32;
+
+// SplitMix64: a counter-based generator, so each pixel's samples depend on
+// the seed and the pixel alone.
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+double unitInterval(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
+
+// Keeps an image finite whatever the scene: NaN becomes 0, and values past
+// the float range are clamped to it.
+float toStoredChannel(double v) {
+  if (!(v == v)) return 0.0f;
+  constexpr double kMax = std::numeric_limits<float>::max();
+  return static_cast<float>(std::clamp(v, -kMax, kMax));
+}
+
+template <typename PerTile>
+void forEachTile(int width, int height, int threads, PerTile&& perTile,
+                 const ProgressCallback& progress) {
+  int tilesX = (width + kTileSize - 1) / kTileSize;
+  int tilesY = (height + kTileSize - 1) / kTileSize;
+  int total = tilesX * tilesY;
+  std::atomic<int> next{0};
+  std::atomic<int> done{0};
+  std::mutex progressMutex;
+  auto work = [&](int worker) {
+    for (int tile = next++; tile < total; tile = next++) {
+      int x0 = (tile % tilesX) * kTileSize;
+      int y0 = (tile / tilesX) * kTileSize;
+      perTile(worker, x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height));
+      int finished = ++done;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(progressMutex);
+        progress(finished, total);
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& t : pool) t.join();
+}
+
+int threadCount(int requested) {
+  if (requested > 0) return requested;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+}  // namespace
+
+PinholeCamera::PinholeCamera(const scene::Camera& camera, const RenderSettings& settings)
+    : width_(settings.width), height_(settings.height) {
+  eye_ = glm::dvec3(camera.matrix[3]);
+  forward_ = glm::normalize(-glm::dvec3(camera.matrix[2]));
+  glm::dvec3 up(camera.matrix[1]);
+  up_ = glm::normalize(up - glm::dot(up, forward_) * forward_);
+  right_ = glm::cross(forward_, up_);
+  tanHalfHeight_ = std::tan(settings.verticalFovDegrees * std::numbers::pi / 360.0);
+  tanHalfWidth_ = tanHalfHeight_ * width_ / height_;
+}
+
+Ray PinholeCamera::rayThrough(double x, double y) const {
+  double sx = (2.0 * x / width_ - 1.0) * tanHalfWidth_;
+  double sy = (1.0 - 2.0 * y / height_) * tanHalfHeight_;
+  return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
+}
+
+glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed) {
+  if (count <= 1) return {i + 0.5, j + 0.5};
+  int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
+  int rows = (count + columns - 1) / columns;
+  std::uint64_t state = mix(seed ^ mix((static_cast<std::uint64_t>(j) << 32) ^
+                                       static_cast<std::uint32_t>(i)) ^
+                            mix(static_cast<std::uint64_t>(index) + 0x5851F42D4C957F2Dull));
+  double u = unitInterval(mix(state));
+  double v = unitInterval(mix(state + 1));
+  return {i + ((index % columns) + u) / columns, j + ((index / columns) + v) / rows};
+}
+
+Image renderImage(const RenderScene& scene, const RenderSettings& settings,
+                  RenderStatistics* statistics, const ProgressCallback& progress) {
+  auto start = std::chrono::steady_clock::now();
+  Image image;
+  image.width = settings.width;
+  image.height = settings.height;
+  image.rgb.assign(static_cast<std::size_t>(settings.width) * settings.height * 3, 0.0f);
+  PinholeCamera camera(scene.camera(), settings);
+  Tracer tracer(scene, settings.maxDepth);
+  // The media the camera starts in, for a camera inside glass.
+  MediumStack eyeMedia;
+  for (std::uint32_t object : scene.mediaContaining(camera.eye())) eyeMedia.push(object);
+
+  int threads = threadCount(settings.threads);
+  std::vector<RayCounts> counts(threads);
+  int spp = std::max(1, settings.samplesPerPixel);
+  forEachTile(
+      settings.width, settings.height, threads,
+      [&](int worker, int x0, int y0, int x1, int y1) {
+        for (int j = y0; j < y1; ++j) {
+          for (int i = x0; i < x1; ++i) {
+            glm::dvec3 sum(0.0);
+            for (int s = 0; s < spp; ++s) {
+              glm::dvec2 at = samplePosition(i, j, s, spp, settings.seed);
+              MediumStack media = eyeMedia;
+              ++counts[worker].primary;
+              sum += tracer.trace(camera.rayThrough(at.x, at.y), RaySource{}, 0, media,
+                                  counts[worker]);
+            }
+            sum /= static_cast<double>(spp);
+            float* p = &image.rgb[3 * (static_cast<std::size_t>(j) * settings.width + i)];
+            for (int c = 0; c < 3; ++c) p[c] = toStoredChannel(sum[c]);
+          }
+        }
+      },
+      progress);
+
+  if (statistics) {
+    statistics->rays = RayCounts{};
+    for (const RayCounts& c : counts) statistics->rays += c;
+    statistics->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return image;
+}
+
+std::vector<std::int32_t> renderObjectIds(const RenderScene& scene,
+                                          const RenderSettings& settings) {
+  std::vector<std::int32_t> ids(static_cast<std::size_t>(settings.width) * settings.height, -1);
+  PinholeCamera camera(scene.camera(), settings);
+  forEachTile(
+      settings.width, settings.height, threadCount(settings.threads),
+      [&](int, int x0, int y0, int x1, int y1) {
+        for (int j = y0; j < y1; ++j) {
+          for (int i = x0; i < x1; ++i) {
+            if (auto hit = scene.closestHit(camera.rayThrough(i + 0.5, j + 0.5), RaySource{})) {
+              ids[static_cast<std::size_t>(j) * settings.width + i] =
+                  static_cast<std::int32_t>(hit->object);
+            }
+          }
+        }
+      },
+      {});
+  return ids;
+}
+
+}  // namespace render

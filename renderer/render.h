@@ -1,0 +1,76 @@
+// Rendering a whole image: the camera of RENDERING.md, stratified samples
+// with a seed, tiles spread over threads.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "renderer/render_scene.h"
+#include "renderer/tracer.h"
+
+namespace render {
+
+struct RenderSettings {
+  int width = 640;
+  int height = 480;
+  double verticalFovDegrees = 60.0;
+  int samplesPerPixel = 1;
+  int maxDepth = 5;
+  int threads = 0;  // 0: every core
+  std::uint64_t seed = 0;
+};
+
+// Primary rays of the scene's camera: a pinhole at the eye, forward and up
+// orthonormalised (forward first), the vertical field of view given and the
+// horizontal one from the aspect ratio.
+class PinholeCamera {
+ public:
+  PinholeCamera(const scene::Camera& camera, const RenderSettings& settings);
+  // The ray through image position (x, y), in pixels from the top-left
+  // corner: pixel (i, j)'s centre is (i + 0.5, j + 0.5).
+  Ray rayThrough(double x, double y) const;
+  const glm::dvec3& eye() const { return eye_; }
+
+ private:
+  glm::dvec3 eye_, forward_, up_, right_;
+  double tanHalfHeight_;
+  double tanHalfWidth_;
+  double width_, height_;
+};
+
+// Linear RGB, row by row from the top, three floats a pixel.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgb;
+  glm::vec3 pixel(int x, int y) const {
+    const float* p = &rgb[3 * (static_cast<std::size_t>(y) * width + x)];
+    return {p[0], p[1], p[2]};
+  }
+};
+
+struct RenderStatistics {
+  double seconds = 0.0;
+  RayCounts rays;
+};
+
+// Called after each finished tile with the tiles done and the total.
+using ProgressCallback = std::function<void(int done, int total)>;
+
+Image renderImage(const RenderScene& scene, const RenderSettings& settings,
+                  RenderStatistics* statistics = nullptr, const ProgressCallback& progress = {});
+
+// The index of the object each pixel's centre ray meets first, or -1: the
+// picture that geometry tests compare.
+std::vector<std::int32_t> renderObjectIds(const RenderScene& scene,
+                                          const RenderSettings& settings);
+
+// The position of sample `index` of `count` in pixel (i, j): the centre for
+// one sample, else a jittered point in its own cell of a stratified grid,
+// the same for a given seed whatever the thread.
+glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed);
+
+}  // namespace render

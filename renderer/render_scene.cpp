@@ -1,0 +1,210 @@
+#include "renderer/render_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "renderer/float_error.h"
+#include "renderer/unit_shapes.h"
+
+namespace render {
+
+namespace {
+
+// The inverse of a 3x3 block from its adjugate: each entry is a product of
+// the original entries, which keeps the digits that glm::inverse's division
+// first would lose on a badly scaled block.
+glm::dmat3 inverse3(const glm::dmat3& a) {
+  glm::dmat3 adjugateT(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
+  double det = glm::dot(a[0], adjugateT[0]);
+  return glm::transpose(adjugateT) / det;
+}
+
+}  // namespace
+
+std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
+  if (kind == scene::ObjectKind::Plane) return std::nullopt;
+  glm::dvec3 centre(m[3]);
+  glm::dvec3 extent(0.0);
+  for (int r = 0; r < 3; ++r) {
+    double x = m[0][r];
+    double y = m[1][r];
+    double z = m[2][r];
+    switch (kind) {
+      case scene::ObjectKind::Sphere:
+        extent[r] = std::sqrt(x * x + y * y + z * z);
+        break;
+      case scene::ObjectKind::Cylinder:
+        extent[r] = std::sqrt(x * x + z * z) + std::abs(y);
+        break;
+      default:
+        extent[r] = std::abs(x) + std::abs(y) + std::abs(z);
+        break;
+    }
+  }
+  // Widen by the rounding of the bounds themselves.
+  glm::dvec3 slack = gamma(8) * (abs(centre) + extent);
+  return Bounds{centre - extent - slack, centre + extent + slack};
+}
+
+RenderScene::RenderScene(const scene::Scene& scene) : camera_(scene.camera) {
+  objects_.reserve(scene.objects.size());
+  std::vector<Bounds> boxes;
+  for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+    const scene::Object& o = scene.objects[i];
+    RenderObject r;
+    r.kind = o.kind;
+    r.toWorld = o.matrix;
+    r.toLocal = inverse3(glm::dmat3(o.matrix));
+    r.toLocalOffset = -(r.toLocal * glm::dvec3(o.matrix[3]));
+    r.normalToWorld = glm::transpose(r.toLocal);
+    r.material = o.material;
+    hasTransparency_ |= o.material.transparency > 0.0;
+    objects_.push_back(r);
+    if (auto box = worldBounds(o.kind, o.matrix)) {
+      bounded_.push_back(i);
+      boxes.push_back(*box);
+    } else {
+      planes_.push_back(i);
+    }
+  }
+  bvh_ = Bvh(boxes);
+  for (const scene::Light& light : scene.lights) {
+    lights_.push_back(RenderLight{light.position(), light.colour});
+  }
+}
+
+std::optional<RenderScene::Candidate> RenderScene::intersectObject(std::uint32_t index,
+                                                                   const Ray& ray,
+                                                                   const RaySource& source,
+                                                                   double tMax) const {
+  const RenderObject& object = objects_[index];
+  bool self = index == source.object;
+  // A ray leaving a plane, or leaving a convex solid outward, cannot meet it.
+  if (self && (object.kind == scene::ObjectKind::Plane || !source.inward)) return std::nullopt;
+  glm::dvec3 o = object.toLocal * ray.origin + object.toLocalOffset;
+  glm::dvec3 d = object.toLocal * ray.direction;
+  ShapeSpan span = intersectUnitShape(object.kind, o, d);
+  if (span.empty) return std::nullopt;
+  // The nearest end of the span ahead of the origin; a ray that left this
+  // solid inward meets it again only where it leaves.
+  if (!self && span.enter > 0.0 && span.enter < tMax) return Candidate{span.enter, false};
+  if (object.kind != scene::ObjectKind::Plane && span.exit > 0.0 && span.exit < tMax) {
+    return Candidate{span.exit, true};
+  }
+  return std::nullopt;
+}
+
+Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate& c) const {
+  const RenderObject& object = objects_[index];
+  glm::dvec3 o = object.toLocal * ray.origin + object.toLocalOffset;
+  glm::dvec3 d = object.toLocal * ray.direction;
+  ShapeSpan span = intersectUnitShape(object.kind, o, d);
+  glm::dvec3 localNormal = c.atExit ? span.exitNormal : span.enterNormal;
+  SurfacePoint s = refineOntoSurface(object.kind, o, d, c.t, localNormal);
+
+  // Step 1: to world space, with the error bound of an affine transform of
+  // a point that already carries an error (pbrt-v4, Transform of Point3fi).
+  Hit hit;
+  hit.t = c.t;
+  hit.object = index;
+  const glm::dmat4& m = object.toWorld;
+  hit.point = glm::dvec3(m * glm::dvec4(s.point, 1.0));
+  for (int r = 0; r < 3; ++r) {
+    double magnitude = std::abs(m[3][r]);
+    double carried = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      magnitude += std::abs(m[k][r] * s.point[k]);
+      carried += std::abs(m[k][r]) * s.error[k];
+    }
+    hit.pointError[r] = gamma(3) * magnitude + (1.0 + gamma(3)) * carried;
+  }
+  // Step 2: the normal, through the inverse transpose.
+  hit.normal = glm::normalize(object.normalToWorld * s.normal);
+  hit.fromInside = c.atExit;
+  return hit;
+}
+
+std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& source,
+                                           double tMax) const {
+  std::uint32_t best = RaySource::kNone;
+  Candidate bestCandidate{tMax, false};
+  auto consider = [&](std::uint32_t index) {
+    if (auto c = intersectObject(index, ray, source, bestCandidate.t)) {
+      best = index;
+      bestCandidate = *c;
+    }
+  };
+  for (std::uint32_t plane : planes_) consider(plane);
+  BoxRay boxRay{ray.origin, 1.0 / ray.direction};
+  bvh_.traverse(boxRay, bestCandidate.t, [&](std::uint32_t item) {
+    consider(bounded_[item]);
+    return bestCandidate.t;
+  });
+  if (best == RaySource::kNone) return std::nullopt;
+  return finishHit(best, ray, bestCandidate);
+}
+
+std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySource& source,
+                                                     double tMax) const {
+  std::uint32_t best = RaySource::kNone;
+  Candidate bestCandidate{tMax, false};
+  for (std::uint32_t i = 0; i < objects_.size(); ++i) {
+    if (auto c = intersectObject(i, ray, source, bestCandidate.t)) {
+      best = i;
+      bestCandidate = *c;
+    }
+  }
+  if (best == RaySource::kNone) return std::nullopt;
+  return finishHit(best, ray, bestCandidate);
+}
+
+bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax) const {
+  for (std::uint32_t plane : planes_) {
+    if (intersectObject(plane, ray, source, tMax)) return true;
+  }
+  bool found = false;
+  BoxRay boxRay{ray.origin, 1.0 / ray.direction};
+  bvh_.traverse(boxRay, tMax, [&](std::uint32_t item) {
+    if (intersectObject(bounded_[item], ray, source, tMax)) {
+      found = true;
+      return -1.0;
+    }
+    return tMax;
+  });
+  return found;
+}
+
+std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) const {
+  std::vector<std::uint32_t> media;
+  for (std::uint32_t i = 0; i < objects_.size(); ++i) {
+    const RenderObject& object = objects_[i];
+    if (object.kind == scene::ObjectKind::Plane || object.material.transparency <= 0.0) continue;
+    glm::dvec3 local = object.toLocal * p + object.toLocalOffset;
+    bool inside = false;
+    switch (object.kind) {
+      case scene::ObjectKind::Sphere:
+        inside = glm::dot(local, local) < 1.0;
+        break;
+      case scene::ObjectKind::Cube:
+        inside = std::abs(local.x) < 1.0 && std::abs(local.y) < 1.0 && std::abs(local.z) < 1.0;
+        break;
+      case scene::ObjectKind::Cylinder:
+        inside = local.x * local.x + local.z * local.z < 1.0 && std::abs(local.y) < 1.0;
+        break;
+      case scene::ObjectKind::Plane:
+        break;
+    }
+    if (inside) media.push_back(i);
+  }
+  // Larger solids first: the smallest is the innermost.
+  std::sort(media.begin(), media.end(), [this](std::uint32_t a, std::uint32_t b) {
+    return std::abs(glm::determinant(glm::dmat3(objects_[a].toWorld))) >
+           std::abs(glm::determinant(glm::dmat3(objects_[b].toWorld)));
+  });
+  return media;
+}
+
+}  // namespace render

@@ -1,0 +1,104 @@
+// A libscene scene compiled for tracing: per object the inverse and normal
+// matrices and world bounds, a BVH over the bounded objects, and the
+// unbounded planes kept aside.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "libscene/scene.h"
+#include "renderer/bvh.h"
+
+namespace render {
+
+struct Ray {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0, 0.0, -1.0};
+};
+
+// Which surface a ray leaves, so that it is not found again at t = 0: a ray
+// leaving a convex solid (or a plane) outward cannot meet it again, and one
+// going inward meets it only where it leaves.
+struct RaySource {
+  static constexpr std::uint32_t kNone = 0xFFFFFFFF;
+  std::uint32_t object = kNone;
+  bool inward = false;
+};
+
+struct RenderObject {
+  scene::ObjectKind kind = scene::ObjectKind::Sphere;
+  glm::dmat4 toWorld{1.0};
+  glm::dmat3 toLocal{1.0};          // inverse of the 3x3 block
+  glm::dvec3 toLocalOffset{0.0};    // -toLocal * translation
+  glm::dmat3 normalToWorld{1.0};    // inverse transpose of the 3x3 block
+  scene::Material material;
+};
+
+struct RenderLight {
+  glm::dvec3 position{0.0};
+  glm::dvec3 colour{1.0};
+};
+
+// A surface point found by a ray.
+struct Hit {
+  double t = 0.0;
+  std::uint32_t object = RaySource::kNone;
+  glm::dvec3 point{0.0};       // world space, on the surface
+  glm::dvec3 pointError{0.0};  // bound on the error of `point`
+  glm::dvec3 normal{0.0};      // unit, outward (for a plane: its +y side)
+  bool fromInside = false;     // the ray was inside the solid
+};
+
+class RenderScene {
+ public:
+  explicit RenderScene(const scene::Scene& scene);
+
+  const std::vector<RenderObject>& objects() const { return objects_; }
+  const std::vector<RenderLight>& lights() const { return lights_; }
+  const scene::Camera& camera() const { return camera_; }
+  bool hasTransparency() const { return hasTransparency_; }
+  const Bvh& bvh() const { return bvh_; }
+
+  // The nearest surface with 0 < t < tMax.
+  std::optional<Hit> closestHit(const Ray& ray, const RaySource& source,
+                                double tMax = std::numeric_limits<double>::infinity()) const;
+  // Whether any surface lies at 0 < t < tMax (shadow rays: transparent
+  // objects cast shadows too).
+  bool anyHit(const Ray& ray, const RaySource& source, double tMax) const;
+
+  // The same queries without the hierarchy: every object is tested. The
+  // reference that the BVH must agree with.
+  std::optional<Hit> closestHitBruteForce(const Ray& ray, const RaySource& source,
+                                          double tMax) const;
+
+  // Transparent solids that contain `p`, outermost first (by volume): the
+  // media a camera placed there starts in.
+  std::vector<std::uint32_t> mediaContaining(const glm::dvec3& p) const;
+
+ private:
+  struct Candidate {
+    double t;
+    bool atExit;  // the far end of the span: the ray was inside
+  };
+  std::optional<Candidate> intersectObject(std::uint32_t index, const Ray& ray,
+                                           const RaySource& source, double tMax) const;
+  Hit finishHit(std::uint32_t index, const Ray& ray, const Candidate& candidate) const;
+
+  std::vector<RenderObject> objects_;
+  std::vector<std::uint32_t> bounded_;  // BVH item -> object index
+  std::vector<std::uint32_t> planes_;   // unbounded objects, tested for every ray
+  std::vector<RenderLight> lights_;
+  scene::Camera camera_;
+  Bvh bvh_;
+  bool hasTransparency_ = false;
+};
+
+// World bounds of a unit shape under an object matrix (none for a plane).
+std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& toWorld);
+
+}  // namespace render

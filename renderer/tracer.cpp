@@ -1,0 +1,157 @@
+#include "renderer/tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "renderer/float_error.h"
+
+namespace render {
+
+void MediumStack::remove(std::uint32_t object) {
+  for (int i = size_ - 1; i >= 0; --i) {
+    if (objects_[i] == object) {
+      std::copy(objects_.begin() + i + 1, objects_.begin() + size_, objects_.begin() + i);
+      --size_;
+      return;
+    }
+  }
+}
+
+double MediumStack::refractiveIndex(const RenderScene& scene) const {
+  return size_ == 0 ? 1.0 : scene.objects()[objects_[size_ - 1]].material.ri;
+}
+
+double schlickReflectance(double n1, double n2, double cosIncident) {
+  double r0 = (n1 - n2) / (n1 + n2);
+  r0 *= r0;
+  double cosine = cosIncident;
+  if (n1 > n2) {
+    // Going into a lighter medium, the transmitted angle is the larger one.
+    double sin2t = (n1 / n2) * (n1 / n2) * (1.0 - cosIncident * cosIncident);
+    if (sin2t >= 1.0) return 1.0;
+    cosine = std::sqrt(1.0 - sin2t);
+  }
+  double x = 1.0 - cosine;
+  return r0 + (1.0 - r0) * x * x * x * x * x;
+}
+
+bool refractDirection(const glm::dvec3& d, const glm::dvec3& n, double n1, double n2,
+                      glm::dvec3& refracted) {
+  double eta = n1 / n2;
+  double cosIncident = -glm::dot(d, n);
+  double k = 1.0 - eta * eta * (1.0 - cosIncident * cosIncident);
+  if (k < 0.0) return false;
+  refracted = glm::normalize(eta * d + (eta * cosIncident - std::sqrt(k)) * n);
+  return true;
+}
+
+bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, RayCounts& counts) const {
+  ++counts.shadow;
+  Ray ray;
+  glm::dvec3 toLight = light - hit.point;
+  ray.origin = offsetRayOrigin(hit.point, hit.pointError, hit.normal, toLight);
+  ray.direction = light - ray.origin;
+  RaySource source{hit.object, glm::dot(ray.direction, hit.normal) < 0.0};
+  // The open segment ends just short of the light by the rounding a hit
+  // there could carry, so that a light lying on a surface is not hidden by
+  // that surface.
+  double extent = std::max({std::abs(light.x), std::abs(light.y), std::abs(light.z),
+                            std::abs(ray.origin.x), std::abs(ray.origin.y),
+                            std::abs(ray.origin.z)});
+  double length = std::max({std::abs(ray.direction.x), std::abs(ray.direction.y),
+                            std::abs(ray.direction.z)});
+  if (length == 0.0) return false;
+  double tMax = 1.0 - gamma(32) * extent / length;
+  if (tMax <= 0.0) return false;
+  return scene_.anyHit(ray, source, tMax);
+}
+
+glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
+                                const glm::dvec3& toViewer, RayCounts& counts) const {
+  const scene::Material& m = scene_.objects()[hit.object].material;
+  glm::dvec3 colour(0.0);
+  for (const RenderLight& light : scene_.lights()) {
+    colour += m.colour * light.colour * m.ambient;
+    glm::dvec3 l = light.position - hit.point;
+    double distance = glm::length(l);
+    if (!(distance > 0.0)) continue;
+    l /= distance;
+    double cosine = glm::dot(l, normal);
+    if (cosine <= 0.0 || shadowed(hit, light.position, counts)) continue;
+    colour += m.colour * light.colour * (m.diffuse * cosine);
+    glm::dvec3 reflected = glm::reflect(-l, normal);
+    double highlight = std::max(0.0, glm::dot(reflected, toViewer));
+    if (highlight > 0.0 && m.specular > 0.0) {
+      colour += light.colour * (m.specular * std::pow(highlight, m.shininess));
+    }
+  }
+  return colour;
+}
+
+glm::dvec3 Tracer::trace(const Ray& ray, const RaySource& source, int bounce,
+                         MediumStack& media, RayCounts& counts) const {
+  if (bounce > maxDepth_) return glm::dvec3(0.0);
+  std::optional<Hit> found = scene_.closestHit(ray, source);
+  if (!found) return glm::dvec3(0.0);
+  const Hit& hit = *found;
+  const RenderObject& object = scene_.objects()[hit.object];
+  const scene::Material& m = object.material;
+
+  glm::dvec3 d = glm::normalize(ray.direction);
+  // The normal that faces the incoming ray.
+  glm::dvec3 n = glm::dot(hit.normal, d) > 0.0 ? -hit.normal : hit.normal;
+  glm::dvec3 colour = shadeSurface(hit, n, -d, counts);
+
+  auto spawn = [&](const glm::dvec3& direction) {
+    Ray next;
+    next.origin = offsetRayOrigin(hit.point, hit.pointError, hit.normal, direction);
+    next.direction = direction;
+    return next;
+  };
+  auto sourceFor = [&](const glm::dvec3& direction) {
+    return RaySource{hit.object, glm::dot(direction, hit.normal) < 0.0};
+  };
+
+  glm::dvec3 reflected(0.0);
+  if (m.reflectivity > 0.0) {
+    ++counts.secondary;
+    glm::dvec3 r = glm::reflect(d, n);
+    reflected = m.reflectivity * trace(spawn(r), sourceFor(r), bounce + 1, media, counts);
+  }
+  if (m.transparency <= 0.0) return colour + reflected;
+
+  glm::dvec3 refracted(0.0);
+  double reflectance = 1.0;
+  if (object.kind == scene::ObjectKind::Plane) {
+    // A plane is a sheet, not a solid: light passes it without bending.
+    ++counts.secondary;
+    reflectance = 0.0;
+    refracted = m.transparency * trace(spawn(d), sourceFor(d), bounce + 1, media, counts);
+  } else {
+    // The innermost solid the ray is in gives n1; entering this one, n2 is
+    // its own index, and leaving it, the index of what contains it.
+    bool entering = !hit.fromInside;
+    double n1 = entering ? media.refractiveIndex(scene_) : m.ri;
+    MediumStack after = media;
+    if (entering) {
+      after.push(hit.object);
+    } else {
+      after.remove(hit.object);
+    }
+    double n2 = entering ? m.ri : after.refractiveIndex(scene_);
+    reflectance = schlickReflectance(n1, n2, -glm::dot(d, n));
+    glm::dvec3 t;
+    if (refractDirection(d, n, n1, n2, t)) {
+      ++counts.secondary;
+      refracted = m.transparency * trace(spawn(t), sourceFor(t), bounce + 1, after, counts);
+    }
+  }
+  if (m.reflectivity > 0.0) {
+    return colour + reflectance * reflected + (1.0 - reflectance) * refracted;
+  }
+  return colour + refracted;
+}
+
+}  // namespace render

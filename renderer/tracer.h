@@ -1,0 +1,78 @@
+// Whitted ray tracing with the Phong model of RENDERING.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "renderer/render_scene.h"
+
+namespace render {
+
+// The transparent solids a ray is inside, innermost last; the medium it
+// travels in is the innermost (RENDERING.md), or empty space, index 1.
+class MediumStack {
+ public:
+  static constexpr int kCapacity = 64;
+
+  void push(std::uint32_t object) {
+    if (size_ < kCapacity) objects_[size_++] = object;
+  }
+  // Removes `object` wherever it stands (solids may overlap in any order).
+  void remove(std::uint32_t object);
+  double refractiveIndex(const RenderScene& scene) const;
+  int size() const { return size_; }
+
+ private:
+  std::array<std::uint32_t, kCapacity> objects_{};
+  int size_ = 0;
+};
+
+struct RayCounts {
+  std::uint64_t primary = 0;
+  std::uint64_t secondary = 0;  // reflected and refracted
+  std::uint64_t shadow = 0;
+  RayCounts& operator+=(const RayCounts& o) {
+    primary += o.primary;
+    secondary += o.secondary;
+    shadow += o.shadow;
+    return *this;
+  }
+};
+
+// Reflectance by Schlick's approximation for a ray going from index n1 into
+// n2 at incidence cosine cosIncident; 1 under total internal reflection.
+double schlickReflectance(double n1, double n2, double cosIncident);
+
+// The refracted direction of the unit vector d at the normal n facing it, or
+// nothing under total internal reflection (Snell: n1 sin i = n2 sin t).
+bool refractDirection(const glm::dvec3& d, const glm::dvec3& n, double n1, double n2,
+                      glm::dvec3& refracted);
+
+class Tracer {
+ public:
+  // maxDepth: the number of bounces traced; the ray that would make one more
+  // returns black.
+  Tracer(const RenderScene& scene, int maxDepth) : scene_(scene), maxDepth_(maxDepth) {}
+
+  // The colour seen along `ray`, which left `source` after `bounce` bounces
+  // and travels through `media`.
+  glm::dvec3 trace(const Ray& ray, const RaySource& source, int bounce, MediumStack& media,
+                   RayCounts& counts) const;
+
+  // The Phong surface term at a hit (ambient per light, diffuse and specular
+  // for each light with a clear path), for the viewer along `toViewer`;
+  // `normal` faces the viewer.
+  glm::dvec3 shadeSurface(const Hit& hit, const glm::dvec3& normal, const glm::dvec3& toViewer,
+                          RayCounts& counts) const;
+
+  // Whether anything lies on the open segment from the hit to `light`.
+  bool shadowed(const Hit& hit, const glm::dvec3& light, RayCounts& counts) const;
+
+ private:
+  const RenderScene& scene_;
+  int maxDepth_;
+};
+
+}  // namespace render

@@ -1,0 +1,25 @@
+// Writing a rendered image in the format its file name asks for.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "renderer/render.h"
+
+namespace tools {
+
+// Whether OpenImageIO can write files with this name's extension.
+bool canWriteImage(const std::filesystem::path& path);
+
+// Writes the image through OpenImageIO: floating-point formats (EXR) get the
+// linear values as they are; 8-bit formats (PPM, PNG, ...) get each channel
+// clamped to [0, 1] and rounded to the nearest of 256 levels, with no gamma.
+// The file is written beside the target under a temporary name and renamed,
+// so it appears whole or not at all.
+bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
+                    std::string& error);
+
+// The 8-bit level of a linear channel value: round(clamp(v, 0, 1) * 255).
+unsigned char quantizeChannel(float value);
+
+}  // namespace tools

@@ -1,0 +1,143 @@
+#include "tools/sfrender/sfrender.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+#include "libscene/output_location.h"
+#include "libscene/scene_reader.h"
+#include "renderer/default_scene.h"
+#include "renderer/render.h"
+#include "tools/common/command_line.h"
+#include "tools/common/diagnostic_printer.h"
+#include "tools/common/file_io.h"
+#include "tools/sfrender/image_file.h"
+
+namespace tools {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string withThousands(std::uint64_t n) {
+  std::string digits = std::to_string(n);
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(i, ",");
+  return digits;
+}
+
+void printStatistics(const render::RenderStatistics& s, const render::RenderSettings& settings,
+                     std::ostream& err) {
+  std::uint64_t total = s.rays.primary + s.rays.secondary + s.rays.shadow;
+  std::ostringstream line;
+  line << std::fixed << std::setprecision(3) << "sfrender: " << settings.width << "x"
+       << settings.height << ", " << settings.samplesPerPixel << " spp, depth "
+       << settings.maxDepth << ": " << s.seconds << " s, " << withThousands(total) << " rays ("
+       << withThousands(s.rays.primary) << " primary, " << withThousands(s.rays.secondary)
+       << " reflected or refracted, " << withThousands(s.rays.shadow) << " shadow), "
+       << std::setprecision(2) << (s.seconds > 0 ? total / s.seconds / 1e6 : 0.0)
+       << " million rays/s\n";
+  err << line.str();
+}
+
+}  // namespace
+
+int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                bool errIsTerminal) {
+  CLI::App app{"Ray traces a scene file or an instruction file (the default scene without one)",
+               "sfrender"};
+  app.set_version_flag("--version", SCENEFILE_VERSION);
+  std::string input;
+  std::string output;
+  render::RenderSettings settings;
+  bool quiet = false;
+  bool stats = false;
+  app.add_option("scene", input, "a scene file (.sf) or an instruction file");
+  app.add_option("-o,--output", output,
+                 "the image to write; its extension picks the format (.ppm, .png, .exr, .tif)");
+  app.add_option("--width", settings.width, "image width in pixels")
+      ->check(CLI::Range(1, 32768));
+  app.add_option("--height", settings.height, "image height in pixels")
+      ->check(CLI::Range(1, 32768));
+  app.add_option("--fov", settings.verticalFovDegrees, "vertical field of view in degrees")
+      ->check(CLI::Range(0.001, 179.999));
+  app.add_option("--spp", settings.samplesPerPixel, "samples per pixel, stratified")
+      ->check(CLI::Range(1, 65536));
+  app.add_option("--depth", settings.maxDepth, "bounces of reflection and refraction")
+      ->check(CLI::Range(0, 64));
+  app.add_option("--threads", settings.threads, "threads to render with (0: every core)")
+      ->check(CLI::Range(0, 1024));
+  app.add_option("--seed", settings.seed, "seed of the sample positions");
+  app.add_flag("--quiet", quiet, "print nothing but errors");
+  app.add_flag("--stats", stats, "print the time, the rays and the rays per second");
+  if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
+
+  // Step 1: the scene, and where its image goes.
+  scene::Scene scene;
+  fs::path target;
+  if (input.empty()) {
+    scene = render::defaultScene();
+    target = output.empty() ? fs::path(*scene.outputFile) : fs::path(output);
+  } else {
+    std::string readError;
+    std::optional<std::string> text = readWholeFile(input, readError);
+    if (!text) {
+      err << input << ": error: cannot read the file: " << readError << "\n";
+      return toInt(ExitCode::IoError);
+    }
+    scene::ReadResult result = scene::parseScene(*text, input);
+    if (result.scene.outputFile && output.empty()) {
+      // OUTPUT_FILE is the instruction file's to choose, inside its folder.
+      scene::checkOutputLocation(result.scene, fs::path(input).parent_path(),
+                                 scene::Severity::Error, result.diagnostics);
+    }
+    if (!quiet || result.diagnostics.hasErrors()) printDiagnostics(result.diagnostics, err);
+    if (!result.ok()) return toInt(ExitCode::InvalidInput);
+    scene = std::move(result.scene);
+    if (!output.empty()) {
+      target = output;
+    } else if (scene.outputFile) {
+      target = fs::path(input).parent_path() / *scene.outputFile;
+    } else {
+      target = fs::path(input).stem().string() + ".ppm";
+    }
+  }
+  if (!canWriteImage(target)) {
+    err << "sfrender: cannot write images named '" << target.string()
+        << "': use .ppm, .png, .exr or .tif\n";
+    return toInt(ExitCode::Usage);
+  }
+  if (!input.empty() && isSameFile(input, target)) {
+    err << "sfrender: error: the output '" << target.string()
+        << "' is the input file; sfrender never writes over its input\n";
+    return toInt(ExitCode::InvalidInput);
+  }
+
+  // Step 2: render, with a progress bar on a terminal.
+  render::RenderScene compiled(scene);
+  render::RenderStatistics statistics;
+  render::ProgressCallback progress;
+  if (errIsTerminal && !quiet) {
+    progress = [&err](int done, int total) {
+      err << "\rsfrender: rendering " << std::setw(3) << (100 * done / total) << "%"
+          << (done == total ? "\n" : "") << std::flush;
+    };
+  }
+  render::Image image = render::renderImage(compiled, settings, &statistics, progress);
+
+  // Step 3: the file, whole or not at all.
+  std::string writeError;
+  if (!writeImageFile(image, target, writeError)) {
+    err << target.string() << ": error: cannot write the image: " << writeError << "\n";
+    return toInt(ExitCode::IoError);
+  }
+  if (stats) printStatistics(statistics, settings, err);
+  if (!quiet) {
+    err << "sfrender: wrote " << target.string() << " (" << settings.width << "x"
+        << settings.height << (input.empty() ? ", the default scene" : "") << ")\n";
+  }
+  return toInt(ExitCode::Success);
+}
+
+}  // namespace tools
