@@ -15,7 +15,7 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# Until the renderer exists, `make run` checks a bundled example and converts it.
+# Renders the default scene, then runs each tool on the bundled examples.
 run: build
 	@bash scripts/run-example.sh $(BUILD_DIR)
 
@@ -24,6 +24,7 @@ test: build
 
 bench: build
 	@bash bench/run.sh $(BUILD_DIR)
+	@bash bench/render_bench.sh $(BUILD_DIR)
 
 clean:
 	rm -rf $(BUILD_DIR)

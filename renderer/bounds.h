@@ -2,10 +2,9 @@
 #pragma once
 
 #include <algorithm>
-#include <limits>
-
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 
 #include "renderer/float_error.h"
 

@@ -98,10 +98,9 @@ std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec
     }
   }
   if (median) {
-    std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) {
-                       return centres[a][axis] < centres[b][axis];
-                     });
+    std::nth_element(
+        items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+        [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
   }
   nodes_[index].axis = static_cast<std::uint8_t>(axis);
   build(boxes, centres, begin, mid, depth + 1);

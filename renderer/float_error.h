@@ -4,24 +4,29 @@
 #pragma once
 
 #include <cmath>
-#include <limits>
-
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 
 namespace render {
 
 inline constexpr double kMachineEpsilon = std::numeric_limits<double>::epsilon() * 0.5;
 
 // Bound on the relative error of n successive roundings: n u / (1 - n u).
-constexpr double gamma(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
+constexpr double gamma(int n) {
+  return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon);
+}
 
-inline double nextUp(double v) { return std::nextafter(v, std::numeric_limits<double>::infinity()); }
+inline double nextUp(double v) {
+  return std::nextafter(v, std::numeric_limits<double>::infinity());
+}
 inline double nextDown(double v) {
   return std::nextafter(v, -std::numeric_limits<double>::infinity());
 }
 
-inline glm::dvec3 abs(const glm::dvec3& v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
+inline glm::dvec3 abs(const glm::dvec3& v) {
+  return {std::abs(v.x), std::abs(v.y), std::abs(v.z)};
+}
 
 // Moves p off the surface with normal n, to the side that w points to, by
 // the error bound pError projected on the normal, and rounds away from the

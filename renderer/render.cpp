@@ -4,13 +4,12 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <limits>
 #include <mutex>
 #include <numbers>
 #include <thread>
-
-#include <glm/geometric.hpp>
-#include <glm/vec2.hpp>
 
 namespace render {
 
@@ -27,7 +26,9 @@ std::uint64_t mix(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-double unitInterval(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
+double unitInterval(std::uint64_t bits) {
+  return static_cast<double>(bits >> 11) * 0x1.0p-53;
+}
 
 // Keeps an image finite whatever the scene: NaN becomes 0, and values past
 // the float range are clamped to it.
@@ -92,9 +93,9 @@ glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed
   if (count <= 1) return {i + 0.5, j + 0.5};
   int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
   int rows = (count + columns - 1) / columns;
-  std::uint64_t state = mix(seed ^ mix((static_cast<std::uint64_t>(j) << 32) ^
-                                       static_cast<std::uint32_t>(i)) ^
-                            mix(static_cast<std::uint64_t>(index) + 0x5851F42D4C957F2Dull));
+  std::uint64_t state =
+      mix(seed ^ mix((static_cast<std::uint64_t>(j) << 32) ^ static_cast<std::uint32_t>(i)) ^
+          mix(static_cast<std::uint64_t>(index) + 0x5851F42D4C957F2Dull));
   double u = unitInterval(mix(state));
   double v = unitInterval(mix(state + 1));
   return {i + ((index % columns) + u) / columns, j + ((index / columns) + v) / rows};
@@ -111,7 +112,9 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
   Tracer tracer(scene, settings.maxDepth);
   // The media the camera starts in, for a camera inside glass.
   MediumStack eyeMedia;
-  for (std::uint32_t object : scene.mediaContaining(camera.eye())) eyeMedia.push(object);
+  if (scene.hasTransparency()) {
+    for (std::uint32_t object : scene.mediaContaining(camera.eye())) eyeMedia.push(object);
+  }
 
   int threads = threadCount(settings.threads);
   std::vector<RayCounts> counts(threads);

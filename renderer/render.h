@@ -4,9 +4,8 @@
 
 #include <cstdint>
 #include <functional>
-#include <vector>
-
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "renderer/render_scene.h"
 #include "renderer/tracer.h"
@@ -65,8 +64,7 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
 
 // The index of the object each pixel's centre ray meets first, or -1: the
 // picture that geometry tests compare.
-std::vector<std::int32_t> renderObjectIds(const RenderScene& scene,
-                                          const RenderSettings& settings);
+std::vector<std::int32_t> renderObjectIds(const RenderScene& scene, const RenderSettings& settings);
 
 // The position of sample `index` of `count` in pixel (i, j): the centre for
 // one sample, else a jittered point in its own cell of a stratified grid,

@@ -4,12 +4,11 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
-#include <vector>
-
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
+#include <vector>
 
 #include "libscene/scene.h"
 #include "renderer/bvh.h"
@@ -33,9 +32,9 @@ struct RaySource {
 struct RenderObject {
   scene::ObjectKind kind = scene::ObjectKind::Sphere;
   glm::dmat4 toWorld{1.0};
-  glm::dmat3 toLocal{1.0};          // inverse of the 3x3 block
-  glm::dvec3 toLocalOffset{0.0};    // -toLocal * translation
-  glm::dmat3 normalToWorld{1.0};    // inverse transpose of the 3x3 block
+  glm::dmat3 toLocal{1.0};        // inverse of the 3x3 block
+  glm::dvec3 toLocalOffset{0.0};  // -toLocal * translation
+  glm::dmat3 normalToWorld{1.0};  // inverse transpose of the 3x3 block
   scene::Material material;
 };
 

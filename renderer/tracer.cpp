@@ -2,12 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 #include "renderer/float_error.h"
 
 namespace render {
+
+namespace {
+
+// A ray leaving a hit in `direction`: its origin just off the surface on
+// that side, by the hit point's error bound.
+Ray spawnFrom(const Hit& hit, const glm::dvec3& direction) {
+  return Ray{offsetRayOrigin(hit.point, hit.pointError, hit.normal, direction), direction};
+}
+
+RaySource leaving(const Hit& hit, const glm::dvec3& direction) {
+  return RaySource{hit.object, glm::dot(direction, hit.normal) < 0.0};
+}
+
+}  // namespace
 
 void MediumStack::remove(std::uint32_t object) {
   for (int i = size_ - 1; i >= 0; --i) {
@@ -57,11 +70,11 @@ bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, RayCounts& counts
   // The open segment ends just short of the light by the rounding a hit
   // there could carry, so that a light lying on a surface is not hidden by
   // that surface.
-  double extent = std::max({std::abs(light.x), std::abs(light.y), std::abs(light.z),
-                            std::abs(ray.origin.x), std::abs(ray.origin.y),
-                            std::abs(ray.origin.z)});
-  double length = std::max({std::abs(ray.direction.x), std::abs(ray.direction.y),
-                            std::abs(ray.direction.z)});
+  double extent =
+      std::max({std::abs(light.x), std::abs(light.y), std::abs(light.z), std::abs(ray.origin.x),
+                std::abs(ray.origin.y), std::abs(ray.origin.z)});
+  double length =
+      std::max({std::abs(ray.direction.x), std::abs(ray.direction.y), std::abs(ray.direction.z)});
   if (length == 0.0) return false;
   double tMax = 1.0 - gamma(32) * extent / length;
   if (tMax <= 0.0) return false;
@@ -90,8 +103,9 @@ glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
   return colour;
 }
 
-glm::dvec3 Tracer::trace(const Ray& ray, const RaySource& source, int bounce,
-                         MediumStack& media, RayCounts& counts) const {
+template <bool kRefraction>
+glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce,
+                             MediumStack& media, RayCounts& counts) const {
   if (bounce > maxDepth_) return glm::dvec3(0.0);
   std::optional<Hit> found = scene_.closestHit(ray, source);
   if (!found) return glm::dvec3(0.0);
@@ -104,23 +118,26 @@ glm::dvec3 Tracer::trace(const Ray& ray, const RaySource& source, int bounce,
   glm::dvec3 n = glm::dot(hit.normal, d) > 0.0 ? -hit.normal : hit.normal;
   glm::dvec3 colour = shadeSurface(hit, n, -d, counts);
 
-  auto spawn = [&](const glm::dvec3& direction) {
-    Ray next;
-    next.origin = offsetRayOrigin(hit.point, hit.pointError, hit.normal, direction);
-    next.direction = direction;
-    return next;
-  };
-  auto sourceFor = [&](const glm::dvec3& direction) {
-    return RaySource{hit.object, glm::dot(direction, hit.normal) < 0.0};
-  };
-
   glm::dvec3 reflected(0.0);
   if (m.reflectivity > 0.0) {
     ++counts.secondary;
     glm::dvec3 r = glm::reflect(d, n);
-    reflected = m.reflectivity * trace(spawn(r), sourceFor(r), bounce + 1, media, counts);
+    reflected = m.reflectivity * traceWith<kRefraction>(spawnFrom(hit, r), leaving(hit, r),
+                                                        bounce + 1, media, counts);
   }
-  if (m.transparency <= 0.0) return colour + reflected;
+  if constexpr (!kRefraction) {
+    return colour + reflected;
+  } else {
+    if (m.transparency <= 0.0) return colour + reflected;
+    return colour + refract(hit, d, n, bounce, media, reflected, counts);
+  }
+}
+
+glm::dvec3 Tracer::refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3& n, int bounce,
+                           const MediumStack& media, const glm::dvec3& reflected,
+                           RayCounts& counts) const {
+  const RenderObject& object = scene_.objects()[hit.object];
+  const scene::Material& m = object.material;
 
   glm::dvec3 refracted(0.0);
   double reflectance = 1.0;
@@ -128,7 +145,9 @@ glm::dvec3 Tracer::trace(const Ray& ray, const RaySource& source, int bounce,
     // A plane is a sheet, not a solid: light passes it without bending.
     ++counts.secondary;
     reflectance = 0.0;
-    refracted = m.transparency * trace(spawn(d), sourceFor(d), bounce + 1, media, counts);
+    MediumStack same = media;
+    refracted = m.transparency *
+                traceWith<true>(spawnFrom(hit, d), leaving(hit, d), bounce + 1, same, counts);
   } else {
     // The innermost solid the ray is in gives n1; entering this one, n2 is
     // its own index, and leaving it, the index of what contains it.
@@ -145,13 +164,18 @@ glm::dvec3 Tracer::trace(const Ray& ray, const RaySource& source, int bounce,
     glm::dvec3 t;
     if (refractDirection(d, n, n1, n2, t)) {
       ++counts.secondary;
-      refracted = m.transparency * trace(spawn(t), sourceFor(t), bounce + 1, after, counts);
+      refracted = m.transparency *
+                  traceWith<true>(spawnFrom(hit, t), leaving(hit, t), bounce + 1, after, counts);
     }
   }
-  if (m.reflectivity > 0.0) {
-    return colour + reflectance * reflected + (1.0 - reflectance) * refracted;
-  }
-  return colour + refracted;
+  // With both, Schlick's reflectance shares the light between them.
+  if (m.reflectivity > 0.0) return reflectance * reflected + (1.0 - reflectance) * refracted;
+  return refracted;
 }
+
+template glm::dvec3 Tracer::traceWith<true>(const Ray&, const RaySource&, int, MediumStack&,
+                                            RayCounts&) const;
+template glm::dvec3 Tracer::traceWith<false>(const Ray&, const RaySource&, int, MediumStack&,
+                                             RayCounts&) const;
 
 }  // namespace render

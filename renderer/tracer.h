@@ -3,7 +3,6 @@
 
 #include <array>
 #include <cstdint>
-
 #include <glm/vec3.hpp>
 
 #include "renderer/render_scene.h"
@@ -59,7 +58,10 @@ class Tracer {
   // The colour seen along `ray`, which left `source` after `bounce` bounces
   // and travels through `media`.
   glm::dvec3 trace(const Ray& ray, const RaySource& source, int bounce, MediumStack& media,
-                   RayCounts& counts) const;
+                   RayCounts& counts) const {
+    return scene_.hasTransparency() ? traceWith<true>(ray, source, bounce, media, counts)
+                                    : traceWith<false>(ray, source, bounce, media, counts);
+  }
 
   // The Phong surface term at a hit (ambient per light, diffuse and specular
   // for each light with a clear path), for the viewer along `toViewer`;
@@ -71,6 +73,17 @@ class Tracer {
   bool shadowed(const Hit& hit, const glm::dvec3& light, RayCounts& counts) const;
 
  private:
+  // A scene without transparency is traced with no refraction code at all.
+  template <bool kRefraction>
+  glm::dvec3 traceWith(const Ray& ray, const RaySource& source, int bounce, MediumStack& media,
+                       RayCounts& counts) const;
+
+  // The refracted part of a hit on a transparent object, weighed against
+  // the reflected part by Schlick's approximation when it has both.
+  glm::dvec3 refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3& n, int bounce,
+                     const MediumStack& media, const glm::dvec3& reflected,
+                     RayCounts& counts) const;
+
   const RenderScene& scene_;
   int maxDepth_;
 };

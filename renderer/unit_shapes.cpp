@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <limits>
 
 #include "renderer/float_error.h"
 

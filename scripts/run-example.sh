@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
-# `make run`: checks the bundled examples and converts one into the other
-# format, so that a first run shows what the tools do.
+# `make run`: renders the built-in default scene, then checks the bundled
+# examples and converts one into the other format, so that a first run shows
+# what each tool does.
 set -euo pipefail
 build=${1:-build}
 bin="$build/bin"
 out="$build/examples"
 mkdir -p "$out"
 
+echo "== sfrender -o $build/default-scene.png"
+"$bin/sfrender" -o "$build/default-scene.png" --stats
+echo
 echo "== sfcheck examples/blue-cube.txt examples/red-sphere.sf"
 "$bin/sfcheck" examples/blue-cube.txt examples/red-sphere.sf
-echo
-echo "== sfconvert examples/blue-cube.txt $out/blue-cube.sf"
-"$bin/sfconvert" examples/blue-cube.txt "$out/blue-cube.sf"
 echo
 echo "== sfconvert examples/red-sphere.sf $out/red-sphere.txt"
 "$bin/sfconvert" examples/red-sphere.sf "$out/red-sphere.txt"
 echo
-echo "Wrote $out/blue-cube.sf and $out/red-sphere.txt."
+echo "== sfrender examples/blue-cube.txt -o $out/blue-cube.png"
+"$bin/sfrender" examples/blue-cube.txt -o "$out/blue-cube.png"
+echo
+echo "The default scene is in $build/default-scene.png."

@@ -1,6 +1,5 @@
 // The tools run in-process with their streams captured, as a user runs them.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -14,6 +13,8 @@
 #include "tools/common/file_io.h"
 #include "tools/sfcheck/sfcheck.h"
 #include "tools/sfconvert/sfconvert.h"
+#include "tools/sfrender/image_file.h"
+#include "tools/sfrender/sfrender.h"
 
 namespace tools {
 namespace {
@@ -31,6 +32,11 @@ const std::string kInstructions =
     "START OBJECT CUBE\nSTART MATERIAL\nCOLOUR 0 0 1\nAMBIENT 0.15\nEND MATERIAL\n"
     "START TRANSFORMATION\nSCALE 0.5 0.5 0.5\nROTATE_Y 1.5707963267948966\n"
     "END TRANSFORMATION\nEND OBJECT\n";
+
+// sfrender as a test runs it: standard error is no terminal.
+int sfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  return runSfrender(argc, argv, out, err, false);
+}
 
 class ToolTest : public ::testing::Test {
  protected:
@@ -87,14 +93,16 @@ TEST_F(ToolTest, SfcheckSumsUpAndExitsZeroOnValidFiles) {
 }
 
 TEST_F(ToolTest, SfcheckPrintsDiagnosticsInTheCompilersForm) {
-  std::string bad = write("bad.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
-                                    "sphere\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+  std::string bad = write("bad.sf",
+                          "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+                          "sphere\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
   EXPECT_EQ(run(runSfcheck, {"sfcheck", bad}), toInt(ExitCode::InvalidInput));
   EXPECT_EQ(err_.str(),
-            bad + ":7:1: error: unknown keyword 'sphere', expected a record name (CAMERA, LIGHT, "
-                  "PLANE, SPHERE, CYLINDER or CUBE) [unknown-keyword]\n"
-                  "  hint: keywords are upper case: did you mean 'SPHERE'?\n"
-                  "sfcheck: 1 file checked, 1 error, 0 warnings\n");
+            bad +
+                ":7:1: error: unknown keyword 'sphere', expected a record name (CAMERA, LIGHT, "
+                "PLANE, SPHERE, CYLINDER or CUBE) [unknown-keyword]\n"
+                "  hint: keywords are upper case: did you mean 'SPHERE'?\n"
+                "sfcheck: 1 file checked, 1 error, 0 warnings\n");
 }
 
 TEST_F(ToolTest, SfcheckWerrorAndJson) {
@@ -116,9 +124,10 @@ TEST_F(ToolTest, SfcheckWerrorAndJson) {
 }
 
 TEST_F(ToolTest, SfcheckWarnsWhenOutputFileLeavesItsFolder) {
-  std::string escape = write("e.txt", "OUTPUT_FILE ../../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
-                                      "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
-                                      "COLOUR 1 1 1\nEND LIGHT\n");
+  std::string escape = write("e.txt",
+                             "OUTPUT_FILE ../../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                             "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                             "COLOUR 1 1 1\nEND LIGHT\n");
   EXPECT_EQ(run(runSfcheck, {"sfcheck", escape}), 0);
   EXPECT_NE(err_.str().find(":1:13: warning: OUTPUT_FILE '../../x.ppm' leaves the instruction "
                             "file's folder [output-file-escapes]"),
@@ -126,13 +135,15 @@ TEST_F(ToolTest, SfcheckWarnsWhenOutputFileLeavesItsFolder) {
       << err_.str();
   // Through a link that leads out of the folder.
   fs::create_directory_symlink(fs::temp_directory_path(), dir_ / "out");
-  std::string linked = write("l.txt", "OUTPUT_FILE out/x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
-                                      "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
-                                      "COLOUR 1 1 1\nEND LIGHT\n");
+  std::string linked = write("l.txt",
+                             "OUTPUT_FILE out/x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                             "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                             "COLOUR 1 1 1\nEND LIGHT\n");
   EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", linked}), 1);
-  std::string inside = write("i.txt", "OUTPUT_FILE sub/../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
-                                      "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
-                                      "COLOUR 1 1 1\nEND LIGHT\n");
+  std::string inside = write("i.txt",
+                             "OUTPUT_FILE sub/../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                             "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                             "COLOUR 1 1 1\nEND LIGHT\n");
   EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", inside}), 0) << err_.str();
 }
 
@@ -140,8 +151,7 @@ TEST_F(ToolTest, ExitCodesForUsageAndUnreadableFiles) {
   EXPECT_EQ(run(runSfcheck, {"sfcheck"}), toInt(ExitCode::Usage));
   EXPECT_EQ(run(runSfcheck, {"sfcheck", "--bogus", "x"}), toInt(ExitCode::Usage));
   EXPECT_EQ(run(runSfcheck, {"sfcheck", path("missing.sf")}), toInt(ExitCode::IoError));
-  EXPECT_NE(err_.str().find("cannot read the file: No such file or directory"),
-            std::string::npos);
+  EXPECT_NE(err_.str().find("cannot read the file: No such file or directory"), std::string::npos);
   EXPECT_EQ(run(runSfcheck, {"sfcheck", "--help"}), 0);
   EXPECT_NE(out_.str().find("--werror"), std::string::npos);
   EXPECT_EQ(run(runSfconvert, {"sfconvert", "--version"}), 0);
@@ -189,8 +199,9 @@ TEST_F(ToolTest, SfconvertOutputFormatAndStdout) {
 }
 
 TEST_F(ToolTest, SfconvertRepairsTransposedFiles) {
-  std::string in = write("t.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 5 1\n"
-                                 "CUBE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n2 3 4 1\n");
+  std::string in = write("t.sf",
+                         "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 5 1\n"
+                         "CUBE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n2 3 4 1\n");
   EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("bad.sf")}), 1);
   EXPECT_NE(err_.str().find("'sfconvert --transpose-matrices' repairs such files"),
             std::string::npos);
@@ -201,8 +212,9 @@ TEST_F(ToolTest, SfconvertRepairsTransposedFiles) {
 }
 
 TEST_F(ToolTest, SfconvertApproximatesOnlyWhenAsked) {
-  std::string in = write("shear.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
-                                     "CUBE\n1 1 1\n1 0.5 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+  std::string in = write("shear.sf",
+                         "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+                         "CUBE\n1 1 1\n1 0.5 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
   EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("s.txt")}), 1);
   EXPECT_NE(err_.str().find("[matrix-not-expressible]"), std::string::npos);
   EXPECT_FALSE(fs::exists(path("s.txt")));
@@ -220,6 +232,93 @@ TEST_F(ToolTest, SfconvertRejectsInvalidInputAndWritesNothing) {
   std::string good = write("good.sf", kValidScene);
   EXPECT_EQ(run(runSfconvert, {"sfconvert", good, path("no/such/folder/out.sf")}),
             toInt(ExitCode::IoError));
+}
+
+// The manual's three ways of running the renderer: no file, a scene file,
+// an instruction file.
+TEST_F(ToolTest, SfrenderRendersTheDefaultSceneWithoutInput) {
+  std::string out = path("default.ppm");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--width", "32", "--height", "24"}), 0)
+      << err_.str();
+  EXPECT_NE(err_.str().find("sfrender: wrote " + out + " (32x24, the default scene)"),
+            std::string::npos);
+  std::string image = read("default.ppm");
+  EXPECT_EQ(image.substr(0, 13), "P6\n32 24\n255\n");
+  EXPECT_EQ(image.size(), std::string("P6\n32 24\n255\n").size() + 32 * 24 * 3);
+}
+
+TEST_F(ToolTest, SfrenderNamesASceneFilesImageAfterIt) {
+  std::string in = write("ball.sf", kValidScene);
+  fs::path before = fs::current_path();
+  fs::current_path(dir_);
+  int status = run(sfrender, {"sfrender", "ball.sf", "--width", "16", "--height", "12"});
+  fs::current_path(before);
+  EXPECT_EQ(status, 0) << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "ball.ppm"));
+}
+
+TEST_F(ToolTest, SfrenderHonoursAndConfinesOutputFile) {
+  fs::create_directory(dir_ / "scenes");
+  std::string in = write("scenes/i.txt", kInstructions);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "--width", "16", "--height", "12", "--quiet"}), 0)
+      << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "scenes" / "pic.ppm"));  // beside the instruction file
+  EXPECT_EQ(err_.str(), "");
+
+  std::string escaping = kInstructions;
+  escaping.replace(escaping.find("pic.ppm"), 7, "../escaped.ppm");
+  std::string bad = write("scenes/e.txt", escaping);
+  EXPECT_EQ(run(sfrender, {"sfrender", bad, "--width", "16", "--height", "12"}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_NE(err_.str().find("error: OUTPUT_FILE '../escaped.ppm' leaves the instruction file's "
+                            "folder [output-file-escapes]"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "escaped.ppm"));
+  // -o names the output, and then the user has chosen.
+  EXPECT_EQ(
+      run(sfrender, {"sfrender", bad, "-o", path("chosen.png"), "--width", "16", "--height", "12"}),
+      0);
+  EXPECT_TRUE(fs::exists(dir_ / "chosen.png"));
+}
+
+TEST_F(ToolTest, SfrenderRefusesBadRequests) {
+  std::string in = write("s.sf", kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "-o", path("x.unknownformat")}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "--width", "0"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "--spp", "-1"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(sfrender, {"sfrender", path("missing.sf")}), toInt(ExitCode::IoError));
+  std::string invalid = write("bad.sf", "CAMERA\n");
+  EXPECT_EQ(run(sfrender, {"sfrender", invalid, "-o", path("bad.ppm")}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_FALSE(fs::exists(dir_ / "bad.ppm"));
+  // A scene file may have any name, an image's among them: never written over.
+  std::string odd = write("scene.ppm", kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", odd, "-o", odd}), toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(read("scene.ppm"), kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "-o", path("n/o/x.ppm")}), toInt(ExitCode::IoError));
+}
+
+TEST_F(ToolTest, SfrenderStatsAndFloatImages) {
+  std::string in = write("s.sf", kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "-o", path("s.exr"), "--width", "8", "--height", "6",
+                           "--stats", "--spp", "4"}),
+            0)
+      << err_.str();
+  EXPECT_NE(err_.str().find("8x6, 4 spp, depth 5:"), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("(192 primary,"), std::string::npos) << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "s.exr"));
+  EXPECT_EQ(files(), (std::vector<std::string>{"s.exr", "s.sf"}));  // no temporary left
+}
+
+TEST(ImageFile, QuantizesToTheNearestLevelWithoutGamma) {
+  EXPECT_EQ(quantizeChannel(0.0f), 0);
+  EXPECT_EQ(quantizeChannel(-3.0f), 0);
+  EXPECT_EQ(quantizeChannel(1.0f), 255);
+  EXPECT_EQ(quantizeChannel(7.0f), 255);
+  EXPECT_EQ(quantizeChannel(0.5f), 128);  // 127.5 rounds up
+  EXPECT_EQ(quantizeChannel(0.25f), 64);  // 63.75
+  EXPECT_EQ(quantizeChannel(0.2f), 51);
 }
 
 TEST(FileIo, AtomicWriteReplacesWholeAndLeavesNoTemporary) {

@@ -1,5 +1,6 @@
 #include "tools/sfrender/image_file.h"
 
+#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,8 +10,6 @@
 #include <cstring>
 #include <memory>
 #include <vector>
-
-#include <OpenImageIO/imageio.h>
 
 namespace tools {
 

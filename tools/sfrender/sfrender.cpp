@@ -32,8 +32,8 @@ void printStatistics(const render::RenderStatistics& s, const render::RenderSett
   std::uint64_t total = s.rays.primary + s.rays.secondary + s.rays.shadow;
   std::ostringstream line;
   line << std::fixed << std::setprecision(3) << "sfrender: " << settings.width << "x"
-       << settings.height << ", " << settings.samplesPerPixel << " spp, depth "
-       << settings.maxDepth << ": " << s.seconds << " s, " << withThousands(total) << " rays ("
+       << settings.height << ", " << settings.samplesPerPixel << " spp, depth " << settings.maxDepth
+       << ": " << s.seconds << " s, " << withThousands(total) << " rays ("
        << withThousands(s.rays.primary) << " primary, " << withThousands(s.rays.secondary)
        << " reflected or refracted, " << withThousands(s.rays.shadow) << " shadow), "
        << std::setprecision(2) << (s.seconds > 0 ? total / s.seconds / 1e6 : 0.0)
@@ -56,8 +56,7 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
   app.add_option("scene", input, "a scene file (.sf) or an instruction file");
   app.add_option("-o,--output", output,
                  "the image to write; its extension picks the format (.ppm, .png, .exr, .tif)");
-  app.add_option("--width", settings.width, "image width in pixels")
-      ->check(CLI::Range(1, 32768));
+  app.add_option("--width", settings.width, "image width in pixels")->check(CLI::Range(1, 32768));
   app.add_option("--height", settings.height, "image height in pixels")
       ->check(CLI::Range(1, 32768));
   app.add_option("--fov", settings.verticalFovDegrees, "vertical field of view in degrees")
@@ -134,8 +133,8 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
   }
   if (stats) printStatistics(statistics, settings, err);
   if (!quiet) {
-    err << "sfrender: wrote " << target.string() << " (" << settings.width << "x"
-        << settings.height << (input.empty() ? ", the default scene" : "") << ")\n";
+    err << "sfrender: wrote " << target.string() << " (" << settings.width << "x" << settings.height
+        << (input.empty() ? ", the default scene" : "") << ")\n";
   }
   return toInt(ExitCode::Success);
 }

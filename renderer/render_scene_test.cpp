@@ -1,0 +1,263 @@
+// Properties of the compiled scene's ray queries under seeded random
+// transforms, after pbrt-v4's shape tests.
+#include "renderer/render_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "renderer/float_error.h"
+#include "renderer/test_scenes.h"
+#include "renderer/tracer.h"
+
+namespace render {
+namespace {
+
+using namespace render::testing;
+using scene::ObjectKind;
+
+class RandomTransforms {
+ public:
+  explicit RandomTransforms(std::uint64_t seed) : rng_(seed) {}
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
+  // Scales from 1e-4 to 1e4 (ratios within 1e8, so that the condition
+  // number stays far below the format's 1e12) and origins up to 1e8.
+  std::vector<scene::TransformOp> transform() {
+    double base = uniform(-4, 4);
+    auto factor = [&] { return std::pow(10.0, std::clamp(base + uniform(-1, 1), -4.0, 4.0)); };
+    double reach = std::pow(10.0, uniform(0, 8));
+    return {scale(factor(), factor(), factor()), rotateX(uniform(-3.2, 3.2)),
+            rotateY(uniform(-3.2, 3.2)), rotateZ(uniform(-3.2, 3.2)),
+            translate(uniform(-reach, reach), uniform(-reach, reach), uniform(-reach, reach))};
+  }
+  glm::dvec3 direction() {
+    for (;;) {
+      glm::dvec3 d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+      double l = glm::length(d);
+      if (l > 0.1 && l <= 1.0) return d / l;
+    }
+  }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+TEST(ReIntersection, ASpawnedRayNeverMeetsItsSurfaceAgain) {
+  RandomTransforms random(1234);
+  int hits = 0;
+  int attempts = 0;
+  while (hits < 1000 && attempts < 100000) {
+    ++attempts;
+    ObjectKind kind =
+        std::array{ObjectKind::Sphere, ObjectKind::Cube, ObjectKind::Cylinder}[attempts % 3];
+    scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+    s.objects.push_back(object(kind, random.transform()));
+    RenderScene compiled(s);
+    // Aim at a random point inside the object from outside it.
+    const glm::dmat4& m = s.objects[0].matrix;
+    glm::dvec3 target(m * glm::dvec4(random.uniform(-0.5, 0.5), random.uniform(-0.5, 0.5),
+                                     random.uniform(-0.5, 0.5), 1.0));
+    double size = glm::length(glm::dvec3(m[0])) + glm::length(glm::dvec3(m[1])) +
+                  glm::length(glm::dvec3(m[2]));
+    glm::dvec3 from = target + random.direction() * (4.0 * size);
+    std::optional<Hit> hit = compiled.closestHit(Ray{from, target - from}, RaySource{});
+    if (!hit) continue;
+    ++hits;
+    // Re-cast from the hit in random directions, with no help from knowing
+    // which object the ray left: outward finds nothing, inward finds the
+    // solid from inside.
+    for (int k = 0; k < 8; ++k) {
+      glm::dvec3 w = random.direction();
+      if (std::abs(glm::dot(w, hit->normal)) < 1e-6) continue;
+      Ray spawned{offsetRayOrigin(hit->point, hit->pointError, hit->normal, w), w};
+      std::optional<Hit> again = compiled.closestHit(spawned, RaySource{});
+      if (glm::dot(w, hit->normal) > 0.0) {
+        ASSERT_FALSE(again.has_value())
+            << "outward ray met its surface again at t = " << again->t << ", hit " << hits;
+      } else {
+        ASSERT_TRUE(again.has_value()) << "inward ray left the solid, hit " << hits;
+        ASSERT_TRUE(again->fromInside) << "inward ray started outside, hit " << hits;
+      }
+    }
+  }
+  EXPECT_EQ(hits, 1000);
+}
+
+TEST(Bvh, HitsAreIdenticalToBruteForce) {
+  // A million rays in all, spread so that brute force stays affordable:
+  // fewer rays for the larger scenes.
+  RandomTransforms random(99);
+  struct Size {
+    int objects;
+    int rays;
+  };
+  long long total = 0;
+  for (Size size : {Size{1, 500000}, Size{10, 300000}, Size{100, 100000}, Size{1000, 89900},
+                    Size{10000, 9000}, Size{100000, 1000}, Size{1000000, 100}}) {
+    scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+    double spread = std::cbrt(static_cast<double>(size.objects)) * 4.0;
+    for (int i = 0; i < size.objects; ++i) {
+      ObjectKind kind = static_cast<ObjectKind>(i % 4);
+      if (kind == ObjectKind::Plane && i % 1000 != 0) kind = ObjectKind::Sphere;  // a few planes
+      s.objects.push_back(object(
+          kind, {scale(random.uniform(0.2, 1), random.uniform(0.2, 1), random.uniform(0.2, 1)),
+                 rotateY(random.uniform(0, 3)), rotateX(random.uniform(0, 3)),
+                 translate(random.uniform(-spread, spread), random.uniform(-spread, spread),
+                           random.uniform(-spread, spread))}));
+    }
+    RenderScene compiled(s);
+    for (int r = 0; r < size.rays; ++r) {
+      glm::dvec3 origin(random.uniform(-2, 2) * spread, random.uniform(-2, 2) * spread,
+                        random.uniform(-2, 2) * spread);
+      glm::dvec3 d = random.direction();
+      if (r % 7 == 0) d = glm::dvec3(r % 2 ? 1.0 : -0.0, 0.0, -0.0);  // axis-parallel, signed zeros
+      Ray ray{origin, d};
+      std::optional<Hit> fast = compiled.closestHit(ray, RaySource{});
+      std::optional<Hit> slow =
+          compiled.closestHitBruteForce(ray, RaySource{}, std::numeric_limits<double>::infinity());
+      ASSERT_EQ(fast.has_value(), slow.has_value()) << size.objects << " objects, ray " << r;
+      if (fast) {
+        ASSERT_EQ(fast->t, slow->t) << size.objects << " objects, ray " << r;
+      }
+      ++total;
+    }
+  }
+  EXPECT_EQ(total, 1000000);
+}
+
+TEST(RestingOnAPlane, NoLightGapAtTheContact) {
+  // A unit sphere and a cube resting on the floor y = 0, the light up and
+  // to the right: floor points just left of each contact lie in shadow.
+  for (ObjectKind kind : {ObjectKind::Sphere, ObjectKind::Cube}) {
+    scene::Scene s = sceneLookingAt({0, 5, 5}, {0, 0, 0});
+    s.objects.push_back(object(ObjectKind::Plane));
+    s.objects.push_back(object(kind, {translate(0, 1, 0)}));
+    s.lights.push_back(light({10, 10, 0}));
+    RenderScene compiled(s);
+    double edge = kind == ObjectKind::Cube ? -1.0 : 0.0;
+    for (double gap : {1e-3, 1e-6, 1e-9, 1e-12}) {
+      // The floor seen from below (planes are two-sided): the shadow ray
+      // still leaves on the light's side.
+      glm::dvec3 onFloor(edge - gap, 0, 0);
+      std::optional<Hit> hit =
+          compiled.closestHit(Ray{onFloor - glm::dvec3(0, 1, 0), {0, 1, 0}}, RaySource{});
+      ASSERT_TRUE(hit.has_value());
+      ASSERT_EQ(hit->object, 0u);
+      Tracer tracer(compiled, 0);
+      RayCounts counts;
+      EXPECT_TRUE(tracer.shadowed(*hit, s.lights[0].position(), counts))
+          << objectKindName(kind) << " gap " << gap;
+    }
+  }
+}
+
+TEST(ThinGlassSlab, ExitPointAndDirectionFollowSnellsLaw) {
+  // A slab 1e-3 thick (y from -5e-4 to 5e-4) of index 1.5, a ray at 40
+  // degrees: it leaves parallel to how it came, shifted by
+  // h * sin(i - t) / cos(t).
+  double h = 1e-3;
+  scene::Scene s = sceneLookingAt({0, 1, 0}, {0, 0, 0});
+  scene::Material glass;
+  glass.transparency = 1.0;
+  glass.ri = 1.5;
+  s.objects.push_back(object(ObjectKind::Cube, {scale(10, h / 2, 10)}, glass));
+  RenderScene compiled(s);
+  double i = 40.0 * 3.141592653589793 / 180.0;
+  glm::dvec3 d(std::sin(i), -std::cos(i), 0.0);
+  glm::dvec3 entry(0.0, h / 2, 0.0);
+  std::optional<Hit> in = compiled.closestHit(Ray{entry - d, d}, RaySource{});
+  ASSERT_TRUE(in.has_value());
+  glm::dvec3 inside;
+  ASSERT_TRUE(refractDirection(d, in->normal, 1.0, 1.5, inside));
+  Ray through{offsetRayOrigin(in->point, in->pointError, in->normal, inside), inside};
+  std::optional<Hit> out = compiled.closestHit(through, RaySource{in->object, true});
+  ASSERT_TRUE(out.has_value());
+  ASSERT_TRUE(out->fromInside);
+  glm::dvec3 leaving;
+  ASSERT_TRUE(refractDirection(inside, -out->normal, 1.5, 1.0, leaving));
+
+  double t = std::asin(std::sin(i) / 1.5);
+  glm::dvec3 exactExit(h * std::tan(t), -h / 2, 0.0);
+  EXPECT_LT(glm::length(out->point - exactExit), 1e-6 * h);
+  EXPECT_LT(glm::length(leaving - d), 1e-6);
+  // The lateral shift against the unbent line.
+  double shift = h * std::sin(i - t) / std::cos(t);
+  glm::dvec3 unbent = entry + d * (h / std::cos(i));
+  EXPECT_NEAR(glm::length(glm::cross(out->point - unbent, d)), shift, 1e-6 * h);
+}
+
+TEST(ParallelMirrors, FiftyBouncesLandWhereTheyShould) {
+  // Mirrors z = -1 and z = +1; from the origin along (a, 0, -1) the k-th
+  // bounce is at x = a (2k + 1), z = -+1 alternately.
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 0, -1});
+  scene::Material mirror;
+  mirror.reflectivity = 1.0;
+  s.objects.push_back(
+      object(ObjectKind::Plane, {rotateX(1.5707963267948966), translate(0, 0, -1)}, mirror));
+  s.objects.push_back(
+      object(ObjectKind::Plane, {rotateX(1.5707963267948966), translate(0, 0, 1)}, mirror));
+  RenderScene compiled(s);
+  double a = 0.37;
+  Ray ray{{0, 0, 0}, glm::normalize(glm::dvec3(a, 0, -1))};
+  RaySource source;
+  for (int k = 0; k < 50; ++k) {
+    std::optional<Hit> hit = compiled.closestHit(ray, source);
+    ASSERT_TRUE(hit.has_value()) << k;
+    double x = a * (2 * k + 1);
+    EXPECT_NEAR(hit->point.x, x, 1e-13 * (2 * k + 1)) << k;
+    EXPECT_EQ(hit->point.z, k % 2 == 0 ? -1.0 : 1.0) << k;
+    glm::dvec3 r = glm::reflect(ray.direction, hit->normal);
+    ray = Ray{offsetRayOrigin(hit->point, hit->pointError, hit->normal, r), r};
+    source = RaySource{hit->object, glm::dot(r, hit->normal) < 0.0};
+  }
+}
+
+TEST(LightOnASurface, TheSurfaceItLiesOnCastsNoShadow) {
+  // The light lies on the floor under a sphere, and on a cube's top face
+  // under another: the undersides facing them are lit.
+  for (bool onCube : {false, true}) {
+    scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+    if (onCube) {
+      s.objects.push_back(object(ObjectKind::Cube, {translate(0, -1, 0)}));  // top face y = 0
+    } else {
+      s.objects.push_back(object(ObjectKind::Plane));
+    }
+    s.objects.push_back(object(ObjectKind::Sphere, {translate(0, 2, 0)}));
+    s.lights.push_back(light({0, 0, 0}));
+    RenderScene compiled(s);
+    std::optional<Hit> bottom = compiled.closestHit(Ray{{0, 1.5, 0}, {0, 1, 0}}, RaySource{});
+    ASSERT_TRUE(bottom.has_value());
+    ASSERT_TRUE(bottom->fromInside);  // from inside the sphere, up
+    std::optional<Hit> under = compiled.closestHit(Ray{{0.0, 0.5, 0.0}, {0, 1, 0}}, RaySource{});
+    ASSERT_TRUE(under.has_value());
+    Tracer tracer(compiled, 0);
+    RayCounts counts;
+    EXPECT_FALSE(tracer.shadowed(*under, s.lights[0].position(), counts)) << onCube;
+  }
+}
+
+TEST(CameraInside, EachSolidIsSeenFromWithinWithFiniteNormals) {
+  for (ObjectKind kind : {ObjectKind::Sphere, ObjectKind::Cube, ObjectKind::Cylinder}) {
+    scene::Scene s = sceneLookingAt({0, 0, 0}, {0.3, -0.2, -1});
+    s.objects.push_back(object(kind, {scale(2, 3, 4), rotateY(0.4)}));
+    RenderScene compiled(s);
+    RandomTransforms random(5);
+    for (int i = 0; i < 2000; ++i) {
+      std::optional<Hit> hit = compiled.closestHit(Ray{{0, 0, 0}, random.direction()}, RaySource{});
+      ASSERT_TRUE(hit.has_value()) << objectKindName(kind);
+      ASSERT_TRUE(hit->fromInside);
+      ASSERT_TRUE(std::isfinite(hit->normal.x + hit->normal.y + hit->normal.z));
+    }
+  }
+  // On a plane, the camera sees nothing of it (nothing closer than the eye).
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {1, 0, 0});
+  s.objects.push_back(object(ObjectKind::Plane));
+  RenderScene compiled(s);
+  EXPECT_FALSE(compiled.closestHit(Ray{{0, 0, 0}, {1, -1, 0}}, RaySource{}).has_value());
+}
+
+}  // namespace
+}  // namespace render

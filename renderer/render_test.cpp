@@ -1,0 +1,121 @@
+#include "renderer/render.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "renderer/default_scene.h"
+#include "renderer/test_scenes.h"
+
+namespace render {
+namespace {
+
+using namespace render::testing;
+using scene::ObjectKind;
+
+TEST(Render, TheSameImageAtAnyThreadCount) {
+  RenderScene compiled(defaultScene());
+  RenderSettings settings;
+  settings.width = 96;
+  settings.height = 64;
+  settings.samplesPerPixel = 4;
+  settings.seed = 17;
+  settings.threads = 1;
+  Image one = renderImage(compiled, settings);
+  for (int threads : {2, 3, 8}) {
+    settings.threads = threads;
+    Image many = renderImage(compiled, settings);
+    ASSERT_EQ(one.rgb, many.rgb) << threads << " threads";
+  }
+  // Another seed moves the samples, and so the image.
+  settings.seed = 18;
+  EXPECT_NE(renderImage(compiled, settings).rgb, one.rgb);
+}
+
+TEST(Render, OneSamplePassesThroughThePixelCentre) {
+  EXPECT_EQ(samplePosition(3, 7, 0, 1, 99), glm::dvec2(3.5, 7.5));
+  // The camera ray of pixel (i, j) at the centre of a 2x2 image looks along
+  // forward exactly when the image centre is the pixel corner.
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 0, -1});
+  RenderSettings settings;
+  settings.width = 2;
+  settings.height = 2;
+  PinholeCamera camera(s.camera, settings);
+  EXPECT_EQ(camera.rayThrough(1.0, 1.0).direction, glm::dvec3(0, 0, -1));
+  // Pixel (0, 0) is up and to the left; the vertical field of view is 60
+  // degrees, so its centre ray is tan(30)/2 up.
+  glm::dvec3 d = camera.rayThrough(0.5, 0.5).direction;
+  EXPECT_LT(d.x, 0.0);
+  EXPECT_GT(d.y, 0.0);
+  EXPECT_NEAR(d.y / -d.z, std::tan(3.141592653589793 / 6) / 2, 1e-15);
+}
+
+TEST(Render, SamplesAreStratified) {
+  for (int count : {4, 9, 16, 5}) {
+    std::set<std::pair<int, int>> cells;
+    int columns = static_cast<int>(std::ceil(std::sqrt(count)));
+    int rows = (count + columns - 1) / columns;
+    for (int k = 0; k < count; ++k) {
+      glm::dvec2 p = samplePosition(10, 20, k, count, 5);
+      ASSERT_GE(p.x, 10.0);
+      ASSERT_LT(p.x, 11.0);
+      ASSERT_GE(p.y, 20.0);
+      ASSERT_LT(p.y, 21.0);
+      cells.insert({static_cast<int>((p.x - 10) * columns), static_cast<int>((p.y - 20) * rows)});
+    }
+    EXPECT_EQ(cells.size(), static_cast<std::size_t>(count)) << "one sample per cell";
+  }
+}
+
+TEST(Render, NoPixelIsEverNanOrInfinite) {
+  // Lights far brighter than a float holds, a camera inside glass, a
+  // degenerate grazing plane, mirrors facing each other.
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 0.1, -1});
+  scene::Material glass;
+  glass.transparency = 1.0;
+  glass.reflectivity = 1.0;
+  glass.ri = 1.7;
+  s.objects.push_back(object(ObjectKind::Sphere, {scale(3)}, glass));
+  scene::Material mirror;
+  mirror.reflectivity = 1.0;
+  mirror.shininess = 1e-300;
+  s.objects.push_back(object(ObjectKind::Cube, {scale(10, 0.1, 10), translate(0, -1, 0)}, mirror));
+  s.objects.push_back(object(ObjectKind::Plane, {}, mirror));
+  s.lights.push_back(light({1, 1, 1}, glm::dvec3(1e300)));
+  s.lights.push_back(light({0, 0, 0}, glm::dvec3(1e300)));
+  RenderScene compiled(s);
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  settings.samplesPerPixel = 4;
+  Image image = renderImage(compiled, settings);
+  for (float v : image.rgb) ASSERT_TRUE(std::isfinite(v));
+}
+
+TEST(Render, CountsItsRays) {
+  RenderScene compiled(defaultScene());
+  RenderSettings settings;
+  settings.width = 40;
+  settings.height = 30;
+  settings.samplesPerPixel = 2;
+  RenderStatistics statistics;
+  renderImage(compiled, settings, &statistics);
+  EXPECT_EQ(statistics.rays.primary, 40u * 30u * 2u);
+  EXPECT_GT(statistics.rays.shadow, 0u);
+  EXPECT_GT(statistics.rays.secondary, 0u);
+}
+
+TEST(Render, ObjectIdsFollowThePixelCentres) {
+  scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+  s.objects.push_back(object(ObjectKind::Sphere));
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 64;
+  std::vector<std::int32_t> ids = renderObjectIds(RenderScene(s), settings);
+  EXPECT_EQ(ids[32 * 64 + 32], 0);  // the middle
+  EXPECT_EQ(ids[0], -1);            // the corner
+}
+
+}  // namespace
+}  // namespace render

@@ -1,0 +1,208 @@
+// The shading of single points against values computed by hand, one term
+// of RENDERING.md at a time.
+#include "renderer/tracer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "renderer/test_scenes.h"
+
+namespace render {
+namespace {
+
+using namespace render::testing;
+using scene::ObjectKind;
+
+// The colour seen along the ray from (0, 0, 5) toward -z.
+glm::dvec3 traceCentre(const scene::Scene& s, int maxDepth = 5, glm::dvec3 origin = {0, 0, 5},
+                       glm::dvec3 direction = {0, 0, -1}) {
+  RenderScene compiled(s);
+  Tracer tracer(compiled, maxDepth);
+  MediumStack media;
+  RayCounts counts;
+  return tracer.trace(Ray{origin, direction}, RaySource{}, 0, media, counts);
+}
+
+void expectColour(const glm::dvec3& got, const glm::dvec3& want, double tolerance = 1e-12) {
+  EXPECT_NEAR(got.x, want.x, tolerance);
+  EXPECT_NEAR(got.y, want.y, tolerance);
+  EXPECT_NEAR(got.z, want.z, tolerance);
+}
+
+// A unit sphere at the origin is hit at (0, 0, 1) with normal +z, seen
+// from +z: V = (0, 0, 1).
+scene::Scene unitSphere(const scene::Material& m, std::vector<scene::Light> lights) {
+  scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+  s.objects.push_back(object(ObjectKind::Sphere, {}, m));
+  s.lights = std::move(lights);
+  return s;
+}
+
+TEST(Shading, AmbientIsPerLightAndIgnoresShadowsAndAngles) {
+  scene::Material m = flat({0.5, 0.25, 1.0}, 0.2);
+  // A light behind the sphere still adds ambient.
+  glm::dvec3 one = traceCentre(unitSphere(m, {light({0, 0, -5}, {1, 2, 3})}));
+  expectColour(one, glm::dvec3(0.5 * 1 * 0.2, 0.25 * 2 * 0.2, 1.0 * 3 * 0.2));
+  glm::dvec3 two =
+      traceCentre(unitSphere(m, {light({0, 0, -5}, {1, 2, 3}), light({0, 9, 9}, {1, 1, 1})}));
+  expectColour(two, one + glm::dvec3(0.5, 0.25, 1.0) * 0.2);
+}
+
+TEST(Shading, DiffuseFollowsTheCosine) {
+  scene::Material m = flat({0.5, 0.5, 0.5}, 0.0);
+  m.diffuse = 0.8;
+  // The light at P + 5 * (0, 0.6, 0.8): cos = 0.8.
+  glm::dvec3 c = traceCentre(unitSphere(m, {light({0, 3, 5}, {1, 1, 0.5})}));
+  expectColour(c, glm::dvec3(0.5 * 0.8 * 0.8, 0.5 * 0.8 * 0.8, 0.5 * 0.5 * 0.8 * 0.8));
+}
+
+TEST(Shading, SpecularIsPhongsHighlightInTheLightsColour) {
+  scene::Material m = flat({0.0, 0.0, 0.0}, 0.0);
+  m.specular = 0.5;
+  m.shininess = 3.0;
+  // reflect(-l, N) = (0, -0.6, 0.8), V = (0, 0, 1): cos = 0.8; the object's
+  // colour does not tint the highlight.
+  glm::dvec3 c = traceCentre(unitSphere(m, {light({0, 3, 5}, {1, 2, 4})}));
+  double h = 0.5 * std::pow(0.8, 3.0);
+  expectColour(c, glm::dvec3(1, 2, 4) * h);
+}
+
+TEST(Shading, NoDiffuseOrSpecularFromBehind) {
+  scene::Material m;
+  m.colour = {1, 1, 1};
+  glm::dvec3 c = traceCentre(unitSphere(m, {light({0, 0, -5})}));
+  expectColour(c, glm::dvec3(m.ambient));
+}
+
+TEST(Shading, AShadowLeavesOnlyAmbient) {
+  scene::Material m;
+  m.colour = {1, 0.5, 0.25};
+  scene::Scene s = unitSphere(m, {light({0, 3, 5})});
+  // A small cube on the segment from P = (0, 0, 1) to the light.
+  s.objects.push_back(
+      object(ObjectKind::Cube, {scale(0.1), translate(0, 1.5, 3)}, flat({1, 1, 1})));
+  expectColour(traceCentre(s), m.colour * m.ambient);
+  // Transparent objects cast shadows too.
+  s.objects.back().material.transparency = 1.0;
+  expectColour(traceCentre(s), m.colour * m.ambient);
+}
+
+TEST(Shading, ReflectionAddsReflectivityTimesWhatTheMirrorSees) {
+  // A black mirror plane y = 0 seen from above at 45 degrees; the reflected
+  // ray meets a flat-coloured sphere.
+  scene::Scene s = sceneLookingAt({0, 1, 1}, {0, 0, 0});
+  scene::Material mirror = flat({0, 0, 0});
+  mirror.reflectivity = 0.5;
+  s.objects.push_back(object(ObjectKind::Plane, {}, mirror));
+  s.objects.push_back(
+      object(ObjectKind::Sphere, {scale(0.5), translate(0, 5, -5)}, flat({0.2, 0.4, 0.6})));
+  s.lights.push_back(light({0, 10, 0}));
+  glm::dvec3 c = traceCentre(s, 5, {0, 1, 1}, glm::normalize(glm::dvec3(0, -1, -1)));
+  expectColour(c, 0.5 * glm::dvec3(0.2, 0.4, 0.6));
+}
+
+scene::Scene glassSphereBeforeBackdrop(double reflectivity, double transparency) {
+  scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+  scene::Material glass = flat({0, 0, 0}, 0.0);
+  glass.reflectivity = reflectivity;
+  glass.transparency = transparency;
+  glass.ri = 1.5;
+  s.objects.push_back(object(ObjectKind::Sphere, {}, glass));
+  // A flat backdrop behind it, the plane z = -3.
+  s.objects.push_back(object(ObjectKind::Plane, {rotateX(1.5707963267948966), translate(0, 0, -3)},
+                             flat({0.3, 0.6, 0.9})));
+  s.lights.push_back(light({0, 0, 10}));
+  return s;
+}
+
+TEST(Shading, RefractionThroughAGlassSphere) {
+  // The central ray passes both surfaces unbent; each passage keeps
+  // TRANSPARENCY of the light.
+  expectColour(traceCentre(glassSphereBeforeBackdrop(0.0, 0.5)),
+               0.5 * 0.5 * glm::dvec3(0.3, 0.6, 0.9));
+  // A ray at depth 1 reaches the inner surface but not the backdrop.
+  expectColour(traceCentre(glassSphereBeforeBackdrop(0.0, 1.0), 1), glm::dvec3(0.0));
+}
+
+TEST(Shading, SchlickWeighsReflectionAgainstRefraction) {
+  // Normal incidence, 1 -> 1.5 and back: R = 0.04 at both surfaces. With
+  // depth 2, the path through both surfaces to the backdrop is the only
+  // one that carries light: (1 - R)^2 of it.
+  glm::dvec3 c = traceCentre(glassSphereBeforeBackdrop(1.0, 1.0), 2);
+  expectColour(c, 0.96 * 0.96 * glm::dvec3(0.3, 0.6, 0.9), 1e-12);
+}
+
+TEST(Schlick, AgainstItsFormula) {
+  EXPECT_NEAR(schlickReflectance(1.0, 1.5, 1.0), 0.04, 1e-15);
+  EXPECT_NEAR(schlickReflectance(1.0, 1.5, 0.0), 1.0, 1e-15);
+  EXPECT_NEAR(schlickReflectance(1.0, 1.5, 0.5), 0.04 + 0.96 * std::pow(0.5, 5), 1e-15);
+  // From glass into air, the transmitted angle's cosine is used.
+  double cosT = std::sqrt(1.0 - 1.5 * 1.5 * (1.0 - 0.9 * 0.9));
+  EXPECT_NEAR(schlickReflectance(1.5, 1.0, 0.9), 0.04 + 0.96 * std::pow(1.0 - cosT, 5), 1e-15);
+  // Beyond the critical angle: total reflection.
+  EXPECT_EQ(schlickReflectance(1.5, 1.0, 0.5), 1.0);
+}
+
+TEST(Refraction, FollowsSnellsLaw) {
+  glm::dvec3 n(0, 1, 0);
+  for (double angle : {0.0, 0.3, 0.7, 1.2, 1.5}) {
+    glm::dvec3 d(std::sin(angle), -std::cos(angle), 0);
+    glm::dvec3 t;
+    ASSERT_TRUE(refractDirection(d, n, 1.0, 1.33, t));
+    double sinT = t.x;
+    EXPECT_NEAR(1.0 * std::sin(angle), 1.33 * sinT, 1e-15) << angle;
+    EXPECT_NEAR(glm::length(t), 1.0, 1e-15);
+    EXPECT_LT(t.y, 0.0);
+  }
+}
+
+TEST(Refraction, TotalInternalReflection) {
+  glm::dvec3 n(0, 1, 0);
+  double critical = std::asin(1.0 / 1.5);
+  glm::dvec3 t;
+  glm::dvec3 below(std::sin(critical - 1e-6), -std::cos(critical - 1e-6), 0);
+  glm::dvec3 beyond(std::sin(critical + 1e-6), -std::cos(critical + 1e-6), 0);
+  EXPECT_TRUE(refractDirection(below, n, 1.5, 1.0, t));
+  EXPECT_FALSE(refractDirection(beyond, n, 1.5, 1.0, t));
+}
+
+TEST(Shading, TotalInternalReflectionSendsNothingThrough) {
+  // Inside a glass cube, a ray meets its top face at 60 degrees from the
+  // normal (beyond the critical 41.8): nothing refracts out, so the white
+  // backdrop above stays unseen; straight up, it shows.
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 1, 0});
+  scene::Material glass = flat({0, 0, 0}, 0.0);
+  glass.transparency = 1.0;
+  glass.ri = 1.5;
+  s.objects.push_back(object(ObjectKind::Cube, {}, glass));
+  s.objects.push_back(object(ObjectKind::Plane, {translate(0, 3, 0)}, flat({1, 1, 1})));
+  s.lights.push_back(light({0, 10, 0}));
+  glm::dvec3 steep(std::sin(1.0472), std::cos(1.0472), 0);
+  glm::dvec3 direct = traceCentre(s, 1, {0, 0, 0}, glm::dvec3(0, 1, 0));
+  expectColour(direct, glm::dvec3(1.0));  // straight up, it gets through
+  // From (-0.9, 0.5) at 60 degrees the ray meets the top face at x = -0.03.
+  glm::dvec3 c = traceCentre(s, 1, {-0.9, 0.5, 0}, steep);
+  expectColour(c, glm::dvec3(0.0));
+}
+
+TEST(Tracing, DepthLimitReturnsBlack) {
+  // Two facing mirrors: each bounce takes REFLECTIVITY; the ray that would
+  // make bounce depth + 1 returns black, so the sum stops there.
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 0, -1});
+  scene::Material mirror = flat({1, 1, 1}, 0.1);
+  mirror.reflectivity = 0.5;
+  s.objects.push_back(
+      object(ObjectKind::Plane, {rotateX(1.5707963267948966), translate(0, 0, -1)}, mirror));
+  s.objects.push_back(
+      object(ObjectKind::Plane, {rotateX(1.5707963267948966), translate(0, 0, 1)}, mirror));
+  s.lights.push_back(light({0, 5, 0}));
+  for (int depth : {0, 1, 2, 5}) {
+    double expected = 0.0;
+    for (int bounce = 0; bounce <= depth; ++bounce) expected += 0.1 * std::pow(0.5, bounce);
+    expectColour(traceCentre(s, depth, {0, 0, 0}, {0, 0, -1}), glm::dvec3(expected), 1e-15);
+  }
+}
+
+}  // namespace
+}  // namespace render
