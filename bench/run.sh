@@ -242,19 +242,22 @@ if [[ ! -f $doc ]]; then
   cat >"$doc" <<'EOF'
 # Performance
 
-How fast the library reads scene files, and how much memory it needs. The
-figures below are written by the benchmark under `bench/`; to reproduce them
-on your machine, run
+How fast the library reads scene files, and how much memory it needs; and
+how fast `sfrender` renders, against POV-Ray. The figures below are written
+by the benchmarks under `bench/`; to reproduce them on your machine, run
 
     make bench
 
-(or `bash bench/run.sh BUILD_DIR` on an existing Release build). It generates
-a scene of a million objects (about 120 MB) under `/tmp/scenefile-bench`,
-times `scene::parseSceneFile` on it, measures the peak memory of one parse,
+(or `bash bench/run.sh BUILD_DIR` and `bash bench/render_bench.sh BUILD_DIR`
+on an existing Release build). The reading benchmark generates a scene of a
+million objects (about 120 MB) under `/tmp/scenefile-bench`, times
+`scene::parseSceneFile` on it, measures the peak memory of one parse,
 compares with POV-Ray when `povray` is installed, and rewrites its section of
-this file. Each section states the date and the machine it was measured on.
-The target is at least 200 MB/s on one core, with a peak memory of at most
-twice the size of the scene model.
+this file. The target is at least 200 MB/s on one core, with a peak memory of
+at most twice the size of the scene model. The render benchmark renders
+scenes of 1,000 and 100,000 objects with `sfrender` and with POV-Ray 3.7 at
+the same settings, under `/tmp/scenefile-render-bench`, and rewrites its own
+section. Each section states the date and the machine it was measured on.
 
 EOF
 fi
