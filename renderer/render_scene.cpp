@@ -57,7 +57,6 @@ RenderScene::RenderScene(const scene::Scene& scene) : camera_(scene.camera) {
     r.kind = o.kind;
     r.toWorld = o.matrix;
     r.toLocal = inverse3(glm::dmat3(o.matrix));
-    r.toLocalOffset = -(r.toLocal * glm::dvec3(o.matrix[3]));
     r.normalToWorld = glm::transpose(r.toLocal);
     r.material = o.material;
     hasTransparency_ |= o.material.transparency > 0.0;
@@ -83,7 +82,7 @@ std::optional<RenderScene::Candidate> RenderScene::intersectObject(std::uint32_t
   bool self = index == source.object;
   // A ray leaving a plane, or leaving a convex solid outward, cannot meet it.
   if (self && (object.kind == scene::ObjectKind::Plane || !source.inward)) return std::nullopt;
-  glm::dvec3 o = object.toLocal * ray.origin + object.toLocalOffset;
+  glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
   ShapeSpan span = intersectUnitShape(object.kind, o, d);
   if (span.empty) return std::nullopt;
@@ -98,7 +97,7 @@ std::optional<RenderScene::Candidate> RenderScene::intersectObject(std::uint32_t
 
 Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate& c) const {
   const RenderObject& object = objects_[index];
-  glm::dvec3 o = object.toLocal * ray.origin + object.toLocalOffset;
+  glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
   ShapeSpan span = intersectUnitShape(object.kind, o, d);
   glm::dvec3 localNormal = c.atExit ? span.exitNormal : span.enterNormal;
@@ -181,7 +180,7 @@ std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) con
   for (std::uint32_t i = 0; i < objects_.size(); ++i) {
     const RenderObject& object = objects_[i];
     if (object.kind == scene::ObjectKind::Plane || object.material.transparency <= 0.0) continue;
-    glm::dvec3 local = object.toLocal * p + object.toLocalOffset;
+    glm::dvec3 local = object.toLocalPoint(p);
     bool inside = false;
     switch (object.kind) {
       case scene::ObjectKind::Sphere:

@@ -33,9 +33,15 @@ struct RenderObject {
   scene::ObjectKind kind = scene::ObjectKind::Sphere;
   glm::dmat4 toWorld{1.0};
   glm::dmat3 toLocal{1.0};        // inverse of the 3x3 block
-  glm::dvec3 toLocalOffset{0.0};  // -toLocal * translation
   glm::dmat3 normalToWorld{1.0};  // inverse transpose of the 3x3 block
   scene::Material material;
+
+  // A world point in object space. The translation comes off first, in
+  // world space: folding it into an offset (toLocal * t) would cancel large
+  // terms for a small object far from the origin.
+  glm::dvec3 toLocalPoint(const glm::dvec3& p) const {
+    return toLocal * (p - glm::dvec3(toWorld[3]));
+  }
 };
 
 struct RenderLight {
