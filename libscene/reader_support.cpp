@@ -110,6 +110,27 @@ bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count,
   return ok;
 }
 
+bool readPlainNumbers(std::string_view line, std::size_t readable, std::uint32_t lineNumber,
+                      std::size_t count, double* values, SourceSpan* spans) {
+  auto isBlank = [](char c) { return c == ' ' || c == '\t'; };
+  std::size_t i = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    while (i < line.size() && isBlank(line[i])) ++i;
+    if (i == line.size()) return false;
+    // Every byte must belong to a number or a blank, so a line read here
+    // holds no invalid byte, comment or keyword either.
+    std::size_t length = 0;
+    ParsedNumber parsed = parseLeadingNumber(line.substr(i), readable - i, length);
+    if (parsed.status != NumberStatus::Ok) return false;
+    values[k] = parsed.value;
+    spans[k] = SourceSpan{lineNumber, static_cast<std::uint32_t>(i + 1),
+                          static_cast<std::uint32_t>(length)};
+    i += length;
+  }
+  while (i < line.size() && isBlank(line[i])) ++i;
+  return i == line.size();
+}
+
 std::optional<std::string_view> keywordInOtherCase(std::string_view word,
                                                    std::span<const std::string_view> candidates) {
   for (std::string_view c : candidates) {

@@ -2,6 +2,7 @@
 // invalid bytes and unknown keywords, each reported the same way.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -23,6 +24,15 @@ bool reportComment(const LineCursor& cursor, DiagnosticList& out);
 // is reported; false if any was.
 bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count, double* values,
                  std::string_view what, DiagnosticList& out);
+
+// readNumbers for the common line, in one pass over its text and with no
+// tokens: true when `line` is exactly `count` numbers that read cleanly,
+// each value and span then stored. False says only that the line needs the
+// careful path (the cursor's tokens and readNumbers), which finds and
+// reports whatever is wrong with it; nothing is reported here. `readable`
+// is as for parseLeadingNumber.
+bool readPlainNumbers(std::string_view line, std::size_t readable, std::uint32_t lineNumber,
+                      std::size_t count, double* values, SourceSpan* spans);
 
 // The closest candidate to `word`: the same word in another case, or one at
 // a small edit distance.

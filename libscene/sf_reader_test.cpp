@@ -220,6 +220,21 @@ TEST(SceneFileReader, ChecksColours) {
   EXPECT_TRUE(zero.diagnostics.empty());
 }
 
+TEST(SceneFileReader, PointsAtValuesWhateverTheBlanksAndLiterals) {
+  // Tabs, runs of spaces, blanks at both ends, CRLF, and literals that the
+  // quick paths of the reader decline (long ones, exponents).
+  ReadResult r = parse(kCameraRecord + kLightRecord +
+                       "SPHERE\r\n\t1  -0.5\t 2 \r\n1.0000000000000000001 0 0 0\r\n"
+                       "0 1e0 0 0\n0 0 +1 0\n0\t0   1.000000000000001e0 1");
+  Diagnostic negative = expectOne(r.diagnostics, DiagnosticCode::NegativeColour, 14, 5);
+  EXPECT_EQ(negative.span.length, 4u);
+  Diagnostic above =
+      expectOne(r.diagnostics, DiagnosticCode::ColourAboveOne, 14, 11, Severity::Warning);
+  EXPECT_EQ(above.span.length, 1u);
+  Diagnostic lastRow = expectOne(r.diagnostics, DiagnosticCode::MatrixLastRow, 18, 7);
+  EXPECT_EQ(lastRow.span.length, 19u);
+}
+
 TEST(SceneFileReader, ChecksTheCamera) {
   ReadResult parallel = parse("CAMERA\n0 0 0\n1 0 0 0\n0 0 1 0\n0 0 1 0\n0 0 0 1\n");
   expectOne(parallel.diagnostics, DiagnosticCode::CameraDegenerate, 1, 1);

@@ -10,9 +10,11 @@ LineCursor::LineCursor(std::string_view text) : text_(text) {
   if (text_.starts_with("\xEF\xBB\xBF")) offset_ = 3;
 }
 
-bool LineCursor::next() {
+bool LineCursor::nextLine() {
   if (offset_ >= text_.size()) return false;
   ++lineNumber_;
+  tokenCount_ = 0;
+  invalidByteColumn_.reset();
   // Columns count from the start of the line; the BOM belongs to no column.
   const char* begin = text_.data() + offset_;
   std::size_t remaining = text_.size() - offset_;
@@ -21,7 +23,12 @@ bool LineCursor::next() {
   offset_ += newline ? length + 1 : length;
   if (length > 0 && begin[length - 1] == '\r') --length;
   line_ = std::string_view(begin, length);
+  return true;
+}
 
+void LineCursor::tokenize() {
+  const char* begin = line_.data();
+  std::size_t length = line_.size();
   tokenCount_ = 0;
   invalidByteColumn_.reset();
   std::size_t i = 0;
@@ -47,7 +54,6 @@ bool LineCursor::next() {
     }
     ++tokenCount_;
   }
-  return true;
 }
 
 void LineCursor::cutAtInvalidByte() {

@@ -30,10 +30,25 @@ class LineCursor {
   explicit LineCursor(std::string_view text);
 
   // Moves to the next line; false once the text is used up.
-  bool next();
+  bool next() {
+    if (!nextLine()) return false;
+    tokenize();
+    return true;
+  }
+
+  // The same in two steps, for a reader that reads most lines from line()
+  // in one pass and splits only the others into tokens: until tokenize(),
+  // the line counts as blank and has no invalid byte.
+  bool nextLine();
+  void tokenize();
 
   std::uint32_t lineNumber() const { return lineNumber_; }
   std::string_view line() const { return line_; }
+  // The bytes from the start of line() to the end of the text: a reader may
+  // look past the end of the line as far as that.
+  std::size_t readableFromLine() const {
+    return static_cast<std::size_t>(text_.data() + text_.size() - line_.data());
+  }
   bool blank() const { return tokenCount_ == 0; }
   // Every token on the line, the stored ones being the first kMaxTokens.
   std::size_t tokenCount() const { return tokenCount_; }
