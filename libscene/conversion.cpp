@@ -49,8 +49,40 @@ std::optional<std::string> convertScene(const Scene& scene, OutputFormat format,
       writeOptions.outputFile = options.outputFile;
       return writeInstructionFile(scene, writeOptions, out);
     }
+    case OutputFormat::Gltf:
+    case OutputFormat::Glb: {
+      GltfWriteOptions writeOptions = options.gltf;
+      writeOptions.binary = format == OutputFormat::Glb;
+      writeOptions.noLoss = options.noLoss;
+      // One string holds one file: the buffer is embedded.
+      writeOptions.externalBuffer.clear();
+      std::optional<GltfFiles> files = writeGltf(scene, writeOptions, out);
+      if (!files) return std::nullopt;
+      return std::move(files->main);
+    }
+    case OutputFormat::Pov: {
+      PovWriteOptions writeOptions = options.pov;
+      writeOptions.noLoss = options.noLoss;
+      return writePovScene(scene, writeOptions, out);
+    }
   }
   return std::nullopt;
+}
+
+std::optional<ConvertedFiles> convertSceneToFiles(const Scene& scene, OutputFormat format,
+                                                  const ConversionOptions& options,
+                                                  DiagnosticList& out) {
+  if (format == OutputFormat::Gltf && !options.gltf.externalBuffer.empty()) {
+    GltfWriteOptions writeOptions = options.gltf;
+    writeOptions.binary = false;
+    writeOptions.noLoss = options.noLoss;
+    std::optional<GltfFiles> files = writeGltf(scene, writeOptions, out);
+    if (!files) return std::nullopt;
+    return ConvertedFiles{std::move(files->main), std::move(files->buffer)};
+  }
+  std::optional<std::string> text = convertScene(scene, format, options, out);
+  if (!text) return std::nullopt;
+  return ConvertedFiles{std::move(*text), {}};
 }
 
 }  // namespace scene

@@ -6,11 +6,13 @@
 #include <string>
 
 #include "libscene/diagnostic.h"
+#include "libscene/gltf_writer.h"
+#include "libscene/pov_writer.h"
 #include "libscene/scene.h"
 
 namespace scene {
 
-enum class OutputFormat { SceneFile, InstructionFile };
+enum class OutputFormat { SceneFile, InstructionFile, Gltf, Glb, Pov };
 
 struct ConversionOptions {
   // Every loss is an error, and nothing is written.
@@ -19,6 +21,13 @@ struct ConversionOptions {
   bool approximate = false;
   // OUTPUT_FILE for an instruction file made from a scene that has none.
   std::string outputFile = "output.ppm";
+  // For glTF output: the camera's field of view, the image size, the
+  // tessellation and where the buffer goes (GltfWriteOptions; `binary` and
+  // `noLoss` follow the format and the option above).
+  GltfWriteOptions gltf;
+  // For POV-Ray output: the sfrender settings to match, and --flat
+  // (`noLoss` follows the option above).
+  PovWriteOptions pov;
 };
 
 // The scene's text in `format`, or nothing when the conversion cannot be
@@ -26,5 +35,15 @@ struct ConversionOptions {
 // the record it belongs to: a warning, or an error under `noLoss`.
 std::optional<std::string> convertScene(const Scene& scene, OutputFormat format,
                                         const ConversionOptions& options, DiagnosticList& out);
+
+// A conversion's files: the output, and for a .gltf whose buffer goes
+// beside it (options.gltf.externalBuffer), that buffer's bytes.
+struct ConvertedFiles {
+  std::string main;
+  std::string sidecar;
+};
+std::optional<ConvertedFiles> convertSceneToFiles(const Scene& scene, OutputFormat format,
+                                                  const ConversionOptions& options,
+                                                  DiagnosticList& out);
 
 }  // namespace scene

@@ -80,6 +80,41 @@ enum class DiagnosticCode : std::uint16_t {
   DroppedOutputFile,
   IgnoredLightMatrix,
   TooManyErrors,
+  // glTF: writing.
+  PlaneMadeFinite,
+  LightFalloff,
+  GltfValueClamped,
+  GltfExtrasOnly,
+  GltfMatrixSplit,
+  // glTF: reading.
+  GltfInvalidJson,
+  GltfInvalidGlb,
+  GltfInvalid,
+  GltfIndexOutOfRange,
+  GltfBadAccessor,
+  GltfExternalFile,
+  GltfNodeCycle,
+  GltfUnsupportedExtension,
+  GltfTooLarge,
+  GltfMeshNotPrimitive,
+  GltfMeshFit,
+  GltfLightApproximated,
+  GltfExtraCamera,
+  GltfNoCamera,
+  CameraFov,
+  GltfIgnored,
+  GltfExtrasStale,
+  // POV-Ray: writing.
+  LossPov,
+  // POV-Ray: reading.
+  PovSyntax,
+  PovUnsupported,
+  PovRefused,
+  PovLimit,
+  PovUnknownIdentifier,
+  PovIgnored,
+  PovLoss,
+  PovDegenerate,
 };
 
 // Every code, in declaration order: for documentation and coverage tests.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include <glm/common.hpp>
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/matrix.hpp>
 
@@ -15,16 +16,24 @@ glm::dmat3 linearPart(const glm::dmat4& m) { return glm::dmat3(m); }
 glm::dmat4 transposed(const glm::dmat4& m) { return glm::transpose(m); }
 
 glm::dvec3 singularValues(const glm::dmat3& a) {
-  // One-sided Jacobi (Hestenes): rotate pairs of columns until they are
-  // orthogonal; the column norms are then the singular values.
-  glm::dmat3 u = a;
-  for (int sweep = 0; sweep < 30; ++sweep) {
+  glm::dvec3 sigma = glm::abs(rotationScaleRotation(a).sigma);
+  std::sort(&sigma[0], &sigma[0] + 3, [](double x, double y) { return x > y; });
+  return sigma;
+}
+
+RotationScaleRotation rotationScaleRotation(const glm::dmat3& a) {
+  // One-sided Jacobi (Hestenes), which keeps relative accuracy even for a
+  // nearly singular block. Rotate pairs of columns of W = A * V until they are orthogonal: then
+  // W = U * diag(|w_i|).
+  glm::dmat3 w = a;
+  glm::dmat3 v(1.0);
+  for (int sweep = 0; sweep < 60; ++sweep) {
     bool rotated = false;
     for (int p = 0; p < 2; ++p) {
       for (int q = p + 1; q < 3; ++q) {
-        double alpha = glm::dot(u[p], u[p]);
-        double beta = glm::dot(u[q], u[q]);
-        double gamma = glm::dot(u[p], u[q]);
+        double alpha = glm::dot(w[p], w[p]);
+        double beta = glm::dot(w[q], w[q]);
+        double gamma = glm::dot(w[p], w[q]);
         if (gamma == 0.0 ||
             std::abs(gamma) <= std::numeric_limits<double>::epsilon() * std::sqrt(alpha * beta)) {
           continue;
@@ -34,16 +43,38 @@ glm::dvec3 singularValues(const glm::dmat3& a) {
         double t = std::copysign(1.0, zeta) / (std::abs(zeta) + std::hypot(1.0, zeta));
         double c = 1.0 / std::hypot(1.0, t);
         double s = c * t;
-        glm::dvec3 up = u[p];
-        u[p] = c * up - s * u[q];
-        u[q] = s * up + c * u[q];
+        glm::dvec3 wp = w[p];
+        w[p] = c * wp - s * w[q];
+        w[q] = s * wp + c * w[q];
+        glm::dvec3 vp = v[p];
+        v[p] = c * vp - s * v[q];
+        v[q] = s * vp + c * v[q];
       }
     }
     if (!rotated) break;
   }
-  double s[3] = {glm::length(u[0]), glm::length(u[1]), glm::length(u[2])};
-  std::sort(s, s + 3, [](double x, double y) { return x > y; });
-  return {s[0], s[1], s[2]};
+  RotationScaleRotation out;
+  out.v = v;
+  for (int i = 0; i < 3; ++i) {
+    out.sigma[i] = glm::length(w[i]);
+    out.u[i] = out.sigma[i] > 0.0 ? w[i] / out.sigma[i] : glm::dvec3(0.0);
+  }
+  // A singular block leaves a zero column of U: complete it to a basis.
+  for (int i = 0; i < 3; ++i) {
+    if (out.sigma[i] == 0.0) {
+      out.u[i] = glm::normalize(glm::cross(out.u[(i + 1) % 3], out.u[(i + 2) % 3]));
+    }
+  }
+  // Make both factors rotations; their signs move into sigma.
+  if (glm::determinant(out.v) < 0.0) {
+    out.v[2] = -out.v[2];
+    out.u[2] = -out.u[2];
+  }
+  if (glm::determinant(out.u) < 0.0) {
+    out.u[2] = -out.u[2];
+    out.sigma[2] = -out.sigma[2];
+  }
+  return out;
 }
 
 namespace {

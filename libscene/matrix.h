@@ -22,6 +22,17 @@ double conditionNumber(const glm::dmat3& a);
 // matrices without the SVD (the validator runs this once per object).
 bool conditionNumberExceeds(const glm::dmat3& a, double limit);
 
+// A = U * diag(sigma) * V^T with U and V rotations (determinant +1); a
+// mirror leaves its sign on the last entry of sigma. By one-sided Jacobi
+// rotations, as singularValues, with the rotations kept. Used to write a
+// matrix with shear as two rotation-and-scale transforms.
+struct RotationScaleRotation {
+  glm::dmat3 u{1.0};
+  glm::dvec3 sigma{1.0};
+  glm::dmat3 v{1.0};
+};
+RotationScaleRotation rotationScaleRotation(const glm::dmat3& a);
+
 // The transpose of a 4x4, as a file written column by column needs.
 glm::dmat4 transposed(const glm::dmat4& m);
 

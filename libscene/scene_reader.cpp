@@ -1,8 +1,11 @@
 #include "libscene/scene_reader.h"
 
 #include <cctype>
+#include <filesystem>
 
+#include "libscene/gltf_reader.h"
 #include "libscene/instruction_reader.h"
+#include "libscene/pov_reader.h"
 #include "libscene/sf_reader.h"
 #include "libscene/text_lines.h"
 
@@ -20,7 +23,12 @@ bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {
 
 }  // namespace
 
-SceneFormat detectFormat(std::string_view text) {
+SceneFormat detectFormat(std::string_view text, std::string_view fileName) {
+  if (looksLikeGlb(text)) return SceneFormat::Glb;
+  if (looksLikeGltfJson(text)) return SceneFormat::Gltf;
+  if (looksLikePov(text)) return SceneFormat::Pov;
+  // The extension decides only what the content leaves open.
+  bool povName = fileName.ends_with(".pov");
   LineCursor cursor(text);
   while (cursor.next()) {
     if (cursor.blank()) continue;
@@ -39,17 +47,33 @@ SceneFormat detectFormat(std::string_view text) {
     if (startsWithIgnoringCase(first, "OUTPUT") || startsWithIgnoringCase(first, "START")) {
       return SceneFormat::InstructionFile;
     }
-    return SceneFormat::Unknown;
+    return povName ? SceneFormat::Pov : SceneFormat::Unknown;
   }
-  return SceneFormat::SceneFile;
+  return povName ? SceneFormat::Pov : SceneFormat::SceneFile;
 }
 
 ReadResult parseScene(std::string_view text, std::string fileName, const ReadOptions& options) {
-  switch (detectFormat(text)) {
+  switch (detectFormat(text, fileName)) {
     case SceneFormat::SceneFile:
       return parseSceneFile(text, std::move(fileName), options);
     case SceneFormat::InstructionFile:
       return parseInstructionFile(text, std::move(fileName), options);
+    case SceneFormat::Gltf:
+    case SceneFormat::Glb: {
+      std::filesystem::path folder = std::filesystem::path(fileName).parent_path();
+      return parseGltf(text, std::move(fileName), folder, options);
+    }
+    case SceneFormat::Pov: {
+      PovReadOptions povOptions;
+      povOptions.skipUnsupported = options.skipUnsupported;
+      povOptions.noLoss = options.noLoss;
+      if (options.imageWidth > 0 && options.imageHeight > 0) {
+        povOptions.imageWidth = options.imageWidth;
+        povOptions.imageHeight = options.imageHeight;
+      }
+      povOptions.errorLimit = options.errorLimit;
+      return importPov(text, std::move(fileName), povOptions).read;
+    }
     case SceneFormat::Unknown:
       break;
   }

@@ -7,8 +7,17 @@ packages=(
   build-essential cmake pkg-config
   libcli11-dev libglm-dev libtinygltf-dev nlohmann-json3-dev
   libopenimageio-dev libgtest-dev libgmock-dev
-  povray
+  # POV-Ray renders the cross-checks; the tutorial-style scenes include its
+  # colors.inc.
+  povray povray-includes
+  # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).
+  blender python3-numpy
 )
+# The glTF Validator runs on Node.js; a machine with node and npm already
+# (from Debian or elsewhere) keeps them.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -17,7 +26,18 @@ for p in "${packages[@]}"; do
   fi
 done
 
+# The validator itself, pinned by tests/gltf/package-lock.json.
+install_validator() {
+  local folder
+  folder="$(cd "$(dirname "$0")/.." && pwd)/tests/gltf"
+  if [ ! -d "$folder/node_modules/gltf-validator" ]; then
+    echo "install-deps: npm ci in tests/gltf" >&2
+    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  fi
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
+  install_validator
   exit 0
 fi
 
@@ -35,3 +55,4 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+install_validator

@@ -234,8 +234,98 @@ TEST_F(ToolTest, SfconvertRejectsInvalidInputAndWritesNothing) {
             toInt(ExitCode::IoError));
 }
 
+TEST_F(ToolTest, SfconvertWritesAndReadsGltfAndGlb) {
+  std::string in = write("scene.sf", kValidScene);
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("a.gltf")}), 0) << err_.str();
+  EXPECT_EQ(read("a.gltf").substr(0, 1), "{");
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("b.glb"), "--fov", "45", "--width", "640",
+                               "--height", "480", "--tessellation", "8"}),
+            0)
+      << err_.str();
+  EXPECT_EQ(read("b.glb").substr(0, 4), "glTF");
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("normal.sf")}), 0);
+  for (const char* name : {"a.gltf", "b.glb"}) {
+    ASSERT_EQ(run(runSfconvert, {"sfconvert", path(name), path(std::string(name) + ".sf")}), 0)
+        << err_.str();
+    EXPECT_EQ(read(std::string(name) + ".sf"), read("normal.sf")) << name;
+  }
+  EXPECT_NE(err_.str().find("render with sfrender --fov 45"), std::string::npos) << err_.str();
+  // --to picks the format whatever the name.
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("c.bin"), "--to", "glb"}), 0);
+  EXPECT_EQ(read("c.bin").substr(0, 4), "glTF");
+}
+
+TEST_F(ToolTest, SfconvertWritesAnExternalBufferBesideTheGltf) {
+  std::string in = write("scene.sf", kValidScene);
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("ext.gltf"), "--external-buffers"}), 0)
+      << err_.str();
+  EXPECT_EQ(files(), (std::vector<std::string>{"ext.bin", "ext.gltf", "scene.sf"}));
+  EXPECT_NE(read("ext.gltf").find("\"uri\": \"ext.bin\""), std::string::npos);
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", path("ext.gltf"), path("back.sf")}), 0) << err_.str();
+  // Options that make no sense are usage errors.
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("x.glb"), "--external-buffers"}),
+            toInt(ExitCode::Usage));
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("x.gltf"), "--fov", "180"}),
+            toInt(ExitCode::Usage));
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("x.gltf"), "--tessellation", "2"}),
+            toInt(ExitCode::Usage));
+}
+
+TEST_F(ToolTest, SfconvertRejectsHostileGltfAndWritesNothing) {
+  std::string escape =
+      write("escape.gltf",
+            R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"../../etc/passwd"}]})");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", escape, path("out.sf")}), 1);
+  EXPECT_NE(err_.str().find("[gltf-external-file]"), std::string::npos) << err_.str();
+  std::string glb = write("cut.glb", std::string("glTF\x02\0\0\0\x40\0\0\0", 12));
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", glb, path("out.sf")}), 1);
+  EXPECT_NE(err_.str().find("[gltf-invalid-glb]"), std::string::npos) << err_.str();
+  EXPECT_EQ(files(), (std::vector<std::string>{"cut.glb", "escape.gltf"}));
+}
+
 // The manual's three ways of running the renderer: no file, a scene file,
 // an instruction file.
+TEST_F(ToolTest, SfconvertWritesAndReadsPovRay) {
+  std::string in = write("in.sf", kValidScene);
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("a.pov"), "--fov", "45", "--width", "320",
+                               "--height", "200"}),
+            0)
+      << err_.str();
+  std::string pov = read("a.pov");
+  EXPECT_NE(pov.find("#version 3.7;"), std::string::npos);
+  EXPECT_NE(pov.find("fov 45 width 320 height 200"), std::string::npos);
+  // Back to a scene file: the same bytes, and the view to render it with.
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", path("a.pov"), path("b.sf")}), 0) << err_.str();
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("n.sf")}), 0) << err_.str();
+  EXPECT_EQ(read("b.sf"), read("n.sf"));
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", path("a.pov"), path("c.sf")}), 0);
+  EXPECT_NE(err_.str().find("hint: render with sfrender --fov 45 --width 320 --height 200"),
+            std::string::npos)
+      << err_.str();
+  // --to pov and --flat.
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, "-", "--to", "pov", "--flat"}), 0);
+  EXPECT_EQ(out_.str().find("light_source"), std::string::npos);
+  EXPECT_NE(out_.str().find("finish { ambient 1 diffuse 0"), std::string::npos);
+}
+
+TEST_F(ToolTest, SfconvertSkipsUnsupportedPovRayOnlyWhenAsked) {
+  std::string in = write("in.pov",
+                         "#include \"colors.inc\"\ncamera { location <0, 1, -5> look_at 0 }\n"
+                         "torus { 1, 0.2 pigment { Red } }\nsphere { 0, 1 pigment { Red } }\n");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("a.sf")}), toInt(ExitCode::InvalidInput));
+  EXPECT_NE(err_.str().find(":3:1: error: 'torus' is not supported (line 3) [pov-unsupported]"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_FALSE(fs::exists(path("a.sf")));
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("a.sf"), "--skip-unsupported"}), 0)
+      << err_.str();
+  EXPECT_NE(read("a.sf").find("SPHERE\n1 0 0\n"), std::string::npos);
+  // A file named .pov with nothing in it is an empty POV-Ray scene.
+  std::string empty = write("empty.pov", "// nothing yet\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", empty}), 0) << err_.str();
+  EXPECT_NE(err_.str().find("POV-Ray's default camera"), std::string::npos) << err_.str();
+}
+
 TEST_F(ToolTest, SfrenderRendersTheDefaultSceneWithoutInput) {
   std::string out = path("default.ppm");
   EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--width", "32", "--height", "24"}), 0)

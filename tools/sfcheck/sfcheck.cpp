@@ -20,6 +20,12 @@ std::string formatName(scene::SceneFormat format) {
       return "scene-file";
     case scene::SceneFormat::InstructionFile:
       return "instruction-file";
+    case scene::SceneFormat::Gltf:
+      return "gltf";
+    case scene::SceneFormat::Glb:
+      return "glb";
+    case scene::SceneFormat::Pov:
+      return "pov";
     case scene::SceneFormat::Unknown:
       break;
   }
@@ -33,12 +39,16 @@ std::string count(std::size_t n, const char* word) {
 }  // namespace
 
 int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App app{"Checks scene files and instruction files and reports every problem", "sfcheck"};
+  CLI::App app{
+      "Checks scene files, instruction files and POV-Ray scenes (the subset sfconvert reads) and "
+      "reports every problem",
+      "sfcheck"};
   app.set_version_flag("--version", SCENEFILE_VERSION);
   std::vector<std::string> files;
   bool werror = false;
   std::string format = "text";
-  app.add_option("files", files, "scene files (.sf) or instruction files to check")
+  app.add_option("files", files,
+                 "scene files (.sf), instruction files or POV-Ray scenes (.pov) to check")
       ->required();
   app.add_flag("--werror", werror, "treat warnings as errors");
   app.add_option("--format", format, "how to print diagnostics")
@@ -62,7 +72,7 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
       }
       continue;
     }
-    scene::SceneFormat detected = scene::detectFormat(*text);
+    scene::SceneFormat detected = scene::detectFormat(*text, file);
     scene::ReadResult result = scene::parseScene(*text, file);
     if (detected == scene::SceneFormat::InstructionFile) {
       scene::checkOutputLocation(result.scene, std::filesystem::path(file).parent_path(),

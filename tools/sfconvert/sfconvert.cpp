@@ -1,5 +1,6 @@
 #include "tools/sfconvert/sfconvert.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -17,6 +18,9 @@ namespace {
 const std::map<std::string, scene::OutputFormat> kFormatNames = {
     {"sf", scene::OutputFormat::SceneFile},
     {"instructions", scene::OutputFormat::InstructionFile},
+    {"gltf", scene::OutputFormat::Gltf},
+    {"glb", scene::OutputFormat::Glb},
+    {"pov", scene::OutputFormat::Pov},
 };
 
 // The output format from the file's extension: .sf, or .txt for an
@@ -25,6 +29,9 @@ std::optional<scene::OutputFormat> formatFromExtension(const std::filesystem::pa
   std::string ext = path.extension().string();
   if (ext == ".sf") return scene::OutputFormat::SceneFile;
   if (ext == ".txt") return scene::OutputFormat::InstructionFile;
+  if (ext == ".gltf") return scene::OutputFormat::Gltf;
+  if (ext == ".glb") return scene::OutputFormat::Glb;
+  if (ext == ".pov") return scene::OutputFormat::Pov;
   return std::nullopt;
 }
 
@@ -39,7 +46,10 @@ void printAll(const scene::DiagnosticList& list, bool json, std::ostream& err) {
 }  // namespace
 
 int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  CLI::App app{"Converts between scene files (.sf) and instruction files", "sfconvert"};
+  CLI::App app{
+      "Converts between scene files (.sf), instruction files, glTF 2.0 (.gltf, .glb) and "
+      "POV-Ray (.pov)",
+      "sfconvert"};
   app.set_version_flag("--version", SCENEFILE_VERSION);
   std::string input;
   std::string output;
@@ -52,17 +62,52 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
       ->required();
   app.add_option("output", output, "the file to write, or - for standard output")->required();
   app.add_option("--to", to, "output format, instead of the output's extension")
-      ->check(CLI::IsMember({"sf", "instructions"}));
+      ->check(CLI::IsMember({"sf", "instructions", "gltf", "glb", "pov"}));
   app.add_flag("--no-loss", noLoss, "fail instead of dropping anything the output cannot hold");
   app.add_flag("--approximate", approximate,
                "write the nearest expressible matrix or camera and report how far it moved");
   app.add_flag("--transpose-matrices", transpose,
                "read each scene-file matrix column by column (repairs files written transposed)");
+  double fov = scene::gltf::kDefaultYfovDegrees;
+  int width = 0;
+  int height = 0;
+  bool externalBuffers = false;
+  int tessellation = scene::kDefaultSegments;
+  app.add_option("--fov", fov,
+                 "glTF and POV-Ray: the camera's vertical field of view in degrees (sfrender's)")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  app.add_option("--width", width,
+                 "glTF and POV-Ray: the image width, for the camera's aspect ratio (POV-Ray "
+                 "input: image_width)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--height", height,
+                 "glTF and POV-Ray: the image height, for the camera's aspect ratio (POV-Ray "
+                 "input: image_height)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--external-buffers", externalBuffers,
+               "glTF: write the buffer to NAME.bin beside NAME.gltf instead of embedding it");
+  app.add_option("--tessellation", tessellation,
+                 "glTF: segments around a sphere or cylinder (the sphere gets half as many rings)")
+      ->check(CLI::Range(scene::kMinSegments, scene::kMaxSegments))
+      ->capture_default_str();
+  bool flat = false;
+  bool skipUnsupported = false;
+  app.add_flag("--flat", flat,
+               "POV-Ray output: every object unlit in a colour of its own (an object-identity "
+               "picture)");
+  app.add_flag("--skip-unsupported", skipUnsupported,
+               "POV-Ray input: skip what is outside the subset, with a warning, and convert the "
+               "rest");
   app.add_option("--format", format, "how to print diagnostics (on standard error)")
       ->check(CLI::IsMember({"text", "json"}));
   if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
   bool json = format == "json";
   bool toStdout = output == "-";
+  if (!(fov > 0.0 && fov < 180.0)) {
+    err << "sfconvert: --fov must lie between 0 and 180 degrees\n";
+    return toInt(ExitCode::Usage);
+  }
 
   // Work out the output format before reading anything.
   std::optional<scene::OutputFormat> outputFormat;
@@ -73,8 +118,17 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
   }
   if (!outputFormat) {
     err << "sfconvert: cannot tell the output format of '" << output
-        << "': use .sf or .txt (instruction file), or --to sf|instructions\n";
+        << "': use .sf, .txt (instruction file), .gltf, .glb or .pov, or --to "
+           "sf|instructions|gltf|glb|pov\n";
     return toInt(ExitCode::Usage);
+  }
+  std::string bufferFile;
+  if (externalBuffers) {
+    if (*outputFormat != scene::OutputFormat::Gltf || toStdout) {
+      err << "sfconvert: --external-buffers needs a .gltf output file\n";
+      return toInt(ExitCode::Usage);
+    }
+    bufferFile = std::filesystem::path(output).stem().string() + ".bin";
   }
   if (!toStdout && isSameFile(input, output)) {
     err << "sfconvert: error: the output '" << output
@@ -90,6 +144,10 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
   }
   scene::ReadOptions readOptions;
   readOptions.transposedMatrices = transpose;
+  readOptions.noLoss = noLoss;
+  readOptions.skipUnsupported = skipUnsupported;
+  readOptions.imageWidth = width;
+  readOptions.imageHeight = height;
   scene::ReadResult result = scene::parseScene(*text, input, readOptions);
   if (!result.ok()) {
     printAll(result.diagnostics, json, err);
@@ -102,18 +160,47 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
   if (!toStdout) {
     options.outputFile = std::filesystem::path(output).stem().string() + ".ppm";
   }
-  std::optional<std::string> converted =
-      scene::convertScene(result.scene, *outputFormat, options, result.diagnostics);
+  options.gltf.yfovDegrees = fov;
+  options.gltf.width = width;
+  options.gltf.height = height;
+  options.gltf.segments = tessellation;
+  options.gltf.externalBuffer = bufferFile;
+  options.gltf.generator = std::string("sfconvert ") + SCENEFILE_VERSION;
+  options.pov.verticalFovDegrees = fov;
+  if (width > 0 && height > 0) {
+    options.pov.width = width;
+    options.pov.height = height;
+  } else if (width > 0 || height > 0) {
+    // One side given: the other keeps sfrender's 4:3.
+    options.pov.width = width > 0 ? width : std::max(1, height * 4 / 3);
+    options.pov.height = height > 0 ? height : std::max(1, width * 3 / 4);
+  }
+  options.pov.flat = flat;
+  std::optional<scene::ConvertedFiles> converted =
+      scene::convertSceneToFiles(result.scene, *outputFormat, options, result.diagnostics);
   printAll(result.diagnostics, json, err);
   if (!converted) return toInt(ExitCode::InvalidInput);
 
   if (toStdout) {
-    out << *converted;
+    out << converted->main;
     out.flush();
     return toInt(out ? ExitCode::Success : ExitCode::IoError);
   }
   std::string writeError;
-  if (!writeFileAtomically(output, *converted, writeError)) {
+  if (!converted->sidecar.empty()) {
+    // The buffer first, so that the .gltf never names a buffer not there.
+    std::filesystem::path bufferPath = std::filesystem::path(output).parent_path() / bufferFile;
+    if (isSameFile(input, bufferPath)) {
+      err << "sfconvert: error: the buffer file '" << bufferPath.string()
+          << "' is the input file; sfconvert never writes over its input\n";
+      return toInt(ExitCode::InvalidInput);
+    }
+    if (!writeFileAtomically(bufferPath, converted->sidecar, writeError)) {
+      err << bufferPath.string() << ": error: cannot write the file: " << writeError << "\n";
+      return toInt(ExitCode::IoError);
+    }
+  }
+  if (!writeFileAtomically(output, converted->main, writeError)) {
     err << output << ": error: cannot write the file: " << writeError << "\n";
     return toInt(ExitCode::IoError);
   }

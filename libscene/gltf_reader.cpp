@@ -1,0 +1,1227 @@
+#include "libscene/gltf_reader.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/matrix.hpp>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "libscene/glb.h"
+#include "libscene/gltf_mapping.h"
+#include "libscene/mesh_fit.h"
+#include "libscene/number.h"
+#include "libscene/transform.h"
+#include "libscene/validation.h"
+
+namespace scene {
+
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+// Extensions whose absence from our reading changes nothing a scene file
+// can hold; a file that requires any other cannot be read right.
+const std::set<std::string> kReadableRequired = {
+    "KHR_lights_punctual",    "KHR_materials_ior",     "KHR_materials_transmission",
+    "KHR_materials_specular", "KHR_texture_transform", "KHR_materials_emissive_strength",
+    "KHR_materials_unlit",
+};
+
+// ---------------------------------------------------------------------------
+// The text before tinygltf sees it.
+
+SourceSpan spanAtByte(std::string_view text, std::size_t byte) {
+  byte = std::min(byte, text.size());
+  SourceSpan span{1, 1, 0};
+  for (std::size_t i = 0; i < byte; ++i) {
+    if (text[i] == '\n') {
+      ++span.line;
+      span.column = 1;
+    } else {
+      ++span.column;
+    }
+  }
+  return span;
+}
+
+// The byte at which `text` nests deeper than kMaxJsonDepth, if it does.
+// tinygltf turns `extras` into its own values recursively, so depth must be
+// bounded before it parses.
+std::optional<std::size_t> tooDeep(std::string_view text) {
+  int depth = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (inString) {
+      if (c == '\\') {
+        ++i;
+      } else if (c == '"') {
+        inString = false;
+      }
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth) return i;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return std::nullopt;
+}
+
+// nlohmann's message without its "[json.exception...] parse error at line
+// L, column C: " prefix, which the span already says.
+std::string parseErrorMessage(const std::string& what) {
+  std::size_t colon = what.find(": ");
+  std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
+  return message;
+}
+
+std::optional<std::string> percentDecoded(std::string_view uri) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] != '%') {
+      out += uri[i];
+      continue;
+    }
+    if (i + 2 >= uri.size() || !std::isxdigit(static_cast<unsigned char>(uri[i + 1])) ||
+        !std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      return std::nullopt;
+    }
+    out += static_cast<char>(std::stoi(std::string(uri.substr(i + 1, 2)), nullptr, 16));
+    i += 2;
+  }
+  return out;
+}
+
+bool isInside(const fs::path& folder, const fs::path& path) {
+  auto f = folder.begin();
+  auto p = path.begin();
+  for (; f != folder.end(); ++f, ++p) {
+    if (p == path.end() || *f != *p) return false;
+  }
+  return p != path.end();
+}
+
+// Why a buffer's URI may not be followed, or nothing when it may: only a
+// relative path to a regular file inside the glTF's own folder is read.
+std::optional<std::string> uriProblem(const std::string& uri, const fs::path& folder) {
+  if (uri.starts_with("data:")) return std::nullopt;
+  std::optional<std::string> decoded = percentDecoded(uri);
+  if (!decoded) return "is not a valid URI";
+  std::size_t colon = decoded->find(':');
+  std::size_t slash = decoded->find('/');
+  if (colon != std::string::npos && (slash == std::string::npos || colon < slash)) {
+    return "names a scheme ('" + decoded->substr(0, colon) +
+           ":'); only files beside the glTF are read";
+  }
+  if (decoded->find('\0') != std::string::npos) return "holds a NUL byte";
+  fs::path relative(*decoded);
+  if (relative.is_absolute()) return "is an absolute path; only files beside the glTF are read";
+  for (const fs::path& part : relative) {
+    if (part == "..") return "climbs out of the glTF's folder with '..'";
+  }
+  std::error_code ec;
+  fs::path base = fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder), ec);
+  if (ec || base.empty()) return "cannot be resolved";
+  fs::path target = fs::weakly_canonical(base / relative, ec);
+  if (ec || !isInside(base, target)) return "leads out of the glTF's folder (through a link)";
+  if (!fs::exists(target, ec)) return "names a file that does not exist";
+  if (!fs::is_regular_file(target, ec)) return "names something that is not a regular file";
+  if (fs::file_size(target, ec) > kMaxGltfBytes) return "names a file larger than 1 GiB";
+  return std::nullopt;
+}
+
+// tinygltf's file system, kept inside the folder: it can neither read
+// elsewhere, nor expand `~` or `$VAR`, nor write.
+struct Confinement {
+  fs::path folder;
+};
+
+bool confinedExists(const std::string& path, void* user) {
+  const auto* c = static_cast<const Confinement*>(user);
+  std::error_code ec;
+  fs::path target = fs::weakly_canonical(path, ec);
+  return !ec && isInside(c->folder, target) && fs::is_regular_file(target, ec);
+}
+
+std::string unexpandedPath(const std::string& path, void*) {
+  return path;
+}
+
+bool confinedRead(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                  void* user) {
+  if (!confinedExists(path, user)) {
+    if (err) *err += "refusing to read '" + path + "'\n";
+    return false;
+  }
+  std::error_code ec;
+  std::uintmax_t size = fs::file_size(path, ec);
+  if (ec || size > kMaxGltfBytes) {
+    if (err) *err += "cannot read '" + path + "'\n";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  out->resize(static_cast<std::size_t>(size));
+  if (size && !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+    if (err) *err += "cannot read '" + path + "'\n";
+    return false;
+  }
+  return true;
+}
+
+bool noWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "the reader writes nothing\n";
+  return false;
+}
+
+bool noImageDecoding(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                     const unsigned char*, int, void*) {
+  return true;
+}
+
+// tinygltf's error text, first line only, without its trailing newline.
+std::string firstLine(const std::string& text) {
+  std::string line = text.substr(0, text.find('\n'));
+  if (line.size() > 160) line = line.substr(0, 157) + "...";
+  return line.empty() ? "tinygltf could not read it" : line;
+}
+
+// ---------------------------------------------------------------------------
+// Our own extras.
+
+std::optional<double> number(const Json& j) {
+  if (!j.is_number()) return std::nullopt;
+  double v = j.get<double>();
+  if (!std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::optional<glm::dvec3> vec3(const Json& j) {
+  if (!j.is_array() || j.size() != 3) return std::nullopt;
+  glm::dvec3 v;
+  for (int i = 0; i < 3; ++i) {
+    std::optional<double> x = number(j[i]);
+    if (!x) return std::nullopt;
+    v[i] = *x;
+  }
+  return v;
+}
+
+std::optional<glm::dmat4> rows(const Json& j) {
+  if (!j.is_array() || j.size() != 4) return std::nullopt;
+  glm::dmat4 m;
+  for (int r = 0; r < 4; ++r) {
+    if (!j[r].is_array() || j[r].size() != 4) return std::nullopt;
+    for (int c = 0; c < 4; ++c) {
+      std::optional<double> x = number(j[r][c]);
+      if (!x) return std::nullopt;
+      m[c][r] = *x;
+    }
+  }
+  return m;
+}
+
+Json parseOrNull(const std::string& text) {
+  if (text.empty()) return nullptr;
+  Json j = Json::parse(text, nullptr, false);
+  return j.is_discarded() ? Json(nullptr) : j;
+}
+
+const Json* sfExtras(const Json& extras) {
+  if (!extras.is_object()) return nullptr;
+  auto it = extras.find(gltf::kExtrasKey);
+  return it != extras.end() && it->is_object() ? &*it : nullptr;
+}
+
+struct RecordExtras {
+  std::string record;
+  glm::dvec3 colour{0.0};
+  glm::dmat4 matrix{1.0};
+  std::optional<glm::dvec3> lookAt;
+  std::optional<std::vector<TransformOp>> transforms;
+};
+
+std::optional<std::vector<TransformOp>> transformsFromJson(const Json& j) {
+  if (!j.is_array()) return std::nullopt;
+  std::vector<TransformOp> ops;
+  for (const Json& entry : j) {
+    if (!entry.is_array() || entry.empty() || !entry[0].is_string()) return std::nullopt;
+    std::string name = entry[0].get<std::string>();
+    TransformOp op;
+    bool vector = name == "SCALE" || name == "TRANSLATE";
+    if (name == "SCALE")
+      op.kind = TransformKind::Scale;
+    else if (name == "TRANSLATE")
+      op.kind = TransformKind::Translate;
+    else if (name == "ROTATE_X")
+      op.kind = TransformKind::RotateX;
+    else if (name == "ROTATE_Y")
+      op.kind = TransformKind::RotateY;
+    else if (name == "ROTATE_Z")
+      op.kind = TransformKind::RotateZ;
+    else
+      return std::nullopt;
+    if (entry.size() != (vector ? 4u : 2u)) return std::nullopt;
+    for (std::size_t i = 1; i < entry.size(); ++i) {
+      std::optional<double> v = number(entry[i]);
+      if (!v) return std::nullopt;
+      op.value[static_cast<int>(i - 1)] = *v;
+    }
+    ops.push_back(op);
+  }
+  return ops;
+}
+
+std::optional<RecordExtras> recordExtras(const std::string& extrasText) {
+  Json extras = parseOrNull(extrasText);
+  const Json* sf = sfExtras(extras);
+  if (!sf || !sf->contains("record") || !(*sf)["record"].is_string()) return std::nullopt;
+  RecordExtras out;
+  out.record = (*sf)["record"].get<std::string>();
+  std::optional<glm::dmat4> m = sf->contains("matrix") ? rows((*sf)["matrix"]) : std::nullopt;
+  if (!m) return std::nullopt;
+  out.matrix = *m;
+  if (out.record == "CAMERA" || out.record == "LIGHT") {
+    std::optional<glm::dvec3> colour =
+        sf->contains("colour") ? vec3((*sf)["colour"]) : std::nullopt;
+    if (!colour) return std::nullopt;
+    out.colour = *colour;
+  } else if (!objectKindFromName(out.record)) {
+    return std::nullopt;
+  }
+  if (out.record == "CAMERA" && sf->contains("lookAt")) {
+    out.lookAt = vec3((*sf)["lookAt"]);
+    if (!out.lookAt) return std::nullopt;
+  }
+  if (sf->contains("transforms")) {
+    out.transforms = transformsFromJson((*sf)["transforms"]);
+    // The operations are kept only while they still make the matrix.
+    if (out.transforms && composeTransform(*out.transforms) != out.matrix) out.transforms.reset();
+  }
+  return out;
+}
+
+std::optional<Material> materialExtras(const std::string& extrasText) {
+  Json extras = parseOrNull(extrasText);
+  const Json* sf = sfExtras(extras);
+  if (!sf) return std::nullopt;
+  Material m;
+  std::optional<glm::dvec3> colour = sf->contains("colour") ? vec3((*sf)["colour"]) : std::nullopt;
+  if (!colour) return std::nullopt;
+  m.colour = *colour;
+  for (MaterialProperty p : kMaterialProperties) {
+    std::string key(materialPropertyName(p));
+    for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    std::optional<double> v = sf->contains(key) ? number((*sf)[key]) : std::nullopt;
+    if (!v) return std::nullopt;
+    materialValue(m, p) = *v;
+  }
+  return m;
+}
+
+// ---------------------------------------------------------------------------
+// The model, once tinygltf has read it.
+
+std::string deviationText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", value);
+  return text;
+}
+
+std::string quoted(const std::string& name) {
+  return name.empty() ? "" : " '" + name + "'";
+}
+
+std::string nodeLabel(const tinygltf::Model& model, int node) {
+  return "node " + std::to_string(node) + quoted(model.nodes[node].name);
+}
+
+std::string meshLabel(const tinygltf::Model& model, int mesh) {
+  return "mesh " + std::to_string(mesh) + quoted(model.meshes[mesh].name);
+}
+
+double distanceOfPbr(const gltf::PbrMaterial& a, const gltf::PbrMaterial& b) {
+  double d = 0.0;
+  for (int i = 0; i < 4; ++i) d = std::max(d, std::abs(a.baseColor[i] - b.baseColor[i]));
+  d = std::max({d, std::abs(a.metallic - b.metallic), std::abs(a.roughness - b.roughness)});
+  auto optional = [&d](const std::optional<double>& x, const std::optional<double>& y) {
+    if (x.has_value() != y.has_value()) {
+      d = std::numeric_limits<double>::infinity();
+    } else if (x) {
+      d = std::max(d, std::abs(*x - *y));
+    }
+  };
+  optional(a.ior, b.ior);
+  optional(a.transmission, b.transmission);
+  optional(a.specular, b.specular);
+  return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
+}
+
+// The extras tell whether they still describe the file's own data: a
+// difference above this (relative) means the file was edited elsewhere.
+constexpr double kExtrasAgreement = 1e-9;
+
+struct FittedPart {
+  MeshFit fit;
+  int material = -1;
+};
+
+class Importer {
+ public:
+  Importer(const tinygltf::Model& model, const ReadOptions& options, ReadResult& result)
+      : model_(model),
+        scene_(result.scene),
+        out_(result.diagnostics),
+        loss_(options.noLoss ? Severity::Error : Severity::Warning) {}
+
+  void run() {
+    if (!checkIndices()) return;
+    if (!model_.animations.empty()) {
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  std::to_string(model_.animations.size()) +
+                      " animation(s) are ignored: a scene file is a still");
+    }
+    if (!model_.skins.empty()) {
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  std::to_string(model_.skins.size()) +
+                      " skin(s) are ignored: meshes are read in their rest pose");
+    }
+    std::vector<int> roots = rootNodes();
+    if (out_.hasErrors()) return;
+    walk(roots);
+    if (out_.hasErrors()) return;
+    placeDirectionalLights();
+    if (!haveCamera_) makeDefaultCamera();
+  }
+
+ private:
+  // --- Indices ------------------------------------------------------------
+
+  bool index(int value, std::size_t size, const std::string& where, const std::string& what,
+             bool optional = true) {
+    if (value < 0 && optional && value == -1) return true;
+    if (value >= 0 && static_cast<std::size_t>(value) < size) return true;
+    out_.error(DiagnosticCode::GltfIndexOutOfRange, {},
+               where + " points at " + what + " " + std::to_string(value) + ", but the file has " +
+                   std::to_string(size));
+    return false;
+  }
+
+  bool checkIndices() {
+    const tinygltf::Model& m = model_;
+    bool ok = true;
+    if (m.defaultScene != -1) ok &= index(m.defaultScene, m.scenes.size(), "scene", "scene");
+    for (std::size_t s = 0; s < m.scenes.size(); ++s) {
+      for (int n : m.scenes[s].nodes) {
+        ok &= index(n, m.nodes.size(), "scenes[" + std::to_string(s) + "]", "node", false);
+      }
+    }
+    for (std::size_t i = 0; i < m.nodes.size() && !out_.full(); ++i) {
+      const tinygltf::Node& node = m.nodes[i];
+      std::string where = "nodes[" + std::to_string(i) + "]";
+      for (int c : node.children)
+        ok &= index(c, m.nodes.size(), where + ".children", "node", false);
+      ok &= index(node.mesh, m.meshes.size(), where + ".mesh", "mesh");
+      ok &= index(node.camera, m.cameras.size(), where + ".camera", "camera");
+      int light = nodeLight(static_cast<int>(i));
+      if (light != -1)
+        ok &= index(light, m.lights.size(), where + " KHR_lights_punctual", "light", false);
+      if (!(node.matrix.empty() || node.matrix.size() == 16) ||
+          !(node.translation.empty() || node.translation.size() == 3) ||
+          !(node.rotation.empty() || node.rotation.size() == 4) ||
+          !(node.scale.empty() || node.scale.size() == 3)) {
+        out_.error(DiagnosticCode::GltfInvalid, {},
+                   where + " has a matrix, translation, rotation or scale of the wrong length");
+        ok = false;
+      }
+    }
+    for (std::size_t i = 0; i < m.meshes.size() && !out_.full(); ++i) {
+      for (std::size_t p = 0; p < m.meshes[i].primitives.size(); ++p) {
+        const tinygltf::Primitive& prim = m.meshes[i].primitives[p];
+        std::string where =
+            "meshes[" + std::to_string(i) + "].primitives[" + std::to_string(p) + "]";
+        auto position = prim.attributes.find("POSITION");
+        if (position != prim.attributes.end()) {
+          ok &= index(position->second, m.accessors.size(), where + ".attributes.POSITION",
+                      "accessor", false);
+        }
+        ok &= index(prim.indices, m.accessors.size(), where + ".indices", "accessor");
+        ok &= index(prim.material, m.materials.size(), where + ".material", "material");
+      }
+    }
+    for (std::size_t i = 0; i < m.accessors.size() && !out_.full(); ++i) {
+      ok &= index(m.accessors[i].bufferView, m.bufferViews.size(),
+                  "accessors[" + std::to_string(i) + "].bufferView", "buffer view");
+    }
+    for (std::size_t i = 0; i < m.bufferViews.size() && !out_.full(); ++i) {
+      ok &= index(m.bufferViews[i].buffer, m.buffers.size(),
+                  "bufferViews[" + std::to_string(i) + "].buffer", "buffer", false);
+    }
+    return ok;
+  }
+
+  int nodeLight(int node) const {
+    Json ext = parseOrNull(model_.nodes[node].extensions_json_string);
+    if (!ext.is_object()) return -1;
+    auto it = ext.find("KHR_lights_punctual");
+    if (it == ext.end() || !it->is_object()) return -1;
+    auto light = it->find("light");
+    if (light == it->end() || !light->is_number_integer()) return -2;
+    long long value = light->get<long long>();
+    return value < 0 || value > std::numeric_limits<int>::max() ? -2 : static_cast<int>(value);
+  }
+
+  // --- The hierarchy ------------------------------------------------------
+
+  std::vector<int> rootNodes() {
+    if (!model_.scenes.empty()) {
+      int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      if (model_.scenes.size() > 1) {
+        out_.note(DiagnosticCode::GltfIgnored, {},
+                  "the file has " + std::to_string(model_.scenes.size()) + " scenes; scene " +
+                      std::to_string(scene) + " is read");
+      }
+      return model_.scenes[scene].nodes;
+    }
+    // No scene: every node that is nobody's child.
+    std::vector<bool> child(model_.nodes.size(), false);
+    for (const tinygltf::Node& node : model_.nodes) {
+      for (int c : node.children) child[c] = true;
+    }
+    std::vector<int> roots;
+    for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
+      if (!child[i]) roots.push_back(static_cast<int>(i));
+    }
+    return roots;
+  }
+
+  glm::dmat4 localMatrix(const tinygltf::Node& node) const {
+    if (node.matrix.size() == 16) {
+      glm::dmat4 m;
+      for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = node.matrix[i];
+      return m;
+    }
+    glm::dmat4 m(1.0);
+    if (node.translation.size() == 3) {
+      m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    }
+    if (node.rotation.size() == 4) {
+      glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+      double length = glm::length(q);
+      if (length > 0.0 && std::isfinite(length)) q /= length;
+      glm::dmat3 r = glm::mat3_cast(q);
+      glm::dmat4 t = m;
+      m = glm::dmat4(r);
+      m[3] = t[3];
+    }
+    if (node.scale.size() == 3) {
+      for (int i = 0; i < 3; ++i) m[i] *= node.scale[i];
+    }
+    return m;
+  }
+
+  // Depth first, children in order, with an explicit stack: a deep or
+  // cyclic hierarchy costs no recursion.
+  void walk(const std::vector<int>& roots) {
+    std::vector<bool> seen(model_.nodes.size(), false);
+    std::vector<std::pair<int, glm::dmat4>> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+      stack.emplace_back(*it, glm::dmat4(1.0));
+    while (!stack.empty() && !out_.full()) {
+      auto [node, parent] = stack.back();
+      stack.pop_back();
+      if (seen[node]) {
+        out_.error(
+            DiagnosticCode::GltfNodeCycle, {},
+            nodeLabel(model_, node) +
+                " is reached twice: the node hierarchy has a cycle or a node with two parents");
+        return;
+      }
+      seen[node] = true;
+      glm::dmat4 world = parent * localMatrix(model_.nodes[node]);
+      visit(node, world);
+      const std::vector<int>& children = model_.nodes[node].children;
+      for (auto it = children.rbegin(); it != children.rend(); ++it) stack.emplace_back(*it, world);
+    }
+  }
+
+  void visit(int index, const glm::dmat4& world) {
+    const tinygltf::Node& node = model_.nodes[index];
+    if (std::optional<RecordExtras> extras = recordExtras(node.extras_json_string)) {
+      if (useExtras(index, world, *extras)) return;
+      out_.note(DiagnosticCode::GltfExtrasStale, {},
+                nodeLabel(model_, index) + " no longer matches the " + extras->record +
+                    " that its extras describe (the file was edited elsewhere): the node is read "
+                    "as it is");
+    }
+    if (node.camera >= 0) addCamera(index, world);
+    int light = nodeLight(index);
+    if (light >= 0) addLight(index, light, world);
+    if (node.mesh >= 0) addMeshObjects(index, world);
+  }
+
+  // --- Records from our own extras ---------------------------------------
+
+  bool useExtras(int index, const glm::dmat4& world, const RecordExtras& extras) {
+    const tinygltf::Node& node = model_.nodes[index];
+    if (extras.record == "CAMERA") {
+      if (node.camera < 0 || haveCamera_ ||
+          gltf::matrixDistance(gltf::withinFloatRange(gltf::cameraNodeMatrix(extras.matrix)),
+                               world) > kExtrasAgreement) {
+        return false;
+      }
+      haveCamera_ = true;
+      scene_.camera.matrix = extras.matrix;
+      scene_.camera.colour = extras.colour;
+      scene_.camera.lookAt = extras.lookAt;
+      reportFov(node.camera);
+      return true;
+    }
+    if (extras.record == "LIGHT") {
+      int light = nodeLight(index);
+      if (light < 0 ||
+          gltf::matrixDistance(gltf::withinFloatRange(gltf::lightNodeMatrix(extras.matrix)),
+                               world) > kExtrasAgreement) {
+        return false;
+      }
+      gltf::PointLight want = gltf::pointLightFromColour(extras.colour);
+      gltf::PointLight have = pointLight(model_.lights[light]);
+      double d = std::max(
+          glm::length(want.color - have.color),
+          std::abs(want.intensity - have.intensity) / std::max(1.0, std::abs(want.intensity)));
+      if (!(d <= kExtrasAgreement) || model_.lights[light].type != "point") return false;
+      scene_.lights.push_back(Light{extras.matrix, extras.colour, {}});
+      return true;
+    }
+    ObjectKind kind = *objectKindFromName(extras.record);
+    if (node.mesh < 0 || model_.meshes[node.mesh].primitives.size() != 1 ||
+        gltf::matrixDistance(gltf::withinFloatRange(extras.matrix), world) > kExtrasAgreement) {
+      return false;
+    }
+    Object object;
+    object.kind = kind;
+    object.matrix = extras.matrix;
+    object.transforms = extras.transforms;
+    object.material = material(model_.meshes[node.mesh].primitives[0].material, kind);
+    scene_.objects.push_back(std::move(object));
+    return true;
+  }
+
+  // --- Cameras and lights -------------------------------------------------
+
+  void reportFov(int camera) {
+    const tinygltf::Camera& c = model_.cameras[camera];
+    if (c.type != "perspective" || !(c.perspective.yfov > 0.0)) return;
+    double degrees = std::round(c.perspective.yfov * 180.0 / std::numbers::pi * 1e6) / 1e6;
+    out_.note(DiagnosticCode::CameraFov, {},
+              "the camera's vertical field of view is " + formatNumber(degrees) +
+                  " degrees, which a scene file cannot hold")
+        .hint = "render with sfrender --fov " + formatNumber(degrees);
+  }
+
+  void addCamera(int index, const glm::dmat4& world) {
+    const tinygltf::Camera& camera = model_.cameras[model_.nodes[index].camera];
+    if (haveCamera_) {
+      out_.report(loss_, DiagnosticCode::GltfExtraCamera, {},
+                  "camera" + quoted(camera.name) + " on " + nodeLabel(model_, index) +
+                      " is ignored: a scene file has one CAMERA, the first one found");
+      return;
+    }
+    haveCamera_ = true;
+    if (camera.type != "perspective") {
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  "camera" + quoted(camera.name) + " is " + camera.type +
+                      "; it becomes a pinhole camera at the same place");
+    }
+    glm::dvec3 eye(world[3]);
+    glm::dvec3 forward = -glm::dvec3(world[2]);
+    glm::dvec3 up(world[1]);
+    double fl = glm::length(forward);
+    if (fl > 0.0) forward /= fl;
+    up -= glm::dot(up, forward) * forward;
+    double ul = glm::length(up);
+    if (ul > 0.0) up /= ul;
+    glm::dvec3 right = glm::cross(forward, up);
+    scene_.camera.matrix = glm::dmat4(glm::dvec4(right, 0.0), glm::dvec4(up, 0.0),
+                                      glm::dvec4(-forward, 0.0), glm::dvec4(eye, 1.0));
+    reportFov(model_.nodes[index].camera);
+  }
+
+  static gltf::PointLight pointLight(const tinygltf::Light& light) {
+    gltf::PointLight out;
+    if (light.color.size() == 3) out.color = {light.color[0], light.color[1], light.color[2]};
+    out.intensity = light.intensity;
+    return out;
+  }
+
+  void addLight(int index, int lightIndex, const glm::dmat4& world) {
+    const tinygltf::Light& light = model_.lights[lightIndex];
+    std::string label = "light" + quoted(light.name) + " on " + nodeLabel(model_, index);
+    gltf::PointLight point = pointLight(light);
+    glm::dvec3 colour = gltf::colourFromPointLight(point);
+    if (!std::isfinite(colour.x + colour.y + colour.z)) colour = glm::dvec3(0.0);
+    glm::dmat4 m(1.0);
+    m[3] = glm::dvec4(glm::dvec3(world[3]), 1.0);
+    if (light.type == "directional") {
+      glm::dvec3 direction = -glm::dvec3(world[2]);
+      pendingDirectional_.push_back({scene_.lights.size(), direction});
+      out_.report(loss_, DiagnosticCode::GltfLightApproximated, {},
+                  "directional " + label +
+                      " becomes a point light far away against its direction: a scene file has "
+                      "point lights only");
+    } else if (light.type == "spot") {
+      out_.report(loss_, DiagnosticCode::GltfLightApproximated, {},
+                  "spot " + label + " becomes a point light: its cone is dropped");
+    } else if (light.type != "point") {
+      out_.report(
+          loss_, DiagnosticCode::GltfLightApproximated, {},
+          label + " has the unknown type '" + light.type + "'; it is read as a point light");
+    }
+    out_.note(DiagnosticCode::LightFalloff, {},
+              label +
+                  " falls off with the square of the distance; a scene file's LIGHT of colour " +
+                  formatNumber(colour.x) + " " + formatNumber(colour.y) + " " +
+                  formatNumber(colour.z) + " (colour times intensity) does not fall off");
+    scene_.lights.push_back(Light{m, colour, {}});
+  }
+
+  void placeDirectionalLights() {
+    if (pendingDirectional_.empty()) return;
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    auto add = [&](const glm::dvec3& p) {
+      if (std::isfinite(p.x + p.y + p.z)) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    };
+    for (const Object& o : scene_.objects) add(glm::dvec3(o.matrix[3]));
+    if (haveCamera_) add(glm::dvec3(scene_.camera.matrix[3]));
+    glm::dvec3 centre = lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+    double radius = lo.x <= hi.x ? glm::length(hi - lo) : 1.0;
+    for (const auto& [light, direction] : pendingDirectional_) {
+      double length = glm::length(direction);
+      glm::dvec3 d = length > 0.0 ? direction / length : glm::dvec3(0, -1, 0);
+      glm::dvec3 position = centre - d * (100.0 * std::max(radius, 1.0));
+      scene_.lights[light].matrix[3] = glm::dvec4(position, 1.0);
+    }
+  }
+
+  void makeDefaultCamera() {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const Object& o : scene_.objects) {
+      glm::dvec3 p(o.matrix[3]);
+      if (std::isfinite(p.x + p.y + p.z)) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    }
+    glm::dvec3 centre = lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+    double radius = lo.x <= hi.x ? glm::length(hi - lo) / 2 : 0.0;
+    glm::dvec3 eye = centre + glm::dvec3(0.0, 0.0, 2.0 * radius + 5.0);
+    scene_.camera.matrix = cameraFromLookAt(eye, centre);
+    out_.report(loss_, DiagnosticCode::GltfNoCamera, {},
+                "the file has no camera: CAMERA looks at the scene from +Z");
+  }
+
+  // --- Materials ----------------------------------------------------------
+
+  Material material(int index, ObjectKind kind) {
+    if (index < 0) return Material{};
+    const tinygltf::Material& m = model_.materials[index];
+    gltf::PbrMaterial pbr;
+    const std::vector<double>& base = m.pbrMetallicRoughness.baseColorFactor;
+    if (base.size() == 4) pbr.baseColor = {base[0], base[1], base[2], base[3]};
+    pbr.metallic = m.pbrMetallicRoughness.metallicFactor;
+    pbr.roughness = m.pbrMetallicRoughness.roughnessFactor;
+    pbr.doubleSided = m.doubleSided;
+    Json ext = parseOrNull(m.extensions_json_string);
+    auto factor = [&ext](const char* extension, const char* key) -> std::optional<double> {
+      if (!ext.is_object() || !ext.contains(extension) || !ext[extension].is_object()) {
+        return std::nullopt;
+      }
+      const Json& e = ext[extension];
+      if (!e.contains(key)) {
+        // The extensions' own defaults.
+        if (std::strcmp(key, "ior") == 0) return 1.5;
+        if (std::strcmp(key, "specularFactor") == 0) return 1.0;
+        return 0.0;
+      }
+      return number(e[key]);
+    };
+    pbr.ior = factor("KHR_materials_ior", "ior");
+    pbr.transmission = factor("KHR_materials_transmission", "transmissionFactor");
+    pbr.specular = factor("KHR_materials_specular", "specularFactor");
+    if (std::optional<Material> exact = materialExtras(m.extras_json_string)) {
+      if (distanceOfPbr(gltf::pbrFromMaterial(*exact, kind), pbr) <= kExtrasAgreement) {
+        return *exact;
+      }
+      out_.note(DiagnosticCode::GltfExtrasStale, {},
+                "material " + std::to_string(index) + quoted(m.name) +
+                    " no longer matches its extras (the file was edited elsewhere): it is read "
+                    "from its glTF values");
+    }
+    if (reportedMaterials_.insert(index).second) {
+      if (m.pbrMetallicRoughness.baseColorTexture.index >= 0) {
+        out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                    "material " + std::to_string(index) + quoted(m.name) +
+                        ": its base colour texture is ignored; baseColorFactor gives COLOUR");
+      }
+      if (m.alphaMode != "OPAQUE" && pbr.baseColor[3] < 1.0) {
+        out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                    "material " + std::to_string(index) + quoted(m.name) + ": its alpha of " +
+                        formatNumber(pbr.baseColor[3]) + " is ignored");
+      }
+    }
+    Material out = gltf::materialFromPbr(pbr);
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(out.colour[i])) out.colour[i] = 1.0;
+    }
+    return out;
+  }
+
+  // --- Meshes -------------------------------------------------------------
+
+  // The accessor's elements as doubles, after every bound is checked; an
+  // error (or for what is valid but unsupported, a skip) leaves it empty.
+  std::optional<std::vector<double>> readAccessor(int index, int wantType,
+                                                  std::initializer_list<int> componentTypes,
+                                                  const std::string& role, std::size_t maxCount,
+                                                  bool& skipped) {
+    const tinygltf::Accessor& a = model_.accessors[index];
+    std::string label = "accessor " + std::to_string(index) + " (" + role + ")";
+    if (a.sparse.isSparse) {
+      skipped = true;
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  label + " is sparse, which is not read; its primitive is skipped");
+      return std::nullopt;
+    }
+    if (a.bufferView < 0) {
+      skipped = true;
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  label + " has no buffer view (all zeros); its primitive is skipped");
+      return std::nullopt;
+    }
+    if (a.type != wantType ||
+        std::find(componentTypes.begin(), componentTypes.end(), a.componentType) ==
+            componentTypes.end() ||
+        (role == "POSITION" && a.normalized)) {
+      out_.error(DiagnosticCode::GltfBadAccessor, {},
+                 label + " has the wrong type: " +
+                     (role == "POSITION" ? "POSITION must be VEC3 of FLOAT"
+                                         : "indices must be SCALAR of unsigned integers"));
+      return std::nullopt;
+    }
+    if (a.count == 0) {
+      out_.error(DiagnosticCode::GltfBadAccessor, {}, label + " has a count of 0");
+      return std::nullopt;
+    }
+    if (a.count > maxCount) {
+      out_.error(DiagnosticCode::GltfTooLarge, {},
+                 label + " has " + std::to_string(a.count) + " elements; at most " +
+                     std::to_string(maxCount) + " are read");
+      return std::nullopt;
+    }
+    const tinygltf::BufferView& view = model_.bufferViews[a.bufferView];
+    const tinygltf::Buffer& buffer = model_.buffers[view.buffer];
+    std::size_t bufferSize = buffer.data.size();
+    if (view.byteOffset > bufferSize || view.byteLength > bufferSize - view.byteOffset) {
+      out_.error(DiagnosticCode::GltfBadAccessor, {},
+                 "buffer view " + std::to_string(a.bufferView) + " (bytes " +
+                     std::to_string(view.byteOffset) + " + " + std::to_string(view.byteLength) +
+                     ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
+                     std::to_string(bufferSize) + " bytes)");
+      return std::nullopt;
+    }
+    int componentSize =
+        tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
+    int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+    std::size_t elementSize = static_cast<std::size_t>(componentSize) * components;
+    std::size_t stride = view.byteStride ? view.byteStride : elementSize;
+    if (view.byteStride && (view.byteStride < elementSize || view.byteStride > 252)) {
+      out_.error(DiagnosticCode::GltfBadAccessor, {},
+                 "buffer view " + std::to_string(a.bufferView) + " has a byte stride of " +
+                     std::to_string(view.byteStride) + ", outside " + std::to_string(elementSize) +
+                     " .. 252");
+      return std::nullopt;
+    }
+    // The last element ends at offset + (count - 1) * stride + size; every
+    // term is bounded above, so none of this overflows.
+    std::size_t end = a.byteOffset;
+    bool fits = a.byteOffset <= view.byteLength;
+    if (fits) {
+      end += (a.count - 1) * stride + elementSize;
+      fits = end <= view.byteLength;
+    }
+    if (!fits) {
+      out_.error(DiagnosticCode::GltfBadAccessor, {},
+                 label + " (" + std::to_string(a.count) + " elements of " +
+                     std::to_string(elementSize) + " bytes from byte " +
+                     std::to_string(a.byteOffset) + ") runs past the end of buffer view " +
+                     std::to_string(a.bufferView) + " (" + std::to_string(view.byteLength) +
+                     " bytes)");
+      return std::nullopt;
+    }
+    const unsigned char* base = buffer.data.data() + view.byteOffset + a.byteOffset;
+    std::vector<double> values;
+    values.reserve(a.count * components);
+    for (std::size_t i = 0; i < a.count; ++i) {
+      const unsigned char* e = base + i * stride;
+      for (int c = 0; c < components; ++c) {
+        const unsigned char* at = e + static_cast<std::size_t>(c) * componentSize;
+        switch (a.componentType) {
+          case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float f;
+            std::memcpy(&f, at, 4);
+            values.push_back(f);
+            break;
+          }
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            std::uint32_t u;
+            std::memcpy(&u, at, 4);
+            values.push_back(u);
+            break;
+          }
+          case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t u;
+            std::memcpy(&u, at, 2);
+            values.push_back(u);
+            break;
+          }
+          default:
+            values.push_back(*at);
+            break;
+        }
+      }
+    }
+    return values;
+  }
+
+  // The triangles of one primitive, as indices into its POSITION data.
+  struct Triangles {
+    std::vector<glm::dvec3> positions;
+    std::vector<std::uint32_t> indices;
+  };
+
+  std::optional<Triangles> primitiveTriangles(int meshIndex, std::size_t p) {
+    const tinygltf::Primitive& prim = model_.meshes[meshIndex].primitives[p];
+    std::string label = meshLabel(model_, meshIndex) + " primitive " + std::to_string(p);
+    int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  label + " draws points or lines (mode " + std::to_string(mode) +
+                      "), not triangles; it is skipped");
+      return std::nullopt;
+    }
+    if (!prim.targets.empty()) {
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  label + " has morph targets; its base shape is read");
+    }
+    auto position = prim.attributes.find("POSITION");
+    if (position == prim.attributes.end()) {
+      out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                  label + " has no POSITION; it is skipped");
+      return std::nullopt;
+    }
+    bool skipped = false;
+    std::optional<std::vector<double>> xyz =
+        readAccessor(position->second, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                     "POSITION", kMaxFitVertices, skipped);
+    if (!xyz) return std::nullopt;
+    Triangles t;
+    for (std::size_t i = 0; i + 2 < xyz->size(); i += 3) {
+      glm::dvec3 v((*xyz)[i], (*xyz)[i + 1], (*xyz)[i + 2]);
+      if (!std::isfinite(v.x + v.y + v.z)) {
+        out_.error(DiagnosticCode::GltfBadAccessor, {},
+                   "accessor " + std::to_string(position->second) +
+                       " (POSITION) holds a value that is not finite");
+        return std::nullopt;
+      }
+      t.positions.push_back(v);
+    }
+    std::vector<std::uint32_t> order;
+    if (prim.indices >= 0) {
+      std::optional<std::vector<double>> raw = readAccessor(
+          prim.indices, TINYGLTF_TYPE_SCALAR,
+          {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+           TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+          "indices", 3 * kMaxFitVertices, skipped);
+      if (!raw) return std::nullopt;
+      for (double v : *raw) {
+        if (v >= static_cast<double>(t.positions.size())) {
+          out_.error(DiagnosticCode::GltfIndexOutOfRange, {},
+                     "accessor " + std::to_string(prim.indices) + " (indices of " + label +
+                         ") holds the index " + formatNumber(v) + ", but POSITION has " +
+                         std::to_string(t.positions.size()) + " vertices");
+          return std::nullopt;
+        }
+        order.push_back(static_cast<std::uint32_t>(v));
+      }
+    } else {
+      for (std::size_t i = 0; i < t.positions.size(); ++i) {
+        order.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      order.resize(order.size() - order.size() % 3);
+      t.indices = std::move(order);
+    } else {
+      for (std::size_t i = 2; i < order.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+          t.indices.insert(t.indices.end(), {order[0], order[i - 1], order[i]});
+        } else if (i % 2 == 0) {
+          t.indices.insert(t.indices.end(), {order[i - 2], order[i - 1], order[i]});
+        } else {
+          t.indices.insert(t.indices.end(), {order[i - 1], order[i - 2], order[i]});
+        }
+      }
+    }
+    return t;
+  }
+
+  // Fits a mesh once, however many nodes use it: all its primitives as one
+  // shape first (an exporter splits a mesh by material), else each alone.
+  const std::vector<FittedPart>& fitMesh(int meshIndex, int nodeIndex) {
+    auto cached = fitted_.find(meshIndex);
+    if (cached != fitted_.end()) return cached->second;
+    std::vector<FittedPart>& parts = fitted_[meshIndex];
+    const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
+    std::vector<Triangles> each;
+    std::vector<int> materials;
+    Triangles all;
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      std::optional<Triangles> t = primitiveTriangles(meshIndex, p);
+      if (out_.hasErrors()) return parts;
+      if (!t) continue;
+      auto first = static_cast<std::uint32_t>(all.positions.size());
+      all.positions.insert(all.positions.end(), t->positions.begin(), t->positions.end());
+      for (std::uint32_t i : t->indices) all.indices.push_back(first + i);
+      each.push_back(std::move(*t));
+      materials.push_back(mesh.primitives[p].material);
+    }
+    if (each.empty()) return parts;
+    std::string label = meshLabel(model_, meshIndex) + " (on " + nodeLabel(model_, nodeIndex) + ")";
+    FitResult whole = fitPrimitive(all.positions, all.indices);
+    if (whole.fit) {
+      parts.push_back({*whole.fit, materials[0]});
+      if (std::set<int>(materials.begin(), materials.end()).size() > 1) {
+        out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                    label + " has " + std::to_string(materials.size()) +
+                        " materials; the first one colours the whole " +
+                        std::string(objectKindName(whole.fit->kind)));
+      }
+      reportFit(label, *whole.fit);
+      return parts;
+    }
+    if (each.size() > 1) {
+      bool allFit = true;
+      std::vector<FittedPart> separate;
+      for (std::size_t i = 0; i < each.size() && allFit; ++i) {
+        FitResult r = fitPrimitive(each[i].positions, each[i].indices);
+        if (r.fit) separate.push_back({*r.fit, materials[i]});
+        allFit = r.fit.has_value();
+      }
+      if (allFit) {
+        for (const FittedPart& part : separate) reportFit(label, part.fit);
+        parts = std::move(separate);
+        return parts;
+      }
+    }
+    out_.report(loss_, DiagnosticCode::GltfMeshNotPrimitive, {},
+                label + " is not a sphere, box, cylinder or plane (" + whole.reason +
+                    "); it is skipped")
+        .hint = "the tolerance is " + formatNumber(kFitTolerance) +
+                " of the shape's size; see docs/GLTF.md";
+    return parts;
+  }
+
+  void reportFit(const std::string& label, const MeshFit& fit) {
+    out_.note(DiagnosticCode::GltfMeshFit, {},
+              label + " is read as a " + std::string(objectKindName(fit.kind)) +
+                  " (largest deviation " + deviationText(fit.error) + " of its size)");
+  }
+
+  void addMeshObjects(int index, const glm::dmat4& world) {
+    const std::vector<FittedPart>& parts = fitMesh(model_.nodes[index].mesh, index);
+    for (const FittedPart& part : parts) {
+      Object object;
+      object.kind = part.fit.kind;
+      object.matrix = world * part.fit.shape;
+      object.material = material(part.material, part.fit.kind);
+      scene_.objects.push_back(std::move(object));
+    }
+  }
+
+  const tinygltf::Model& model_;
+  Scene& scene_;
+  DiagnosticList& out_;
+  Severity loss_;
+  bool haveCamera_ = false;
+  std::map<int, std::vector<FittedPart>> fitted_;
+  std::set<int> reportedMaterials_;
+  std::vector<std::pair<std::size_t, glm::dvec3>> pendingDirectional_;
+};
+
+}  // namespace
+
+bool looksLikeGlb(std::string_view bytes) {
+  return bytes.starts_with(kGlbMagic);
+}
+
+bool looksLikeGltfJson(std::string_view bytes) {
+  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.remove_prefix(3);
+  for (char c : bytes) {
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') continue;
+    return c == '{';
+  }
+  return false;
+}
+
+ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::path& folder,
+                     const ReadOptions& options) {
+  ReadResult result{Scene{}, DiagnosticList(fileName, options.errorLimit)};
+  DiagnosticList& out = result.diagnostics;
+  if (bytes.size() > kMaxGltfBytes) {
+    out.error(DiagnosticCode::GltfTooLarge, {}, "the file is larger than 1 GiB");
+    return result;
+  }
+  bool binary = looksLikeGlb(bytes);
+  std::string_view jsonText = bytes;
+  std::optional<std::string_view> bin;
+  if (binary) {
+    std::string why;
+    std::optional<GlbChunks> chunks = decodeGlb(bytes, why);
+    if (!chunks) {
+      out.error(DiagnosticCode::GltfInvalidGlb, {}, "not a valid GLB file: " + why);
+      return result;
+    }
+    jsonText = chunks->json;
+    bin = chunks->bin;
+  } else if (jsonText.starts_with("\xEF\xBB\xBF")) {
+    jsonText.remove_prefix(3);
+  }
+  auto jsonSpan = [&](std::size_t byte) {
+    return binary ? SourceSpan{} : spanAtByte(bytes, byte + (bytes.size() - jsonText.size()));
+  };
+  if (std::optional<std::size_t> deep = tooDeep(jsonText)) {
+    out.error(DiagnosticCode::GltfInvalidJson, jsonSpan(*deep),
+              "the JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return result;
+  }
+  Json doc;
+  try {
+    doc = Json::parse(jsonText);
+  } catch (const Json::parse_error& e) {
+    std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
+    out.error(
+        DiagnosticCode::GltfInvalidJson, jsonSpan(at),
+        std::string(binary ? "the GLB's JSON chunk is not valid JSON: " : "not valid JSON: ") +
+            parseErrorMessage(e.what()));
+    return result;
+  }
+  if (!doc.is_object()) {
+    out.error(DiagnosticCode::GltfInvalid, {}, "the JSON is not an object, so it is no glTF");
+    return result;
+  }
+  // glTF 2.0 only.
+  const Json* asset = doc.contains("asset") && doc["asset"].is_object() ? &doc["asset"] : nullptr;
+  if (!asset || !asset->contains("version") || !(*asset)["version"].is_string()) {
+    out.error(DiagnosticCode::GltfInvalid, {}, "the file has no asset.version, so it is no glTF");
+    return result;
+  }
+  std::string version = (*asset)["version"].get<std::string>();
+  if (!version.starts_with("2.")) {
+    out.error(DiagnosticCode::GltfInvalid, {},
+              "asset.version is '" + version + "'; only glTF 2.0 is read");
+    return result;
+  }
+  if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array()) {
+    for (const Json& name : doc["extensionsRequired"]) {
+      if (name.is_string() && !kReadableRequired.count(name.get<std::string>())) {
+        out.error(
+            DiagnosticCode::GltfUnsupportedExtension, {},
+            "the file requires the extension " + name.get<std::string>() + ", which is not read");
+      }
+    }
+    if (out.hasErrors()) return result;
+  }
+  if (doc.contains("buffers") && doc["buffers"].is_array()) {
+    for (std::size_t i = 0; i < doc["buffers"].size(); ++i) {
+      const Json& b = doc["buffers"][i];
+      if (!b.is_object() || !b.contains("uri") || !b["uri"].is_string()) continue;
+      std::string uri = b["uri"].get<std::string>();
+      if (std::optional<std::string> problem = uriProblem(uri, folder)) {
+        std::string shown = uri.size() > 80 ? uri.substr(0, 77) + "..." : uri;
+        out.error(DiagnosticCode::GltfExternalFile, {},
+                  "buffer " + std::to_string(i) + "'s uri '" + shown + "' " + *problem);
+      }
+    }
+    if (out.hasErrors()) return result;
+  }
+  std::optional<std::string> outputFile;
+  if (asset->contains("extras")) {
+    const Json* sf = sfExtras((*asset)["extras"]);
+    if (sf && sf->contains("outputFile") && (*sf)["outputFile"].is_string()) {
+      outputFile = (*sf)["outputFile"].get<std::string>();
+    }
+  }
+  // Images are never needed: tinygltf does not even see them.
+  doc.erase("images");
+  std::string cleaned = doc.dump();
+
+  tinygltf::TinyGLTF loader;
+  Confinement confinement;
+  std::error_code ec;
+  confinement.folder =
+      fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder), ec);
+  loader.SetFsCallbacks({&confinedExists, &unexpandedPath, &confinedRead, &noWrite, &confinement});
+  loader.SetImageLoader(&noImageDecoding, nullptr);
+  loader.SetStoreOriginalJSONForExtrasAndExtensions(true);
+  tinygltf::Model model;
+  std::string err;
+  std::string warn;
+  bool loaded = false;
+  try {
+    if (binary) {
+      std::string glb = encodeGlb(cleaned, bin.value_or(std::string_view{}));
+      loaded = loader.LoadBinaryFromMemory(
+          &model, &err, &warn, reinterpret_cast<const unsigned char*>(glb.data()),
+          static_cast<unsigned int>(glb.size()), confinement.folder.string());
+    } else {
+      loaded = loader.LoadASCIIFromString(&model, &err, &warn, cleaned.data(),
+                                          static_cast<unsigned int>(cleaned.size()),
+                                          confinement.folder.string());
+    }
+  } catch (const std::exception& e) {
+    err = e.what();
+    loaded = false;
+  }
+  if (!loaded) {
+    out.error(DiagnosticCode::GltfInvalid, {}, "not a valid glTF 2.0 file: " + firstLine(err));
+    return result;
+  }
+
+  Importer importer(model, options, result);
+  importer.run();
+  if (out.hasErrors()) return result;
+  // What the file gave must hold as a scene file's values would.
+  DiagnosticList checked = validateScene(result.scene, fileName);
+  out.append(checked);
+  if (outputFile) result.scene.outputFile = *outputFile;
+  return result;
+}
+
+}  // namespace scene
