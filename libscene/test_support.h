@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "libscene/diagnostic.h"
+#include "libscene/scene.h"
+#include "libscene/transform.h"
 
 namespace scene::testing {
 
@@ -41,5 +43,22 @@ inline Diagnostic expectOne(const DiagnosticList& list, DiagnosticCode code, std
 inline const std::string kCameraRecord =
     "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n";
 inline const std::string kLightRecord = "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n";
+
+// A camera, one light and a red sphere whose translation holds -0 and
+// 1e-300: numbers a writer must keep exactly.
+inline Scene smallScene() {
+  Scene s;
+  s.camera.matrix = cameraFromLookAt({0, 0, 5}, {0, 0, 0});
+  Light light;
+  light.matrix[3] = glm::dvec4(3, 3, 3, 1);
+  light.colour = glm::dvec3(1, 0.5, 0.25);
+  s.lights.push_back(light);
+  Object sphere;
+  sphere.kind = ObjectKind::Sphere;
+  sphere.material.colour = glm::dvec3(1, 0, 0);
+  sphere.matrix[3] = glm::dvec4(0.1, -0.0, 1e-300, 1);
+  s.objects.push_back(sphere);
+  return s;
+}
 
 }  // namespace scene::testing

@@ -14,22 +14,8 @@ namespace scene {
 namespace {
 
 using testing::expectOne;
+using testing::smallScene;
 using testing::withCode;
-
-Scene smallScene() {
-  Scene s;
-  s.camera.matrix = cameraFromLookAt({0, 0, 5}, {0, 0, 0});
-  Light light;
-  light.matrix[3] = glm::dvec4(3, 3, 3, 1);
-  light.colour = glm::dvec3(1, 0.5, 0.25);
-  s.lights.push_back(light);
-  Object sphere;
-  sphere.kind = ObjectKind::Sphere;
-  sphere.material.colour = glm::dvec3(1, 0, 0);
-  sphere.matrix[3] = glm::dvec4(0.1, -0.0, 1e-300, 1);
-  s.objects.push_back(sphere);
-  return s;
-}
 
 TEST(SceneFileWriter, WritesRecordsRowByRow) {
   EXPECT_EQ(writeSceneFile(smallScene()),

@@ -23,12 +23,9 @@
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "tests/geometry/reference_caster.h"
+#include "tests/geometry/scene_builder.h"
 
 namespace {
-
-using K = scene::ObjectKind;
-using glm::dmat4;
-using glm::dvec3;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -42,89 +39,7 @@ struct GeometryCase {
   bool everyObjectVisible = true;
 };
 
-dmat4 translate(double x, double y, double z) {
-  return glm::translate(dmat4(1.0), dvec3(x, y, z));
-}
-dmat4 scale(double x, double y, double z) {
-  return glm::scale(dmat4(1.0), dvec3(x, y, z));
-}
-dmat4 scale(double s) {
-  return scale(s, s, s);
-}
-dmat4 rotate(double angle, const dvec3& axis) {
-  return glm::rotate(dmat4(1.0), angle, axis);
-}
-// The identity plus `k` in row `row`, column `col`: x_row += k * x_col.
-dmat4 shear(int row, int col, double k) {
-  dmat4 m(1.0);
-  m[col][row] = k;
-  return m;
-}
-
-class SceneBuilder {
- public:
-  SceneBuilder& camera(const dvec3& eye, const dvec3& target) {
-    scene_.camera.matrix = scene::cameraFromLookAt(eye, target);
-    return *this;
-  }
-  SceneBuilder& cameraMatrix(const dmat4& m) {
-    scene_.camera.matrix = m;
-    return *this;
-  }
-  SceneBuilder& add(K kind, const dmat4& m) {
-    scene::Object o;
-    o.kind = kind;
-    o.matrix = m;
-    scene_.objects.push_back(o);
-    return *this;
-  }
-  scene::Scene build() {
-    scene::Light light;
-    light.matrix[3] = glm::dvec4(3.0, 10.0, 5.0, 1.0);
-    scene_.lights.push_back(light);
-    return scene_;
-  }
-
- private:
-  scene::Scene scene_;
-};
-
-// Every primitive, scaled by `s` about the origin and moved to `at`.
-scene::Scene primitives(double s, const dvec3& at, const dvec3& eye, const dvec3& target) {
-  dmat4 place = translate(at.x, at.y, at.z) * scale(s);
-  auto p = [&](const dvec3& v) { return dvec3(place * glm::dvec4(v, 1.0)); };
-  return SceneBuilder()
-      .camera(p(eye), p(target))
-      .add(K::Plane, place * translate(0, -1, 0))
-      .add(K::Sphere, place * translate(-2.5, 0, 0))
-      .add(K::Cube, place * rotate(0.3, {1, 0, 0}) * rotate(0.6, {0, 1, 0}))
-      .add(K::Cylinder, place * translate(2.5, 0, 0) * rotate(0.4, {0, 0, 1}))
-      .build();
-}
-
-// A seeded scene of many objects under random affine maps with shear and
-// mirrors; the bits come straight from mt19937_64, whose output the
-// standard fixes, so the scene is the same on every platform.
-scene::Scene randomScene() {
-  std::mt19937_64 bits(20260523);
-  auto uniform = [&](double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(bits() >> 11) * 0x1.0p-53;
-  };
-  SceneBuilder b;
-  b.camera({0, 2, 25}, {0, 0, 0});
-  b.add(K::Plane, translate(0, -8, 0) * rotate(0.1, {1, 0, 1}));
-  for (int n = 0; n < 60; ++n) {
-    K kind = static_cast<K>(1 + bits() % 3);
-    dmat4 m =
-        translate(uniform(-9, 9), uniform(-6, 6), uniform(-12, 8)) *
-        rotate(uniform(0, 2 * kPi), glm::normalize(dvec3(uniform(-1, 1), uniform(-1, 1), 1))) *
-        shear(static_cast<int>(bits() % 3), static_cast<int>(bits() % 2 + 1) % 3,
-              uniform(-0.6, 0.6)) *
-        scale(uniform(0.2, 1.5) * (bits() % 4 == 0 ? -1 : 1), uniform(0.2, 1.5), uniform(0.2, 1.5));
-    b.add(kind, m);
-  }
-  return b.build();
-}
+using namespace testscenes;
 
 std::vector<GeometryCase> geometryCases() {
   std::vector<GeometryCase> cases;
@@ -298,7 +213,7 @@ std::vector<GeometryCase> geometryCases() {
     cases.push_back({"skewed, rolled camera matrix", s});
   }
 
-  cases.push_back({"60 random affine objects", randomScene(), 160, 120, false});
+  cases.push_back({"60 random affine objects", randomAffineScene(20260523), 160, 120, false});
   return cases;
 }
 

@@ -21,58 +21,15 @@
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "tests/geometry/reference_caster.h"
+#include "tests/geometry/scene_builder.h"
 #include "tests/pov/povray_runner.h"
 
 namespace {
 
-using K = scene::ObjectKind;
-using glm::dmat4;
-using glm::dvec3;
-
 constexpr double kPi = std::numbers::pi;
 constexpr double kAgreement = 0.995;
 
-dmat4 translate(double x, double y, double z) {
-  return glm::translate(dmat4(1.0), dvec3(x, y, z));
-}
-dmat4 scale(double x, double y, double z) {
-  return glm::scale(dmat4(1.0), dvec3(x, y, z));
-}
-dmat4 scale(double s) {
-  return scale(s, s, s);
-}
-dmat4 rotate(double angle, const dvec3& axis) {
-  return glm::rotate(dmat4(1.0), angle, axis);
-}
-// x_row += k * x_col.
-dmat4 shear(int row, int col, double k) {
-  dmat4 m(1.0);
-  m[col][row] = k;
-  return m;
-}
-
-class Builder {
- public:
-  Builder& camera(const dvec3& eye, const dvec3& target) {
-    scene_.camera.matrix = scene::cameraFromLookAt(eye, target);
-    return *this;
-  }
-  Builder& cameraMatrix(const dmat4& m) {
-    scene_.camera.matrix = m;
-    return *this;
-  }
-  Builder& add(K kind, const dmat4& m) {
-    scene::Object o;
-    o.kind = kind;
-    o.matrix = m;
-    scene_.objects.push_back(o);
-    return *this;
-  }
-  scene::Scene build() const { return scene_; }
-
- private:
-  scene::Scene scene_;
-};
+using namespace testscenes;
 
 struct CrossCase {
   std::string name;
@@ -83,40 +40,6 @@ struct CrossCase {
   // Why POV-Ray cannot be trusted here; empty where it can.
   std::string povRayLimit;
 };
-
-// Every primitive, scaled by `s` about the origin and moved to `at`.
-scene::Scene primitives(double s, const dvec3& at, const dvec3& eye, const dvec3& target) {
-  dmat4 place = translate(at.x, at.y, at.z) * scale(s);
-  auto p = [&](const dvec3& v) { return dvec3(place * glm::dvec4(v, 1.0)); };
-  return Builder()
-      .camera(p(eye), p(target))
-      .add(K::Plane, place * translate(0, -1, 0))
-      .add(K::Sphere, place * translate(-2.5, 0, 0))
-      .add(K::Cube, place * rotate(0.3, {1, 0, 0}) * rotate(0.6, {0, 1, 0}))
-      .add(K::Cylinder, place * translate(2.5, 0, 0) * rotate(0.4, {0, 0, 1}))
-      .build();
-}
-
-scene::Scene randomScene() {
-  std::mt19937_64 bits(77);
-  auto uniform = [&](double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(bits() >> 11) * 0x1.0p-53;
-  };
-  Builder b;
-  b.camera({0, 2, 25}, {0, 0, 0});
-  b.add(K::Plane, translate(0, -8, 0) * rotate(0.1, {1, 0, 1}));
-  for (int n = 0; n < 60; ++n) {
-    K kind = static_cast<K>(1 + bits() % 3);
-    dmat4 m =
-        translate(uniform(-9, 9), uniform(-6, 6), uniform(-12, 8)) *
-        rotate(uniform(0, 2 * kPi), glm::normalize(dvec3(uniform(-1, 1), uniform(-1, 1), 1))) *
-        shear(static_cast<int>(bits() % 3), static_cast<int>(bits() % 2 + 1) % 3,
-              uniform(-0.6, 0.6)) *
-        scale(uniform(0.2, 1.5) * (bits() % 4 == 0 ? -1 : 1), uniform(0.2, 1.5), uniform(0.2, 1.5));
-    b.add(kind, m);
-  }
-  return b.build();
-}
 
 // A camera turned by `roll` about its forward axis.
 dmat4 rolled(const dvec3& eye, const dvec3& target, double roll) {
@@ -133,7 +56,7 @@ CrossCase make(std::string name, scene::Scene scene, double fov = 60.0, int widt
 std::vector<CrossCase> cases() {
   std::vector<CrossCase> c;
   c.push_back(make("primitives", primitives(1, dvec3(0), {0, 2, 8}, {0, 0, 0})));
-  c.push_back(make("shear", Builder()
+  c.push_back(make("shear", SceneBuilder()
                                 .camera({0, 1, 9}, {0, 0, 0})
                                 .add(K::Plane, translate(0, -2, 0) * shear(1, 0, 0.2))
                                 .add(K::Cube, translate(-3, 0, 0) * shear(0, 1, 0.8) *
@@ -144,7 +67,7 @@ std::vector<CrossCase> cases() {
                                 .build()));
   c.push_back(
       make("mirrors",
-           Builder()
+           SceneBuilder()
                .camera({0, 2, 9}, {0, 0, 0})
                .add(K::Plane, translate(0, -1.5, 0) * scale(1, -1, 1))
                .add(K::Sphere, translate(-3, 0, 0) * scale(-1, 1.2, 0.8) * rotate(0.5, {0, 0, 1}))
@@ -154,7 +77,7 @@ std::vector<CrossCase> cases() {
                .build()));
   c.push_back(make(
       "non-uniform scale",
-      Builder()
+      SceneBuilder()
           .camera({0, 2, 10}, {0, 0, 0})
           .add(K::Plane, translate(0, -2, 0) * scale(50, 1, 0.01))
           .add(K::Sphere, translate(-3, 0, 0) * rotate(0.7, {0, 0, 1}) * scale(2.5, 0.2, 1))
@@ -163,7 +86,7 @@ std::vector<CrossCase> cases() {
           .add(K::Sphere, translate(0, 2.5, -1) * rotate(0.7, {0, 1, 0}) * scale(1e-2, 1.2, 1.2))
           .build()));
   c.push_back(make("steep camera down", primitives(1, dvec3(0), {0.5, 12, 1.5}, {0, 0, 0})));
-  c.push_back(make("straight down", Builder()
+  c.push_back(make("straight down", SceneBuilder()
                                         .camera({0, 10, 0}, {0, 0, 0})
                                         .add(K::Plane, dmat4(1.0))
                                         .add(K::Sphere, translate(-2, 1, 1))
@@ -171,7 +94,7 @@ std::vector<CrossCase> cases() {
                                         .add(K::Cylinder, translate(0.3, 1, 2.5))
                                         .build()));
   c.push_back(make("steep camera up",
-                   Builder()
+                   SceneBuilder()
                        .camera({0.5, -1, 3}, {0, 8, 0})
                        .add(K::Plane, translate(0, 12, 0))
                        .add(K::Sphere, translate(0, 8, 0) * scale(2))
@@ -179,7 +102,7 @@ std::vector<CrossCase> cases() {
                        .add(K::Cylinder, translate(-3, 7, -1) * rotate(kPi / 2, {1, 0, 0}))
                        .build()));
   c.push_back(
-      make("straight up", Builder()
+      make("straight up", SceneBuilder()
                               .camera({0, 0, 0}, {0, 10, 0})
                               .add(K::Plane, translate(0, 12, 0))
                               .add(K::Sphere, translate(0, 8, 0) * scale(2))
@@ -193,7 +116,7 @@ std::vector<CrossCase> cases() {
   c.push_back(make("narrow field of view", primitives(1, dvec3(0), {0.3, 2, 30}, {0, 0, 0}), 8.0));
   c.push_back(make("2:1 image", primitives(1, dvec3(0), {0, 2, 8}, {0, 0, 0}), 45.0, 240, 120));
   c.push_back(make("camera inside a sphere",
-                   Builder()
+                   SceneBuilder()
                        .camera({1, 0.5, 2}, {0, 0, -5})
                        .add(K::Sphere, scale(10))
                        .add(K::Cube, translate(0, 0, -5) * rotate(0.5, {1, 1, 0}))
@@ -201,7 +124,7 @@ std::vector<CrossCase> cases() {
                        .add(K::Cylinder, translate(3, -1, -4) * rotate(0.3, {1, 0, 0}))
                        .build()));
   c.push_back(make("planes every way",
-                   Builder()
+                   SceneBuilder()
                        .camera({0, 0, 6}, {0, 0, 0})
                        .add(K::Plane, translate(0, -2, 0) * rotate(0.2, {0, 0, 1}))
                        .add(K::Plane, translate(0, 3, 0) * rotate(2.9, {1, 0, 0}))
@@ -209,7 +132,7 @@ std::vector<CrossCase> cases() {
                        .add(K::Plane, translate(0, 0, -10) * rotate(kPi / 2, {1, 0, 0}))
                        .add(K::Sphere, dmat4(1.0))
                        .build()));
-  c.push_back(make("sixty objects with shear and mirrors", randomScene()));
+  c.push_back(make("sixty objects with shear and mirrors", randomAffineScene(77)));
   c.push_back(make("size 1 at 1e3", primitives(1, {1e3, 1e3, -1e3}, {0.5, 2, 8}, {0, 0, 0})));
 
   // POV-Ray's fixed tolerances.
@@ -217,7 +140,7 @@ std::vector<CrossCase> cases() {
                    "POV-Ray drops intersections nearer than its fixed depth tolerances (about 1e-6 "
                    "along the ray in object space), so objects below about 1e-5 come apart"));
   c.push_back(make("hits closer than 1e-6",
-                   Builder()
+                   SceneBuilder()
                        .camera({0, 0, 4e-7}, {0.2, 0.1, -1})
                        .add(K::Plane, rotate(kPi / 2, {1, 0, 0}))
                        .add(K::Sphere, translate(0, 0, -6) * scale(3))
