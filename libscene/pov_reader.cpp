@@ -1382,13 +1382,10 @@ class PovParser {
 
   // --- Camera, lights, background ----------------------------------------
 
-  void camera() {
-    PovToken keyword = take();
-    expectSymbol('{', "after camera");
-    CameraState c = camera_;
-    std::optional<glm::dvec3> lookAt;
-    std::optional<double> angle;
-    Transform transform;
+  // The next keyword of a block whose '{' has been read, taken, after
+  // running directives and gathering transforms into `transform`; nothing
+  // once the block's '}' is read. `block` names the block in errors.
+  std::optional<PovToken> nextKeyword(std::string_view block, Transform& transform) {
     while (!acceptSymbol('}')) {
       const PovToken& p = peek();
       if (p.kind == PovTokenKind::Directive) {
@@ -1396,13 +1393,26 @@ class PovParser {
         continue;
       }
       if (p.kind != PovTokenKind::Word)
-        fail(p.span, "expected a camera keyword, found " + describe(p));
-      std::string_view w = p.text;
-      if (isTransformWord(w)) {
+        fail(p.span, "expected a " + std::string(block) + " keyword, found " + describe(p));
+      if (isTransformWord(p.text)) {
         transformItem(transform);
         continue;
       }
-      PovToken word = take();
+      return take();
+    }
+    return std::nullopt;
+  }
+
+  void camera() {
+    PovToken keyword = take();
+    expectSymbol('{', "after camera");
+    CameraState c = camera_;
+    std::optional<glm::dvec3> lookAt;
+    std::optional<double> angle;
+    Transform transform;
+    while (std::optional<PovToken> next = nextKeyword("camera", transform)) {
+      PovToken word = *next;
+      std::string_view w = word.text;
       if (w == "perspective") {
       } else if (w == "location") {
         c.location = vectorValue(w);
@@ -1508,20 +1518,9 @@ class PovParser {
     PovValue c = colour();
     light.colour = glm::dvec3(c.v[0], c.v[1], c.v[2]);
     Transform transform;
-    while (!acceptSymbol('}')) {
-      const PovToken& p = peek();
-      if (p.kind == PovTokenKind::Directive) {
-        directive();
-        continue;
-      }
-      if (p.kind != PovTokenKind::Word)
-        fail(p.span, "expected a light_source keyword, found " + describe(p));
-      std::string_view w = p.text;
-      if (isTransformWord(w)) {
-        transformItem(transform);
-        continue;
-      }
-      PovToken word = take();
+    while (std::optional<PovToken> next = nextKeyword("light_source", transform)) {
+      PovToken word = *next;
+      std::string_view w = word.text;
       if (w == "spotlight" || w == "cylinder" || w == "parallel") {
         loss(word.span,
              (w == "spotlight" ? std::string("a spotlight") : "a " + std::string(w) + " light") +
