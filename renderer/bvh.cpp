@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 
 namespace render {
 
@@ -12,6 +14,17 @@ constexpr std::uint32_t kMaxLeafItems = 4;
 // Past this depth only balanced median splits are made, which keeps the
 // tree within the traversal stack (Bvh::kStackSize) for any item count.
 constexpr int kMaxDepth = 64;
+
+// The nearest floats at or beyond a double, outward.
+float roundDown(double v) {
+  float f = static_cast<float>(v);
+  return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity())
+                                    : f;
+}
+float roundUp(double v) {
+  float f = static_cast<float>(v);
+  return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
 
 }  // namespace
 
@@ -37,7 +50,10 @@ std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec
     bounds.extend(boxes[items_[i]]);
     centreBounds.extend(centres[items_[i]]);
   }
-  nodes_[index].bounds = bounds;
+  for (int i = 0; i < 3; ++i) {
+    nodes_[index].lo[i] = roundDown(bounds.lo[i]);
+    nodes_[index].hi[i] = roundUp(bounds.hi[i]);
+  }
   std::uint32_t count = end - begin;
 
   auto makeLeaf = [&] {

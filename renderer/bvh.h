@@ -3,14 +3,19 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "renderer/bounds.h"
 
 namespace render {
 
+// 32 bytes: the box in float, rounded outward from the double bounds so that
+// it still contains them (a ray can only meet more boxes, never fewer), which
+// puts twice as many nodes in each cache line as double boxes did.
 struct BvhNode {
-  Bounds bounds;
+  float lo[3] = {0.0f, 0.0f, 0.0f};
+  float hi[3] = {0.0f, 0.0f, 0.0f};
   // Interior: index of the second child (the first follows this node).
   // Leaf: index of the first item in `Bvh::items`.
   std::uint32_t offset = 0;
@@ -43,7 +48,7 @@ class Bvh {
     std::uint32_t current = 0;
     for (;;) {
       const BvhNode& node = nodes_[current];
-      if (hitsBox(node.bounds, ray, 0.0, tMax)) {
+      if (hitsNode(node, ray, tMax)) {
         if (node.count > 0) {
           for (std::uint32_t i = 0; i < node.count; ++i) {
             tMax = visit(items_[node.offset + i]);
@@ -67,6 +72,22 @@ class Bvh {
   }
 
  private:
+  // hitsBox for a node's float box; the arithmetic is in double, where each
+  // float converts exactly.
+  static bool hitsNode(const BvhNode& node, const BoxRay& r, double tMax) {
+    double tMin = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      double tNear = (static_cast<double>(node.lo[i]) - r.origin[i]) * r.inverseDirection[i];
+      double tFar = (static_cast<double>(node.hi[i]) - r.origin[i]) * r.inverseDirection[i];
+      if (tNear > tFar) std::swap(tNear, tFar);
+      tFar *= 1.0 + 2.0 * gamma(3);
+      tMin = tNear > tMin ? tNear : tMin;
+      tMax = tFar < tMax ? tFar : tMax;
+      if (tMin > tMax) return false;
+    }
+    return true;
+  }
+
   std::uint32_t build(const std::vector<Bounds>& boxes, std::vector<glm::dvec3>& centres,
                       std::uint32_t begin, std::uint32_t end, int depth);
 

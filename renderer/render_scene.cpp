@@ -74,23 +74,25 @@ RenderScene::RenderScene(const scene::Scene& scene) : camera_(scene.camera) {
   }
 }
 
-std::optional<RenderScene::Candidate> RenderScene::intersectObject(std::uint32_t index,
-                                                                   const Ray& ray,
-                                                                   const RaySource& source,
-                                                                   double tMax) const {
+// Inlined into the searches: it runs for every object a ray reaches.
+[[gnu::always_inline]] inline std::optional<RenderScene::Candidate> RenderScene::intersectObject(
+    std::uint32_t index, const Ray& ray, const RaySource& source, double tMax) const {
   const RenderObject& object = objects_[index];
   bool self = index == source.object;
   // A ray leaving a plane, or leaving a convex solid outward, cannot meet it.
   if (self && (object.kind == scene::ObjectKind::Plane || !source.inward)) return std::nullopt;
   glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
-  ShapeSpan span = intersectUnitShape(object.kind, o, d);
+  // Distances only: the normal is worked out once, for the winner.
+  SpanDistances span = unitShapeDistances(object.kind, o, d);
   if (span.empty) return std::nullopt;
   // The nearest end of the span ahead of the origin; a ray that left this
   // solid inward meets it again only where it leaves.
-  if (!self && span.enter > 0.0 && span.enter < tMax) return Candidate{span.enter, false};
+  if (!self && span.enter > 0.0 && span.enter < tMax) {
+    return Candidate{span.enter, false, span.enterFace};
+  }
   if (object.kind != scene::ObjectKind::Plane && span.exit > 0.0 && span.exit < tMax) {
-    return Candidate{span.exit, true};
+    return Candidate{span.exit, true, span.exitFace};
   }
   return std::nullopt;
 }
@@ -99,8 +101,7 @@ Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate&
   const RenderObject& object = objects_[index];
   glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
-  ShapeSpan span = intersectUnitShape(object.kind, o, d);
-  glm::dvec3 localNormal = c.atExit ? span.exitNormal : span.enterNormal;
+  glm::dvec3 localNormal = spanFaceNormal(object.kind, c.face, o, d, c.t);
   SurfacePoint s = refineOntoSurface(object.kind, o, d, c.t, localNormal);
 
   // Step 1: to world space, with the error bound of an affine transform of
@@ -128,7 +129,7 @@ Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate&
 std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& source,
                                            double tMax) const {
   std::uint32_t best = RaySource::kNone;
-  Candidate bestCandidate{tMax, false};
+  Candidate bestCandidate{tMax, false, SpanFace::None};
   auto consider = [&](std::uint32_t index) {
     if (auto c = intersectObject(index, ray, source, bestCandidate.t)) {
       best = index;
@@ -148,7 +149,7 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
 std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySource& source,
                                                      double tMax) const {
   std::uint32_t best = RaySource::kNone;
-  Candidate bestCandidate{tMax, false};
+  Candidate bestCandidate{tMax, false, SpanFace::None};
   for (std::uint32_t i = 0; i < objects_.size(); ++i) {
     if (auto c = intersectObject(i, ray, source, bestCandidate.t)) {
       best = i;

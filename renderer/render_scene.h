@@ -12,6 +12,7 @@
 
 #include "libscene/scene.h"
 #include "renderer/bvh.h"
+#include "renderer/unit_shapes.h"
 
 namespace render {
 
@@ -89,6 +90,7 @@ class RenderScene {
   struct Candidate {
     double t;
     bool atExit;  // the far end of the span: the ray was inside
+    SpanFace face;
   };
   std::optional<Candidate> intersectObject(std::uint32_t index, const Ray& ray,
                                            const RaySource& source, double tMax) const;

@@ -10,122 +10,29 @@
 
 namespace render {
 
-namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// Narrows `span` to the parameters where -1 <= o + t d <= 1 on one axis.
-void clipToSlab(ShapeSpan& span, double o, double d, int axis) {
-  if (d == 0.0) {
-    // Parallel to the slab: inside it everywhere or nowhere.
-    if (o < -1.0 || o > 1.0) span.empty = true;
-    return;
+glm::dvec3 spanFaceNormal(scene::ObjectKind kind, SpanFace face, const glm::dvec3& o,
+                          const glm::dvec3& d, double t) {
+  if (face == SpanFace::None) return glm::dvec3(0.0);
+  if (face == SpanFace::Curved) {
+    if (kind == scene::ObjectKind::Sphere) return o + t * d;
+    glm::dvec2 n = glm::dvec2(o.x, o.z) + t * glm::dvec2(d.x, d.z);
+    return glm::dvec3(n.x, 0.0, n.y);
   }
-  double tLow = (-1.0 - o) / d;
-  double tHigh = (1.0 - o) / d;
-  glm::dvec3 lowNormal(0.0);
-  lowNormal[axis] = -1.0;
-  glm::dvec3 highNormal(0.0);
-  highNormal[axis] = 1.0;
-  // A ray going up the axis enters through the -1 face.
-  if (d < 0.0) {
-    std::swap(tLow, tHigh);
-    std::swap(lowNormal, highNormal);
-  }
-  if (tLow > span.enter) {
-    span.enter = tLow;
-    span.enterNormal = lowNormal;
-  }
-  if (tHigh < span.exit) {
-    span.exit = tHigh;
-    span.exitNormal = highNormal;
-  }
+  int code = static_cast<int>(face);
+  glm::dvec3 n(0.0);
+  n[code / 2] = code % 2 == 1 ? 1.0 : -1.0;
+  return n;
 }
-
-// Roots of |f + t g|^2 = 1 for the 2D or 3D vectors given as o and d, in a
-// form that keeps its digits for a distant small shape and a near huge one:
-// the discriminant comes from the line's distance to the centre (Ray Tracing
-// Gems, chapter 7), and the two roots from the stable quadratic formula.
-template <typename Vec>
-bool unitQuadricRoots(const Vec& o, const Vec& d, double& t0, double& t1) {
-  double a = glm::dot(d, d);
-  if (a == 0.0) return false;
-  double b = glm::dot(o, d);
-  Vec f = o - (b / a) * d;
-  double discriminant = a * (1.0 - glm::dot(f, f));
-  if (!(discriminant >= 0.0)) return false;
-  double q = -(b + std::copysign(std::sqrt(discriminant), b));
-  if (q == 0.0) {
-    // b = 0 and a zero discriminant: the line touches at its origin.
-    t0 = t1 = 0.0;
-    return true;
-  }
-  double c = glm::dot(o, o) - 1.0;
-  t0 = q / a;
-  t1 = c / q;
-  if (t0 > t1) std::swap(t0, t1);
-  return true;
-}
-
-}  // namespace
 
 ShapeSpan intersectUnitShape(scene::ObjectKind kind, const glm::dvec3& o, const glm::dvec3& d) {
+  SpanDistances distances = unitShapeDistances(kind, o, d);
   ShapeSpan span;
-  span.enter = -kInfinity;
-  span.exit = kInfinity;
-  span.empty = false;
-  switch (kind) {
-    case scene::ObjectKind::Plane: {
-      if (d.y == 0.0) {
-        span.empty = true;
-        return span;
-      }
-      double t = -o.y / d.y;
-      span.enter = span.exit = t;
-      span.enterNormal = span.exitNormal = glm::dvec3(0.0, 1.0, 0.0);
-      return span;
-    }
-    case scene::ObjectKind::Cube:
-      for (int axis = 0; axis < 3 && !span.empty; ++axis) clipToSlab(span, o[axis], d[axis], axis);
-      break;
-    case scene::ObjectKind::Sphere: {
-      double t0 = 0.0;
-      double t1 = 0.0;
-      if (!unitQuadricRoots(o, d, t0, t1)) {
-        span.empty = true;
-        return span;
-      }
-      span.enter = t0;
-      span.exit = t1;
-      span.enterNormal = o + t0 * d;
-      span.exitNormal = o + t1 * d;
-      return span;
-    }
-    case scene::ObjectKind::Cylinder: {
-      glm::dvec2 o2(o.x, o.z);
-      glm::dvec2 d2(d.x, d.z);
-      if (d2 == glm::dvec2(0.0)) {
-        // Along the axis: inside the tube everywhere or nowhere.
-        if (glm::dot(o2, o2) > 1.0) span.empty = true;
-      } else {
-        double t0 = 0.0;
-        double t1 = 0.0;
-        if (!unitQuadricRoots(o2, d2, t0, t1)) {
-          span.empty = true;
-          return span;
-        }
-        span.enter = t0;
-        span.exit = t1;
-        glm::dvec2 n0 = o2 + t0 * d2;
-        glm::dvec2 n1 = o2 + t1 * d2;
-        span.enterNormal = glm::dvec3(n0.x, 0.0, n0.y);
-        span.exitNormal = glm::dvec3(n1.x, 0.0, n1.y);
-      }
-      if (!span.empty) clipToSlab(span, o.y, d.y, 1);
-      break;
-    }
-  }
-  if (!span.empty && !(span.enter <= span.exit)) span.empty = true;
+  span.empty = distances.empty;
+  span.enter = distances.enter;
+  span.exit = distances.exit;
+  if (span.empty) return span;
+  span.enterNormal = spanFaceNormal(kind, distances.enterFace, o, d, span.enter);
+  span.exitNormal = spanFaceNormal(kind, distances.exitFace, o, d, span.exit);
   return span;
 }
 

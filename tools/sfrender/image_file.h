@@ -8,10 +8,12 @@
 
 namespace tools {
 
-// Whether OpenImageIO can write files with this name's extension.
+// Whether files with this name's extension can be written: ".ppm" here,
+// every other through OpenImageIO.
 bool canWriteImage(const std::filesystem::path& path);
 
-// Writes the image through OpenImageIO: floating-point formats (EXR) get the
+// Writes the image, as binary PPM (P6) by hand for ".ppm" and through
+// OpenImageIO for every other extension: floating-point formats (EXR) get the
 // linear values as they are; 8-bit formats (PPM, PNG, ...) get each channel
 // clamped to [0, 1] and rounded to the nearest of 256 levels, with no gamma.
 // The file is written beside the target under a temporary name and renamed,
