@@ -10,8 +10,14 @@ packages=(
   # POV-Ray renders the cross-checks; the tutorial-style scenes include its
   # colors.inc.
   povray povray-includes
+  # make bench draws the plots of docs/PERFORMANCE.md with gnuplot.
+  gnuplot-nox
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).
   blender python3-numpy
+  # sfbuild: GLFW and epoxy for OpenGL 3.3; its X11 test runs it in Xvfb on
+  # Mesa's software OpenGL, types with xdotool and takes screenshots with xwd
+  # and netpbm.
+  libglfw3-dev libepoxy-dev libgl1-mesa-dri xvfb xauth xdotool x11-apps netpbm
 )
 # The glTF Validator runs on Node.js; a machine with node and npm already
 # (from Debian or elsewhere) keeps them.

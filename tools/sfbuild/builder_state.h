@@ -1,0 +1,118 @@
+// The scene builder's state and its response to keys and the mouse, apart
+// from any window: main.cpp turns GLFW's callbacks into these calls, and the
+// unit tests make them directly.
+#pragma once
+
+#include <functional>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libscene/scene.h"
+
+namespace sfbuild {
+
+// The keys the builder knows, independent of GLFW's codes. Letters and
+// digits are their upper-case ASCII characters.
+enum Key : int {
+  kKeyEnter = 256,
+  kKeyEscape,
+  kKeyBackspace,
+  kKeyToggleIdView,  // F9: each object in a flat colour of its own (tests)
+};
+
+enum class MouseButton { Left, Right, Middle };
+
+enum class Operation { None, Grab, Rotate, Scale };
+// All: a scale on every axis (S alone).
+enum class Axis { None, X, Y, Z, All };
+
+struct Selection {
+  bool light = false;
+  std::size_t index = 0;
+  friend bool operator==(const Selection&, const Selection&) = default;
+};
+
+// The builder's view, and the CAMERA it saves.
+inline constexpr double kVerticalFovDegrees = 60.0;
+inline constexpr double kLightRadius = 0.15;     // how big a light is drawn and picked
+inline constexpr float kPlaneHalfSize = 500.0f;  // the infinite PLANE as drawn
+
+struct BuilderState {
+  scene::Scene scene;
+  std::optional<Selection> selection;
+
+  // A transform in progress: the operation, its axis (None while the axis
+  // key is awaited), what the user typed, and the matrix before it began.
+  Operation operation = Operation::None;
+  Axis axis = Axis::None;
+  std::string typed;
+  glm::dmat4 original{1.0};
+  double startMouseX = 0.0;
+
+  // The window, in pixels, and the mouse.
+  int width = 640;
+  int height = 480;
+  glm::dvec2 mouse{0.0};
+  bool panning = false;  // middle button held
+  bool looking = false;  // right button held
+  bool rightMoved = false;
+
+  // Saving: the next number to try, and the last file written (or the
+  // reason it failed).
+  int nextSaveNumber = 1;
+  std::string lastSave;
+  bool idView = false;
+  bool showHelp = false;
+};
+
+// The builder's opening state: an empty scene and the start camera.
+BuilderState initialState(int width, int height);
+// A state that edits `scene`, its camera included.
+BuilderState stateForScene(scene::Scene scene, int width, int height);
+
+// What a saving key press asks of the outside world: whether a file exists,
+// and writing one (false and a reason on failure).
+struct FileSystem {
+  std::function<bool(const std::string&)> exists;
+  std::function<bool(const std::string& name, const std::string& content, std::string& error)>
+      write;
+};
+
+void handleKey(BuilderState& state, int key, const FileSystem& files);
+void handleMouseButton(BuilderState& state, MouseButton button, bool pressed, double x, double y);
+void handleMouseMove(BuilderState& state, double x, double y);
+void handleScroll(BuilderState& state, double offset);
+
+// P: the scene as the next free Scene<n>.sf; returns the name written, or
+// nothing (the reason in state.lastSave).
+std::optional<std::string> saveScene(BuilderState& state, const FileSystem& files);
+
+// The object or light under window position (x, y), by the renderer's own
+// intersection code; lights count as spheres of kLightRadius.
+std::optional<Selection> pick(const BuilderState& state, double x, double y);
+
+// The amount a transform in progress applies: the typed number, or one that
+// follows the mouse (units, degrees, factor).
+double currentAmount(const BuilderState& state);
+// The matrix of `op` along `axis` by `amount`, to compose on the right.
+glm::dmat4 operationMatrix(Operation op, Axis axis, double amount);
+
+// The camera-to-world matrix of the view (the CAMERA record), and the
+// matrices OpenGL draws with: they match render::PinholeCamera exactly.
+glm::dmat4 viewMatrix(const BuilderState& state);
+glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far);
+
+std::string windowTitle(const BuilderState& state);
+// The key list that H shows.
+const std::vector<std::string>& helpLines();
+
+// The flat colour of object `index` in the id view, 8 bits a channel, and
+// back (-1 for the background or a colour no object has).
+glm::ivec3 idColour(std::size_t index);
+int idFromColour(int r, int g, int b);
+
+}  // namespace sfbuild

@@ -1,0 +1,235 @@
+// The builder's logic without a window: key presses and mouse events on a
+// BuilderState, saving into a fake file system.
+#include "tools/sfbuild/builder_state.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string_view>
+
+#include "libscene/scene_reader.h"
+#include "libscene/sf_writer.h"
+#include "renderer/render.h"
+
+namespace sfbuild {
+namespace {
+
+struct FakeFiles {
+  std::map<std::string, std::string> files;
+  FileSystem fs() {
+    return {[this](const std::string& n) { return files.count(n) != 0; },
+            [this](const std::string& n, const std::string& c, std::string&) {
+              files[n] = c;
+              return true;
+            }};
+  }
+};
+
+void press(BuilderState& state, std::string_view keys, FakeFiles& files) {
+  for (char c : keys) {
+    int key = c == '\n'     ? static_cast<int>(kKeyEnter)
+              : c == '\x1b' ? static_cast<int>(kKeyEscape)
+                            : c;
+    handleKey(state, key, files.fs());
+  }
+}
+
+TEST(BuilderState, OpensOnAnEmptySceneWithACamera) {
+  BuilderState state = initialState(640, 480);
+  EXPECT_TRUE(state.scene.objects.empty());
+  EXPECT_TRUE(state.scene.lights.empty());
+  EXPECT_FALSE(state.selection);
+  EXPECT_EQ(glm::dvec3(state.scene.camera.matrix[3]), glm::dvec3(0, 3, 8));
+}
+
+TEST(BuilderState, NumberKeysCreateRedObjectsAtTheOriginSelected) {
+  FakeFiles files;
+  BuilderState state = initialState(640, 480);
+  press(state, "1234", files);
+  ASSERT_EQ(state.scene.objects.size(), 4u);
+  const scene::ObjectKind kinds[] = {scene::ObjectKind::Plane, scene::ObjectKind::Cube,
+                                     scene::ObjectKind::Sphere, scene::ObjectKind::Cylinder};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(state.scene.objects[i].kind, kinds[i]);
+    EXPECT_EQ(state.scene.objects[i].material.colour, glm::dvec3(1, 0, 0));
+    EXPECT_EQ(state.scene.objects[i].matrix, glm::dmat4(1.0));
+  }
+  EXPECT_EQ(state.selection, (Selection{false, 3}));
+  press(state, "L", files);
+  ASSERT_EQ(state.scene.lights.size(), 1u);
+  EXPECT_EQ(state.selection, (Selection{true, 0}));
+}
+
+TEST(BuilderState, TypedAmountsMoveRotateAndScaleAlongTheObjectsOwnAxes) {
+  FakeFiles files;
+  BuilderState state = initialState(640, 480);
+  press(state, "3GX1.5\n", files);
+  glm::dmat4 expected(1.0);
+  expected[3] = {1.5, 0, 0, 1};
+  EXPECT_EQ(state.scene.objects[0].matrix, expected);
+  EXPECT_EQ(state.operation, Operation::None);
+  // Turned 90 degrees about its own Z, its own X points along world +Y.
+  press(state, "RZ90\nGX2\n", files);
+  glm::dvec3 position(state.scene.objects[0].matrix[3]);
+  EXPECT_NEAR(position.x, 1.5, 1e-12);
+  EXPECT_NEAR(position.y, 2.0, 1e-12);
+  // Scaling along its own X stretches it along world Y.
+  press(state, "SX3\n", files);
+  glm::dvec3 column0(state.scene.objects[0].matrix[0]);
+  EXPECT_NEAR(column0.y, 3.0, 1e-12);
+  EXPECT_NEAR(column0.x, 0.0, 1e-12);
+  // S alone scales every axis.
+  press(state, "2S0.5\n", files);
+  expected = glm::dmat4(1.0);
+  for (int k = 0; k < 3; ++k) expected[k][k] = 0.5;
+  EXPECT_EQ(state.scene.objects[1].matrix, expected);
+}
+
+TEST(BuilderState, EscapeAndRightClickCancel) {
+  FakeFiles files;
+  BuilderState state = initialState(640, 480);
+  press(state, "2GY4\x1b", files);
+  EXPECT_EQ(state.scene.objects[0].matrix, glm::dmat4(1.0));
+  press(state, "RX30", files);
+  EXPECT_NE(state.scene.objects[0].matrix, glm::dmat4(1.0));
+  handleMouseButton(state, MouseButton::Right, true, 10, 10);
+  EXPECT_EQ(state.scene.objects[0].matrix, glm::dmat4(1.0));
+  EXPECT_EQ(state.operation, Operation::None);
+  EXPECT_FALSE(state.looking);
+  // A scale by 0 cannot be confirmed.
+  press(state, "S0\n", files);
+  EXPECT_EQ(state.operation, Operation::Scale);
+  press(state, "\x1b", files);
+  EXPECT_EQ(state.scene.objects[0].matrix, glm::dmat4(1.0));
+}
+
+TEST(BuilderState, TheAmountFollowsTheMouseAndALeftClickConfirms) {
+  FakeFiles files;
+  BuilderState state = initialState(640, 480);
+  handleMouseMove(state, 100, 100);
+  press(state, "3GX", files);
+  handleMouseMove(state, 150, 120);
+  EXPECT_NEAR(state.scene.objects[0].matrix[3].x, 0.5, 1e-12);
+  EXPECT_EQ(windowTitle(state), "sfbuild | move X 0.5 units | SPHERE 1 | H: keys");
+  handleMouseButton(state, MouseButton::Left, true, 200, 120);
+  EXPECT_NEAR(state.scene.objects[0].matrix[3].x, 1.0, 1e-12);
+  EXPECT_EQ(state.operation, Operation::None);
+}
+
+TEST(BuilderState, DeleteAndColour) {
+  FakeFiles files;
+  BuilderState state = initialState(640, 480);
+  press(state, "23", files);
+  press(state, "B", files);
+  EXPECT_EQ(state.scene.objects[1].material.colour, glm::dvec3(0, 1, 0));
+  press(state, "N", files);
+  EXPECT_EQ(state.scene.objects[1].material.colour, glm::dvec3(0, 0, 1));
+  press(state, "M", files);
+  EXPECT_EQ(state.scene.objects[1].material.colour, glm::dvec3(0.5, 0, 0.5));
+  press(state, "V", files);
+  EXPECT_EQ(state.scene.objects[1].material.colour, glm::dvec3(1, 0, 0));
+  press(state, "X", files);
+  ASSERT_EQ(state.scene.objects.size(), 1u);
+  EXPECT_EQ(state.scene.objects[0].kind, scene::ObjectKind::Cube);
+  EXPECT_FALSE(state.selection);
+}
+
+TEST(BuilderState, SavesNumberedFilesAndNeverOverwrites) {
+  FakeFiles files;
+  files.files["Scene2.sf"] = "someone else's";
+  BuilderState state = initialState(640, 480);
+  press(state, "3L", files);
+  press(state, "P", files);
+  ASSERT_TRUE(files.files.count("Scene1.sf"));
+  press(state, "P", files);
+  EXPECT_EQ(files.files["Scene2.sf"], "someone else's");
+  ASSERT_TRUE(files.files.count("Scene3.sf"));
+  EXPECT_EQ(files.files["Scene1.sf"], files.files["Scene3.sf"]);
+  EXPECT_EQ(state.lastSave, "saved Scene3.sf");
+  EXPECT_NE(windowTitle(state).find("saved Scene3.sf"), std::string::npos);
+  press(state, "H", files);
+  EXPECT_NE(windowTitle(state).find("P save Scene<n>.sf"), std::string::npos);
+
+  // The file is the builder's scene, camera included; opened and saved again
+  // it is the same, byte for byte.
+  scene::ReadResult read = scene::parseScene(files.files["Scene1.sf"], "Scene1.sf");
+  ASSERT_TRUE(read.ok());
+  EXPECT_EQ(read.scene.camera.matrix, state.scene.camera.matrix);
+  EXPECT_EQ(read.scene.lights.size(), 1u);
+  EXPECT_EQ(read.scene.objects.size(), 1u);
+  FakeFiles again;
+  BuilderState reopened = stateForScene(read.scene, 640, 480);
+  press(reopened, "P", again);
+  EXPECT_EQ(again.files["Scene1.sf"], files.files["Scene1.sf"]);
+}
+
+TEST(BuilderState, ClicksPickWithTheRenderersIntersection) {
+  FakeFiles files;
+  BuilderState state = initialState(640, 480);
+  press(state, "3GX-2\nLGX2\n", files);
+  state.selection.reset();
+  // Project the centres with the builder's matrices, and click there.
+  auto pixelOf = [&](const glm::dvec3& p) {
+    glm::dvec4 clip = projectionMatrix(state, 0.05, 100) * viewMatrix(state) * glm::dvec4(p, 1);
+    glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+    return glm::dvec2((ndc.x + 1) / 2 * state.width, (1 - ndc.y) / 2 * state.height);
+  };
+  glm::dvec2 sphere = pixelOf({-2, 0, 0});
+  handleMouseButton(state, MouseButton::Left, true, sphere.x, sphere.y);
+  EXPECT_EQ(state.selection, (Selection{false, 0}));
+  glm::dvec2 light = pixelOf({2, 0, 0});
+  handleMouseButton(state, MouseButton::Left, true, light.x, light.y);
+  EXPECT_EQ(state.selection, (Selection{true, 0}));
+  handleMouseButton(state, MouseButton::Left, true, 5, 5);
+  EXPECT_FALSE(state.selection);
+}
+
+TEST(BuilderState, TheProjectionIsTheRenderersPinholeCamera) {
+  BuilderState state = initialState(800, 600);
+  handleMouseMove(state, 0, 0);
+  state.looking = true;
+  handleMouseMove(state, 37, -21);  // some turn, so that nothing lines up by chance
+  state.looking = false;
+  render::RenderSettings settings;
+  settings.width = state.width;
+  settings.height = state.height;
+  settings.verticalFovDegrees = kVerticalFovDegrees;
+  render::PinholeCamera camera(state.scene.camera, settings);
+  glm::dmat4 vp = projectionMatrix(state, 0.05, 100) * viewMatrix(state);
+  for (double x : {0.5, 100.5, 399.5, 799.5}) {
+    for (double y : {0.5, 300.5, 599.5}) {
+      render::Ray ray = camera.rayThrough(x, y);
+      glm::dvec4 clip = vp * glm::dvec4(ray.origin + 7.0 * ray.direction, 1.0);
+      glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+      EXPECT_NEAR((ndc.x + 1) / 2 * state.width, x, 1e-9);
+      EXPECT_NEAR((1 - ndc.y) / 2 * state.height, y, 1e-9);
+    }
+  }
+}
+
+TEST(BuilderState, CameraMovesWithTheMouseAndWheel) {
+  BuilderState state = initialState(640, 480);
+  glm::dmat4 before = state.scene.camera.matrix;
+  handleScroll(state, 2);
+  glm::dvec3 moved = glm::dvec3(state.scene.camera.matrix[3]) - glm::dvec3(before[3]);
+  EXPECT_NEAR(glm::length(moved), 1.0, 1e-12);
+  EXPECT_GT(glm::dot(moved, -glm::dvec3(before[2])), 0.99);
+  handleMouseButton(state, MouseButton::Middle, true, 10, 10);
+  handleMouseMove(state, 30, 10);
+  handleMouseButton(state, MouseButton::Middle, false, 30, 10);
+  EXPECT_NEAR(state.scene.camera.matrix[3].x, -0.2, 1e-12);
+  handleMouseButton(state, MouseButton::Right, true, 30, 10);
+  handleMouseMove(state, 80, 10);
+  EXPECT_GT(-state.scene.camera.matrix[2].x, 0.1);  // the mouse went right: so did the view
+}
+
+TEST(BuilderState, IdColoursRoundTrip) {
+  for (std::size_t i : {0u, 1u, 254u, 255u, 1000u}) {
+    glm::ivec3 c = idColour(i);
+    EXPECT_EQ(idFromColour(c.r, c.g, c.b), static_cast<int>(i));
+  }
+  EXPECT_EQ(idFromColour(0, 0, 0), -1);
+}
+
+}  // namespace
+}  // namespace sfbuild
