@@ -25,6 +25,7 @@ test: build
 bench: build
 	@bash bench/run.sh $(BUILD_DIR)
 	@bash bench/render_bench.sh $(BUILD_DIR)
+	@bash bench/render_suite.sh $(BUILD_DIR)
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -1,0 +1,144 @@
+// render_probe: the measurements bench/render_suite.sh needs that sfrender
+// does not print, taken with the same libraries sfrender uses.
+//
+//   render_probe time SCENE [--width W --height H --spp S --depth D --threads T]
+//       Reads SCENE (any format sfrender reads), then times apart, on one
+//       process: parsing (scene::parseScene on the file in memory), building
+//       the render scene and its BVH (render::RenderScene construction), and
+//       rendering (render::renderImage). Prints "key: value" lines:
+//       file_bytes, objects, parse_s, build_s, render_s, primary_rays,
+//       total_rays, ns_per_primary_ray (render wall time over primary rays,
+//       times the threads: CPU time per ray), peak_rss_bytes.
+//   render_probe default-scene OUT.txt
+//       Writes render::defaultScene() (the scene sfrender draws with no
+//       input) as an instruction file, materials included.
+//   render_probe compare A B
+//       RMSE and PSNR of A against B (B the reference), through OpenImageIO's
+//       ImageBufAlgo::compare, on the images' values in [0, 1]. Prints rmse,
+//       psnr_db, max_error.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include "libscene/instruction_writer.h"
+#include "libscene/scene_reader.h"
+#include "renderer/default_scene.h"
+#include "renderer/render.h"
+#include "renderer/render_scene.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+long peakRssBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6)) * 1024;
+  }
+  return 0;
+}
+
+int timeScene(const std::string& path, const render::RenderSettings& settings) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    std::cerr << "render_probe: cannot read " << path << "\n";
+    return 1;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+
+  auto t0 = Clock::now();
+  scene::ReadResult result = scene::parseScene(text, path);
+  const double parse = since(t0);
+  if (!result.ok()) {
+    std::cerr << "render_probe: " << path << " has errors\n";
+    return 1;
+  }
+  t0 = Clock::now();
+  render::RenderScene compiled(result.scene);
+  const double build = since(t0);
+  render::RenderStatistics stats;
+  t0 = Clock::now();
+  render::Image image = render::renderImage(compiled, settings, &stats);
+  const double renderSeconds = since(t0);
+  const auto total = stats.rays.primary + stats.rays.secondary + stats.rays.shadow;
+  const int threads = settings.threads > 0 ? settings.threads : 1;
+  std::printf("file_bytes: %zu\n", text.size());
+  std::printf("objects: %zu\n", result.scene.objects.size());
+  std::printf("parse_s: %.6f\n", parse);
+  std::printf("build_s: %.6f\n", build);
+  std::printf("render_s: %.6f\n", renderSeconds);
+  std::printf("primary_rays: %llu\n", static_cast<unsigned long long>(stats.rays.primary));
+  std::printf("total_rays: %llu\n", static_cast<unsigned long long>(total));
+  std::printf("ns_per_primary_ray: %.3f\n",
+              stats.rays.primary ? renderSeconds * threads * 1e9 / stats.rays.primary : 0.0);
+  std::printf("peak_rss_bytes: %ld\n", peakRssBytes());
+  return image.rgb.empty() ? 1 : 0;
+}
+
+int writeDefault(const std::string& out) {
+  scene::DiagnosticList diagnostics;
+  scene::InstructionWriteOptions options;
+  options.approximate = true;
+  auto text = scene::writeInstructionFile(render::defaultScene(), options, diagnostics);
+  if (!text) {
+    std::cerr << "render_probe: cannot write the default scene as an instruction file\n";
+    return 1;
+  }
+  std::ofstream(out, std::ios::binary) << *text;
+  return 0;
+}
+
+int compareImages(const std::string& a, const std::string& b) {
+  OIIO::ImageBuf A(a), B(b);
+  if (!A.read(0, 0, true, OIIO::TypeDesc::FLOAT) || !B.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
+    std::cerr << "render_probe: cannot read " << a << " or " << b << "\n";
+    return 1;
+  }
+  auto r = OIIO::ImageBufAlgo::compare(A, B, 1e30f, 1e30f);
+  if (A.has_error() || B.has_error()) {
+    std::cerr << "render_probe: compare failed\n";
+    return 1;
+  }
+  // OIIO's PSNR is 20 log10(1 / rms) for values in [0, 1].
+  std::printf("rmse: %.8f\n", r.rms_error);
+  std::printf("psnr_db: %.4f\n", r.rms_error > 0 ? 20.0 * std::log10(1.0 / r.rms_error) : 99.0);
+  std::printf("max_error: %.6f\n", r.maxerror);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Render measurements for bench/render_suite.sh"};
+  app.require_subcommand(1);
+  render::RenderSettings settings;
+  std::string input, output, a, b;
+  auto* timeCmd = app.add_subcommand("time", "parse, build and render times of a scene");
+  timeCmd->add_option("scene", input)->required();
+  timeCmd->add_option("--width", settings.width);
+  timeCmd->add_option("--height", settings.height);
+  timeCmd->add_option("--spp", settings.samplesPerPixel);
+  timeCmd->add_option("--depth", settings.maxDepth);
+  timeCmd->add_option("--threads", settings.threads);
+  auto* defaultCmd = app.add_subcommand("default-scene", "write the default scene");
+  defaultCmd->add_option("output", output)->required();
+  auto* compareCmd = app.add_subcommand("compare", "RMSE and PSNR of A against B");
+  compareCmd->add_option("a", a)->required();
+  compareCmd->add_option("b", b)->required();
+  CLI11_PARSE(app, argc, argv);
+  if (*timeCmd) return timeScene(input, settings);
+  if (*defaultCmd) return writeDefault(output);
+  return compareImages(a, b);
+}
