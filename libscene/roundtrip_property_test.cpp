@@ -109,6 +109,26 @@ class RandomScenes {
 
   double anyFinite() { return uniform(-1e6, 1e6); }
 
+  // A scene as an instruction file holds it: OUTPUT_FILE, a LOOK_AT camera,
+  // objects with operation lists, and random material values when asked.
+  Scene instructionScene(bool randomMaterials) {
+    Scene scene = sceneFileScene();
+    scene.outputFile = "out.ppm";
+    scene.camera.lookAt = glm::dvec3(scene.camera.matrix[3]) - glm::dvec3(scene.camera.matrix[2]);
+    for (Object& object : scene.objects) {
+      object.transforms = transformList();
+      object.matrix = composeTransform(*object.transforms);
+      if (!randomMaterials) continue;
+      for (MaterialProperty p : kMaterialProperties) {
+        double v = unit();
+        if (p == MaterialProperty::Shininess) v = 1.0 + 500.0 * v;
+        if (p == MaterialProperty::Ri) v = 1.0 + v;
+        materialValue(object.material, p) = v;
+      }
+    }
+    return scene;
+  }
+
   Scene sceneFileScene() {
     Scene s;
     s.camera.colour = {nonNegative(), anyValue(), unit()};
@@ -186,19 +206,7 @@ TEST(RoundTripProperty, SceneFilePovSceneFileIsByteIdentical) {
 TEST(RoundTripProperty, InstructionPovInstructionIsByteIdentical) {
   RandomScenes random(2718);
   for (int i = 0; i < 1000; ++i) {
-    Scene scene = random.sceneFileScene();
-    scene.outputFile = "out.ppm";
-    scene.camera.lookAt = glm::dvec3(scene.camera.matrix[3]) - glm::dvec3(scene.camera.matrix[2]);
-    for (Object& object : scene.objects) {
-      object.transforms = random.transformList();
-      object.matrix = composeTransform(*object.transforms);
-      for (MaterialProperty p : kMaterialProperties) {
-        double v = random.unit();
-        if (p == MaterialProperty::Shininess) v = 1.0 + 500.0 * v;
-        if (p == MaterialProperty::Ri) v = 1.0 + v;
-        materialValue(object.material, p) = v;
-      }
-    }
+    Scene scene = random.instructionScene(true);
     DiagnosticList diagnostics;
     std::optional<std::string> direct = writeInstructionFile(scene, {}, diagnostics);
     std::optional<std::string> pov = writePovScene(scene, {}, diagnostics);
@@ -216,13 +224,7 @@ TEST(RoundTripProperty, TransformListsSurviveInstructionSceneInstructionScene) {
   RandomScenes random(7);
   double worst = 0.0;
   for (int i = 0; i < 10000; ++i) {
-    Scene scene = random.sceneFileScene();
-    scene.outputFile = "out.ppm";
-    scene.camera.lookAt = glm::dvec3(scene.camera.matrix[3]) - glm::dvec3(scene.camera.matrix[2]);
-    for (Object& object : scene.objects) {
-      object.transforms = random.transformList();
-      object.matrix = composeTransform(*object.transforms);
-    }
+    Scene scene = random.instructionScene(false);
     // instruction -> .sf
     DiagnosticList diagnostics;
     std::optional<std::string> instructions = writeInstructionFile(scene, {}, diagnostics);
