@@ -36,6 +36,7 @@ die() {
   exit 1
 }
 log() { echo "render_bench: $*" >&2; }
+source "$root/bench/common.sh"
 
 for tool in sfgen sfrender image_compare; do
   [[ -x $bin/$tool ]] || die "$bin/$tool is missing: build first (cmake --build $build)"
@@ -49,34 +50,10 @@ case "$data/" in
   "$(cd "$root" && pwd -P)"/*) die "RENDER_BENCH_DIR $data is inside the repository" ;;
 esac
 
-build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null || true)
-[[ $build_type == Release ]] || log "warning: $build is a '${build_type:-unknown}' build, not Release"
+warn_unless_release "$build"
 
 # --- Helpers ----------------------------------------------------------------
-median() {
-  printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 }
-    END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
-}
-maximum() { printf '%s\n' "$@" | sort -g | tail -n 1; }
 calc() { awk "BEGIN { printf \"%s\", $1 }" </dev/null; }
-fmt() { awk -v v="$2" "BEGIN { printf \"%.$1f\", v }" </dev/null; }
-thousands() { printf '%s' "$1" | sed -e ':a' -e 's/\B[0-9]\{3\}\>/,&/' -e 'ta'; }
-# value KEY FILE: the value of a "key: value" line.
-value() { sed -n "s/^$1: //p" "$2" | head -n 1; }
-# From /usr/bin/time -v: the wall time in seconds ("h:mm:ss" or "m:ss.ss")
-# and the peak resident set size in MB (10^6 bytes).
-time_wall() {
-  sed -n 's/.*Elapsed (wall clock) time.*): //p' "$1" |
-    awk -F: '{ s = 0; for (i = 1; i <= NF; ++i) s = s * 60 + $i; printf "%.2f", s }'
-}
-time_cpu() {
-  awk -F': ' '/User time \(seconds\)|System time \(seconds\)/ { s += $2 } END { printf "%.2f", s }' "$1"
-}
-time_peak_mb() {
-  sed -n 's/.*Maximum resident set size (kbytes): //p' "$1" | awk '{ printf "%.1f", $1 * 1024 / 1e6 }'
-}
-# The seconds of one of POV-Ray's "... Time: 0 hours 0 minutes 2 seconds (2.457 seconds)".
-pov_seconds() { sed -n "s/.*$1 Time:.*(\([0-9.]*\) seconds).*/\1/p" "$2" | head -n 1; }
 load() { cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo unknown; }
 
 work=$(mktemp -d)

@@ -57,6 +57,7 @@ die() {
   exit 1
 }
 log() { echo "render_suite: $(date -u +%H:%M:%S) $*" >&2; }
+source "$root/bench/common.sh"
 
 for tool in sfgen sfrender sfconvert render_probe; do
   [[ -x $bin/$tool ]] || die "$bin/$tool is missing: build first (cmake --build $build)"
@@ -70,29 +71,13 @@ data=$(cd "$data" && pwd -P)
 case "$data/" in
   "$(cd "$root" && pwd -P)"/*) die "SUITE_DIR $data is inside the repository" ;;
 esac
-build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null || true)
-[[ $build_type == Release ]] || log "warning: $build is a '${build_type:-unknown}' build, not Release"
+warn_unless_release "$build"
 has_part() { [[ " $parts " == *" $1 "* ]]; }
 suite_start=$(date +%s)
 
 # --- Helpers ----------------------------------------------------------------
-median() {
-  printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 }
-    END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
-}
-maximum() { printf '%s\n' "$@" | sort -g | tail -n 1; }
+# Six significant digits: enough for the plots' data files.
 calc() { awk "BEGIN { printf \"%.6g\", $1 }" </dev/null; }
-fmt() { awk -v v="$2" "BEGIN { printf \"%.$1f\", v }" </dev/null; }
-thousands() { printf '%s' "$1" | sed -e ':a' -e 's/\B[0-9]\{3\}\>/,&/' -e 'ta'; }
-value() { sed -n "s/^$1: //p" "$2" | head -n 1; }
-time_wall() {
-  sed -n 's/.*Elapsed (wall clock) time.*): //p' "$1" |
-    awk -F: '{ s = 0; for (i = 1; i <= NF; ++i) s = s * 60 + $i; printf "%.3f", s }'
-}
-time_peak_mb() {
-  sed -n 's/.*Maximum resident set size (kbytes): //p' "$1" | awk '{ printf "%.1f", $1 * 1024 / 1e6 }'
-}
-pov_seconds() { sed -n "s/.*$1 Time:.*(\([0-9.]*\) seconds).*/\1/p" "$2" | head -n 1; }
 sf_render_s() { sed -n 's/^sfrender: .*: \([0-9.]*\) s, .*/\1/p' "$1" | head -n 1; }
 load() { cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo unknown; }
 
@@ -206,11 +191,11 @@ if has_part compare; then
           run_pov "$s-$i" "$pov" "$s-povray.ppm" "$width" "$height"
         fi
       done
-      w=$(time_wall "$work/$s-$i-sf.time")
+      w=$(time_wall "$work/$s-$i-sf.time" 3)
       rs=$(sf_render_s "$work/$s-$i-sf.log")
       [[ -n $rs ]] || die "no render time in sfrender's --stats output"
       sw+=("$w") sr+=("$rs") st+=("$(calc "$w - $rs")") sp+=("$(time_peak_mb "$work/$s-$i-sf.time")")
-      pwall=$(time_wall "$work/$s-$i-pov.time")
+      pwall=$(time_wall "$work/$s-$i-pov.time" 3)
       ptrace=$(pov_seconds Trace "$work/$s-$i-pov.log")
       [[ -n $ptrace ]] || die "no trace time in POV-Ray's statistics"
       pw+=("$pwall") ptr+=("$ptrace") pt+=("$(calc "$pwall - $ptrace")")

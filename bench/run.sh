@@ -30,6 +30,7 @@ die() {
   exit 1
 }
 log() { echo "bench: $*" >&2; }
+source "$root/bench/common.sh"
 
 for tool in sfgen read_bench; do
   [[ -x $bin/$tool ]] || die "$bin/$tool is missing: build first (cmake --build $build)"
@@ -40,8 +41,7 @@ case "$data/" in
   "$(cd "$root" && pwd -P)"/*) die "BENCH_DIR $data is inside the repository; the scene files are large" ;;
 esac
 
-build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null || true)
-[[ $build_type == Release ]] || log "warning: $build is a '${build_type:-unknown}' build, not Release"
+warn_unless_release "$build"
 
 use_pov=0
 if [[ ${BENCH_NO_POVRAY:-0} != 1 ]] && command -v povray >/dev/null 2>&1; then use_pov=1; fi
@@ -62,21 +62,9 @@ cat "$sf" >/dev/null
 [[ $use_pov == 1 ]] && cat "$pov" >/dev/null
 
 # --- Helpers ----------------------------------------------------------------
-# value KEY FILE: the value of a "key: value" line of read_bench's output.
-value() { sed -n "s/^$1: //p" "$2" | head -n 1; }
-# median of the numbers given as arguments (mean of the middle two if even).
-median() {
-  printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 }
-    END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
-}
-maximum() { printf '%s\n' "$@" | sort -g | tail -n 1; }
-minimum() { printf '%s\n' "$@" | sort -g | head -n 1; }
 # calc EXPR: floating-point arithmetic.
 calc() { awk "BEGIN { printf \"%s\", $1 }" </dev/null; }
-fmt() { awk -v v="$2" "BEGIN { printf \"%.$1f\", v }" </dev/null; }
 mb() { fmt "${2:-1}" "$(calc "$1 / 1e6")"; }
-# thousands 1234567 -> 1,234,567
-thousands() { printf '%s' "$1" | sed -e ':a' -e 's/\B[0-9]\{3\}\>/,&/' -e 'ta'; }
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
