@@ -45,16 +45,7 @@ std::vector<GeometryCase> geometryCases() {
   std::vector<GeometryCase> cases;
   cases.push_back({"primitives", primitives(1, dvec3(0), {0, 2, 8}, {0, 0, 0})});
 
-  cases.push_back({"shear", SceneBuilder()
-                                .camera({0, 1, 9}, {0, 0, 0})
-                                // y += 0.2 x tilts the plane.
-                                .add(K::Plane, translate(0, -2, 0) * shear(1, 0, 0.2))
-                                .add(K::Cube, translate(-3, 0, 0) * shear(0, 1, 0.8) *
-                                                  shear(2, 0, 0.3) * rotate(0.3, {0, 1, 0}))
-                                .add(K::Sphere, shear(0, 1, 0.9) * shear(1, 2, -0.5))
-                                .add(K::Cylinder, translate(3, 0, 0) * shear(0, 1, 0.7) *
-                                                      shear(1, 0, -0.3) * scale(0.8, 1.2, 0.8))
-                                .build()});
+  cases.push_back({"shear", shearScene()});
 
   // Negative determinants: mirrors about one axis and about all three.
   cases.push_back(

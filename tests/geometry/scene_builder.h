@@ -78,6 +78,20 @@ inline scene::Scene primitives(double s, const dvec3& at, const dvec3& eye, cons
       .build();
 }
 
+// Every kind under shear, the plane tilted by it.
+inline scene::Scene shearScene() {
+  return SceneBuilder()
+      .camera({0, 1, 9}, {0, 0, 0})
+      // y += 0.2 x tilts the plane.
+      .add(K::Plane, translate(0, -2, 0) * shear(1, 0, 0.2))
+      .add(K::Cube,
+           translate(-3, 0, 0) * shear(0, 1, 0.8) * shear(2, 0, 0.3) * rotate(0.3, {0, 1, 0}))
+      .add(K::Sphere, shear(0, 1, 0.9) * shear(1, 2, -0.5))
+      .add(K::Cylinder,
+           translate(3, 0, 0) * shear(0, 1, 0.7) * shear(1, 0, -0.3) * scale(0.8, 1.2, 0.8))
+      .build();
+}
+
 // A seeded scene of many objects under random affine maps with shear and
 // mirrors; the bits come straight from mt19937_64, whose output the
 // standard fixes, so the scene is the same on every platform.

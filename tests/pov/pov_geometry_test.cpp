@@ -56,15 +56,7 @@ CrossCase make(std::string name, scene::Scene scene, double fov = 60.0, int widt
 std::vector<CrossCase> cases() {
   std::vector<CrossCase> c;
   c.push_back(make("primitives", primitives(1, dvec3(0), {0, 2, 8}, {0, 0, 0})));
-  c.push_back(make("shear", SceneBuilder()
-                                .camera({0, 1, 9}, {0, 0, 0})
-                                .add(K::Plane, translate(0, -2, 0) * shear(1, 0, 0.2))
-                                .add(K::Cube, translate(-3, 0, 0) * shear(0, 1, 0.8) *
-                                                  shear(2, 0, 0.3) * rotate(0.3, {0, 1, 0}))
-                                .add(K::Sphere, shear(0, 1, 0.9) * shear(1, 2, -0.5))
-                                .add(K::Cylinder, translate(3, 0, 0) * shear(0, 1, 0.7) *
-                                                      shear(1, 0, -0.3) * scale(0.8, 1.2, 0.8))
-                                .build()));
+  c.push_back(make("shear", shearScene()));
   c.push_back(
       make("mirrors",
            SceneBuilder()
