@@ -10,7 +10,11 @@ namespace render {
 namespace {
 
 constexpr int kBins = 16;
-constexpr std::uint32_t kMaxLeafItems = 4;
+// One object a leaf: a leaf's box then bounds its object alone, so the box
+// test, in two lanes of SSE2 with its sibling, culls before the exact object
+// test (several times its cost) runs; leaves of up to 4 objects made 8% more
+// instructions on floor-1000 (docs/PERFORMANCE.md, "Where the time goes").
+constexpr std::uint32_t kMaxLeafItems = 1;
 // Past this depth only balanced median splits are made, which keeps the
 // tree within the traversal stack (Bvh::kStackSize) for any item count.
 constexpr int kMaxDepth = 64;
@@ -51,8 +55,8 @@ std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec
     centreBounds.extend(centres[items_[i]]);
   }
   for (int i = 0; i < 3; ++i) {
-    nodes_[index].lo[i] = roundDown(bounds.lo[i]);
-    nodes_[index].hi[i] = roundUp(bounds.hi[i]);
+    nodes_[index].planes[i] = roundDown(bounds.lo[i]);
+    nodes_[index].planes[3 + i] = roundUp(bounds.hi[i]);
   }
   std::uint32_t count = end - begin;
 

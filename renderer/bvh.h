@@ -6,6 +6,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "renderer/bounds.h"
 
 namespace render {
@@ -14,8 +18,10 @@ namespace render {
 // it still contains them (a ray can only meet more boxes, never fewer), which
 // puts twice as many nodes in each cache line as double boxes did.
 struct BvhNode {
-  float lo[3] = {0.0f, 0.0f, 0.0f};
-  float hi[3] = {0.0f, 0.0f, 0.0f};
+  // The low corner (x, y, z), then the high one: one array, so that a ray
+  // picks the planes it meets first and last on each axis by an index
+  // worked out once from its direction's signs (Bvh::NodeRay).
+  float planes[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   // Interior: index of the second child (the first follows this node).
   // Leaf: index of the first item in `Bvh::items`.
   std::uint32_t offset = 0;
@@ -37,55 +43,151 @@ class Bvh {
 
   // Calls visit(item) for every item whose leaf box the ray meets within
   // [0, tMax]; visit returns the new tMax (smaller after a hit, to prune) or
-  // a negative value to stop at once (for any-hit queries).
+  // a negative value to stop at once (for any-hit queries). Items are
+  // visited depth first, the child on the ray's near side of the split axis
+  // first, whatever boxes are met: the nearest hit and how ties between
+  // equal distances fall do not depend on the order in which boxes prune.
   template <typename Visit>
   void traverse(const BoxRay& ray, double tMax, Visit&& visit) const {
     if (nodes_.empty()) return;
-    bool negative[3] = {ray.inverseDirection.x < 0.0, ray.inverseDirection.y < 0.0,
-                        ray.inverseDirection.z < 0.0};
-    std::uint32_t stack[kStackSize];
+    NodeRay r(ray);
+    double tEntry = 0.0;
+    if (!hitsNode(nodes_[0], r, tMax, tEntry)) return;
+    // Both children are tested at their parent (two independent box tests
+    // overlap in the pipeline, and a missed child is never pushed); the far
+    // one waits on the stack with its entry distance, and is dropped when
+    // popped if a hit found since lies nearer.
+    struct Pending {
+      std::uint32_t node;
+      double tEntry;
+    };
+    Pending stack[kStackSize];
     int top = 0;
     std::uint32_t current = 0;
     for (;;) {
       const BvhNode& node = nodes_[current];
-      if (hitsNode(node, ray, tMax)) {
-        if (node.count > 0) {
-          for (std::uint32_t i = 0; i < node.count; ++i) {
-            tMax = visit(items_[node.offset + i]);
-            if (tMax < 0.0) return;
-          }
-        } else {
-          // Visit the child on the ray's near side first.
-          if (negative[node.axis]) {
-            stack[top++] = current + 1;
-            current = node.offset;
-          } else {
-            stack[top++] = node.offset;
-            current = current + 1;
-          }
+      if (node.count > 0) {
+        for (std::uint32_t i = 0; i < node.count; ++i) {
+          tMax = visit(items_[node.offset + i]);
+          if (tMax < 0.0) return;
+        }
+      } else {
+        std::uint32_t nearChild = current + 1;
+        std::uint32_t farChild = node.offset;
+        if (r.negative[node.axis]) std::swap(nearChild, farChild);
+        double tEntries[2];
+        int hits = hitsChildren(nodes_[nearChild], nodes_[farChild], r, tMax, tEntries);
+        bool hitNear = hits & 1;
+        bool hitFar = hits & 2;
+        if (hitNear) {
+          if (hitFar) stack[top++] = Pending{farChild, tEntries[1]};
+          current = nearChild;
+          continue;
+        }
+        if (hitFar) {
+          current = farChild;
           continue;
         }
       }
-      if (top == 0) return;
-      current = stack[--top];
+      for (;;) {
+        if (top == 0) return;
+        const Pending& next = stack[--top];
+        // tEntry is a lower bound on where the ray enters the box (see
+        // hitsNode), so a box entered beyond tMax holds nothing nearer.
+        if (next.tEntry <= tMax) {
+          current = next.node;
+          break;
+        }
+      }
     }
   }
 
  private:
+  // The ray as the node test wants it, worked out once per ray: per axis,
+  // the index in BvhNode::planes of the plane it meets first and last (by
+  // the sign of its direction), and with SSE2 the origin and inverse
+  // direction in both lanes of a vector.
+  struct NodeRay {
+    explicit NodeRay(const BoxRay& ray)
+        : origin(ray.origin), inverseDirection(ray.inverseDirection) {
+      for (int i = 0; i < 3; ++i) {
+        negative[i] = ray.inverseDirection[i] < 0.0;
+        nearPlane[i] = negative[i] ? 3 + i : i;
+        farPlane[i] = negative[i] ? i : 3 + i;
+#if defined(__SSE2__)
+        originBoth[i] = _mm_set1_pd(ray.origin[i]);
+        inverseBoth[i] = _mm_set1_pd(ray.inverseDirection[i]);
+#endif
+      }
+    }
+    glm::dvec3 origin;
+    glm::dvec3 inverseDirection;
+    bool negative[3];
+    int nearPlane[3];
+    int farPlane[3];
+#if defined(__SSE2__)
+    __m128d originBoth[3];
+    __m128d inverseBoth[3];
+#endif
+  };
+
   // hitsBox for a node's float box; the arithmetic is in double, where each
-  // float converts exactly.
-  static bool hitsNode(const BvhNode& node, const BoxRay& r, double tMax) {
+  // float converts exactly. The slab distances are those of hitsBox, with
+  // the near and far planes picked by the direction's sign instead of a
+  // swap: the same numbers wherever they are not NaN (multiplying by a
+  // positive number keeps order, by a negative one reverses it), and a NaN
+  // (0 * infinity, a ray in a slab's plane) is ignored. (The swap kept a
+  // NaN near distance in place, so a ray with a direction of -0 lying in a
+  // box's low plane took the far plane's -infinity and missed the box; here
+  // it meets it, as it does with +0: only ever more boxes met.) All three
+  // axes are worked out before the one test, rather than a branch per axis:
+  // the answer is the same, since tMin only grows and tMax only shrinks.
+  // On a hit, tEntry is the ray's entry distance (at least 0), a lower
+  // bound, as the far distances alone are widened.
+  static bool hitsNode(const BvhNode& node, const NodeRay& r, double tMax, double& tEntry) {
     double tMin = 0.0;
     for (int i = 0; i < 3; ++i) {
-      double tNear = (static_cast<double>(node.lo[i]) - r.origin[i]) * r.inverseDirection[i];
-      double tFar = (static_cast<double>(node.hi[i]) - r.origin[i]) * r.inverseDirection[i];
-      if (tNear > tFar) std::swap(tNear, tFar);
+      double nearPlane = node.planes[r.nearPlane[i]];
+      double farPlane = node.planes[r.farPlane[i]];
+      double tNear = (nearPlane - r.origin[i]) * r.inverseDirection[i];
+      double tFar = (farPlane - r.origin[i]) * r.inverseDirection[i];
       tFar *= 1.0 + 2.0 * gamma(3);
       tMin = tNear > tMin ? tNear : tMin;
       tMax = tFar < tMax ? tFar : tMax;
-      if (tMin > tMax) return false;
     }
-    return true;
+    tEntry = tMin;
+    return tMin <= tMax;
+  }
+
+  // hitsNode for two boxes at once (bit 0: a, bit 1: b; their tEntry in
+  // tEntries): with SSE2, in two-lane vectors of doubles, one lane a box,
+  // with the same operations on the same numbers as hitsNode, so the same
+  // answers, bit for bit. _mm_max_pd(x, m) is x > m ? x : m and
+  // _mm_min_pd(x, m) is x < m ? x : m, lane by lane, so a NaN lane of x
+  // leaves m as it was, as in hitsNode.
+  static int hitsChildren(const BvhNode& a, const BvhNode& b, const NodeRay& r, double tMax,
+                          double tEntries[2]) {
+#if defined(__SSE2__)
+    __m128d tMinV = _mm_setzero_pd();
+    __m128d tMaxV = _mm_set1_pd(tMax);
+    const __m128d widen = _mm_set1_pd(1.0 + 2.0 * gamma(3));
+    for (int i = 0; i < 3; ++i) {
+      int n = r.nearPlane[i];
+      int f = r.farPlane[i];
+      __m128d nearPlanes = _mm_cvtps_pd(_mm_setr_ps(a.planes[n], b.planes[n], 0.0f, 0.0f));
+      __m128d farPlanes = _mm_cvtps_pd(_mm_setr_ps(a.planes[f], b.planes[f], 0.0f, 0.0f));
+      __m128d tNear = _mm_mul_pd(_mm_sub_pd(nearPlanes, r.originBoth[i]), r.inverseBoth[i]);
+      __m128d tFar =
+          _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(farPlanes, r.originBoth[i]), r.inverseBoth[i]), widen);
+      tMinV = _mm_max_pd(tNear, tMinV);
+      tMaxV = _mm_min_pd(tFar, tMaxV);
+    }
+    _mm_storeu_pd(tEntries, tMinV);
+    return _mm_movemask_pd(_mm_cmple_pd(tMinV, tMaxV));
+#else
+    return (hitsNode(a, r, tMax, tEntries[0]) ? 1 : 0) |
+           (hitsNode(b, r, tMax, tEntries[1]) ? 2 : 0);
+#endif
   }
 
   std::uint32_t build(const std::vector<Bounds>& boxes, std::vector<glm::dvec3>& centres,

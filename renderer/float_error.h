@@ -3,7 +3,9 @@
 // much as the hit point may be wrong, at any scale.
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
@@ -17,11 +19,25 @@ constexpr double gamma(int n) {
   return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon);
 }
 
+// std::nextafter(v, +infinity) and (v, -infinity), by stepping the bits as
+// glibc does, inline: nextafter is a library call, made for every new ray's
+// origin. The same results: zero steps to the smallest subnormal of the
+// direction's sign, NaN stays, an infinity in the direction stays, and any
+// other value moves one step (a negative one by one bit down in magnitude,
+// so -denorm_min goes to -0, and -infinity to -max).
 inline double nextUp(double v) {
-  return std::nextafter(v, std::numeric_limits<double>::infinity());
+  if (v != v || v == std::numeric_limits<double>::infinity()) return v;
+  if (v == 0.0) return std::numeric_limits<double>::denorm_min();
+  auto bits = std::bit_cast<std::uint64_t>(v);
+  bits = v > 0.0 ? bits + 1 : bits - 1;
+  return std::bit_cast<double>(bits);
 }
 inline double nextDown(double v) {
-  return std::nextafter(v, -std::numeric_limits<double>::infinity());
+  if (v != v || v == -std::numeric_limits<double>::infinity()) return v;
+  if (v == 0.0) return -std::numeric_limits<double>::denorm_min();
+  auto bits = std::bit_cast<std::uint64_t>(v);
+  bits = v < 0.0 ? bits + 1 : bits - 1;
+  return std::bit_cast<double>(bits);
 }
 
 inline glm::dvec3 abs(const glm::dvec3& v) {

@@ -160,20 +160,29 @@ std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySo
   return finishHit(best, ray, bestCandidate);
 }
 
-bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax) const {
-  for (std::uint32_t plane : planes_) {
-    if (intersectObject(plane, ray, source, tMax)) return true;
+bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax,
+                         std::uint32_t* lastOccluder) const {
+  if (lastOccluder && *lastOccluder < objects_.size() &&
+      intersectObject(*lastOccluder, ray, source, tMax)) {
+    return true;
   }
-  bool found = false;
+  for (std::uint32_t plane : planes_) {
+    if (intersectObject(plane, ray, source, tMax)) {
+      if (lastOccluder) *lastOccluder = plane;
+      return true;
+    }
+  }
+  std::uint32_t found = RaySource::kNone;
   BoxRay boxRay{ray.origin, 1.0 / ray.direction};
   bvh_.traverse(boxRay, tMax, [&](std::uint32_t item) {
     if (intersectObject(bounded_[item], ray, source, tMax)) {
-      found = true;
+      found = bounded_[item];
       return -1.0;
     }
     return tMax;
   });
-  return found;
+  if (lastOccluder) *lastOccluder = found;
+  return found != RaySource::kNone;
 }
 
 std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) const {

@@ -74,8 +74,15 @@ class RenderScene {
   std::optional<Hit> closestHit(const Ray& ray, const RaySource& source,
                                 double tMax = std::numeric_limits<double>::infinity()) const;
   // Whether any surface lies at 0 < t < tMax (shadow rays: transparent
-  // objects cast shadows too).
-  bool anyHit(const Ray& ray, const RaySource& source, double tMax) const;
+  // objects cast shadows too). `lastOccluder`, when given, is a hint kept by
+  // the caller: the object tested first (neighbouring shadow rays toward one
+  // light are mostly blocked by the same object), then set to the object
+  // that blocked this ray, or to none (RaySource::kNone) when nothing did,
+  // so that unblocked rays, most of them, pay no extra test. The answer
+  // does not depend on it: it is whether any object blocks, and the hint
+  // only finds one sooner.
+  bool anyHit(const Ray& ray, const RaySource& source, double tMax,
+              std::uint32_t* lastOccluder = nullptr) const;
 
   // The same queries without the hierarchy: every object is tested. The
   // reference that the BVH must agree with.

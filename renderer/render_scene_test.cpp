@@ -86,6 +86,54 @@ TEST(ReIntersection, ASpawnedRayNeverMeetsItsSurfaceAgain) {
   EXPECT_EQ(hits, 1000);
 }
 
+TEST(Bvh, AnyHitAgreesWithBruteForceWhateverItsHint) {
+  // Segments of random length among 1,000 objects: anyHit through the
+  // hierarchy answers as the brute-force search does, with no hint, with
+  // the hint it keeps, and with a wrong one; the hint it leaves names a
+  // blocking object, or none when nothing blocks.
+  RandomTransforms random(7);
+  scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+  double spread = 40.0;
+  for (int i = 0; i < 1000; ++i) {
+    ObjectKind kind = i == 0 ? ObjectKind::Plane : static_cast<ObjectKind>(1 + i % 3);
+    s.objects.push_back(
+        object(kind, {scale(random.uniform(0.2, 2), random.uniform(0.2, 2), random.uniform(0.2, 2)),
+                      rotateY(random.uniform(0, 3)), rotateX(random.uniform(0, 3)),
+                      translate(random.uniform(-spread, spread), random.uniform(-spread, spread),
+                                random.uniform(-spread, spread))}));
+  }
+  RenderScene compiled(s);
+  std::uint32_t kept = RaySource::kNone;
+  int blocked = 0;
+  for (int r = 0; r < 20000; ++r) {
+    glm::dvec3 origin(random.uniform(-1.5, 1.5) * spread, random.uniform(-1.5, 1.5) * spread,
+                      random.uniform(-1.5, 1.5) * spread);
+    glm::dvec3 d = random.direction();
+    if (r % 7 == 0) d = glm::dvec3(r % 2 ? 1.0 : -0.0, 0.0, -0.0);  // axis-parallel, signed zeros
+    Ray ray{origin, d};
+    double tMax = random.uniform(0.0, 3.0 * spread);
+    bool expected = compiled.closestHitBruteForce(ray, RaySource{}, tMax).has_value();
+    blocked += expected;
+    ASSERT_EQ(compiled.anyHit(ray, RaySource{}, tMax), expected) << "ray " << r;
+    ASSERT_EQ(compiled.anyHit(ray, RaySource{}, tMax, &kept), expected) << "ray " << r;
+    if (expected) {
+      ASSERT_NE(kept, RaySource::kNone) << "ray " << r;
+      // The object it names blocks this segment on its own.
+      scene::Scene one = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+      one.objects.push_back(s.objects[kept]);
+      ASSERT_TRUE(RenderScene(one).closestHitBruteForce(ray, RaySource{}, tMax).has_value())
+          << "ray " << r;
+    } else {
+      ASSERT_EQ(kept, RaySource::kNone) << "ray " << r;
+    }
+    std::uint32_t wrong = static_cast<std::uint32_t>(r % 1000);
+    ASSERT_EQ(compiled.anyHit(ray, RaySource{}, tMax, &wrong), expected) << "ray " << r;
+  }
+  // Both answers occur often enough to matter.
+  EXPECT_GT(blocked, 2000);
+  EXPECT_LT(blocked, 18000);
+}
+
 TEST(Bvh, HitsAreIdenticalToBruteForce) {
   // A million rays in all, spread so that brute force stays affordable:
   // fewer rays for the larger scenes.
@@ -147,8 +195,8 @@ TEST(RestingOnAPlane, NoLightGapAtTheContact) {
       ASSERT_TRUE(hit.has_value());
       ASSERT_EQ(hit->object, 0u);
       Tracer tracer(compiled, 0);
-      RayCounts counts;
-      EXPECT_TRUE(tracer.shadowed(*hit, s.lights[0].position(), counts))
+      TraceContext context;
+      EXPECT_TRUE(tracer.shadowed(*hit, s.lights[0].position(), context))
           << objectKindName(kind) << " gap " << gap;
     }
   }
@@ -234,8 +282,8 @@ TEST(LightOnASurface, TheSurfaceItLiesOnCastsNoShadow) {
     std::optional<Hit> under = compiled.closestHit(Ray{{0.0, 0.5, 0.0}, {0, 1, 0}}, RaySource{});
     ASSERT_TRUE(under.has_value());
     Tracer tracer(compiled, 0);
-    RayCounts counts;
-    EXPECT_FALSE(tracer.shadowed(*under, s.lights[0].position(), counts)) << onCube;
+    TraceContext context;
+    EXPECT_FALSE(tracer.shadowed(*under, s.lights[0].position(), context)) << onCube;
   }
 }
 

@@ -75,8 +75,9 @@ bool refractDirection(const glm::dvec3& d, const glm::dvec3& n, double n1, doubl
   return true;
 }
 
-bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, RayCounts& counts) const {
-  ++counts.shadow;
+bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, TraceContext& context,
+                      std::uint32_t* lastOccluder) const {
+  ++context.counts.shadow;
   Ray ray;
   glm::dvec3 toLight = light - hit.point;
   ray.origin = offsetRayOrigin(hit.point, hit.pointError, hit.normal, toLight);
@@ -93,21 +94,26 @@ bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, RayCounts& counts
   if (length == 0.0) return false;
   double tMax = 1.0 - gamma(32) * extent / length;
   if (tMax <= 0.0) return false;
-  return scene_.anyHit(ray, source, tMax);
+  return scene_.anyHit(ray, source, tMax, lastOccluder);
 }
 
 glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
-                                const glm::dvec3& toViewer, RayCounts& counts) const {
+                                const glm::dvec3& toViewer, TraceContext& context) const {
   const scene::Material& m = scene_.objects()[hit.object].material;
   glm::dvec3 colour(0.0);
-  for (const RenderLight& light : scene_.lights()) {
+  const std::vector<RenderLight>& lights = scene_.lights();
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const RenderLight& light = lights[i];
     colour += m.colour * light.colour * m.ambient;
     glm::dvec3 l = light.position - hit.point;
     double distance = glm::length(l);
     if (!(distance > 0.0)) continue;
     l /= distance;
     double cosine = glm::dot(l, normal);
-    if (cosine <= 0.0 || shadowed(hit, light.position, counts)) continue;
+    if (cosine <= 0.0 || shadowed(hit, light.position, context,
+                                  &context.lastOccluder[i % TraceContext::kOccluderSlots])) {
+      continue;
+    }
     colour += m.colour * light.colour * (m.diffuse * cosine);
     glm::dvec3 reflected = glm::reflect(-l, normal);
     double highlight = std::max(0.0, glm::dot(reflected, toViewer));
@@ -120,7 +126,7 @@ glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
 
 template <bool kRefraction>
 glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce,
-                             MediumStack& media, RayCounts& counts) const {
+                             MediumStack& media, TraceContext& context) const {
   if (bounce > maxDepth_) return glm::dvec3(0.0);
   std::optional<Hit> found = scene_.closestHit(ray, source);
   if (!found) return glm::dvec3(0.0);
@@ -131,26 +137,26 @@ glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce
   glm::dvec3 d = glm::normalize(ray.direction);
   // The normal that faces the incoming ray.
   glm::dvec3 n = glm::dot(hit.normal, d) > 0.0 ? -hit.normal : hit.normal;
-  glm::dvec3 colour = shadeSurface(hit, n, -d, counts);
+  glm::dvec3 colour = shadeSurface(hit, n, -d, context);
 
   glm::dvec3 reflected(0.0);
   if (m.reflectivity > 0.0) {
-    ++counts.secondary;
+    ++context.counts.secondary;
     glm::dvec3 r = glm::reflect(d, n);
     reflected = m.reflectivity * traceWith<kRefraction>(spawnFrom(hit, r), leaving(hit, r),
-                                                        bounce + 1, media, counts);
+                                                        bounce + 1, media, context);
   }
   if constexpr (!kRefraction) {
     return colour + reflected;
   } else {
     if (m.transparency <= 0.0) return colour + reflected;
-    return colour + refract(hit, d, n, bounce, media, reflected, counts);
+    return colour + refract(hit, d, n, bounce, media, reflected, context);
   }
 }
 
 glm::dvec3 Tracer::refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3& n, int bounce,
                            const MediumStack& media, const glm::dvec3& reflected,
-                           RayCounts& counts) const {
+                           TraceContext& context) const {
   const RenderObject& object = scene_.objects()[hit.object];
   const scene::Material& m = object.material;
 
@@ -158,11 +164,11 @@ glm::dvec3 Tracer::refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3
   double reflectance = 1.0;
   if (object.kind == scene::ObjectKind::Plane) {
     // A plane is a sheet, not a solid: light passes it without bending.
-    ++counts.secondary;
+    ++context.counts.secondary;
     reflectance = 0.0;
     MediumStack same = media;
     refracted = m.transparency *
-                traceWith<true>(spawnFrom(hit, d), leaving(hit, d), bounce + 1, same, counts);
+                traceWith<true>(spawnFrom(hit, d), leaving(hit, d), bounce + 1, same, context);
   } else {
     // The innermost solid the ray is in gives n1; entering this one, n2 is
     // its own index, and leaving it, the index of what contains it.
@@ -178,9 +184,9 @@ glm::dvec3 Tracer::refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3
     reflectance = schlickReflectance(n1, n2, -glm::dot(d, n));
     glm::dvec3 t;
     if (refractDirection(d, n, n1, n2, t)) {
-      ++counts.secondary;
+      ++context.counts.secondary;
       refracted = m.transparency *
-                  traceWith<true>(spawnFrom(hit, t), leaving(hit, t), bounce + 1, after, counts);
+                  traceWith<true>(spawnFrom(hit, t), leaving(hit, t), bounce + 1, after, context);
     }
   }
   // With both, Schlick's reflectance shares the light between them.
@@ -189,8 +195,8 @@ glm::dvec3 Tracer::refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3
 }
 
 template glm::dvec3 Tracer::traceWith<true>(const Ray&, const RaySource&, int, MediumStack&,
-                                            RayCounts&) const;
+                                            TraceContext&) const;
 template glm::dvec3 Tracer::traceWith<false>(const Ray&, const RaySource&, int, MediumStack&,
-                                             RayCounts&) const;
+                                             TraceContext&) const;
 
 }  // namespace render

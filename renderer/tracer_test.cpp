@@ -20,8 +20,8 @@ glm::dvec3 traceCentre(const scene::Scene& s, int maxDepth = 5, glm::dvec3 origi
   RenderScene compiled(s);
   Tracer tracer(compiled, maxDepth);
   MediumStack media;
-  RayCounts counts;
-  return tracer.trace(Ray{origin, direction}, RaySource{}, 0, media, counts);
+  TraceContext context;
+  return tracer.trace(Ray{origin, direction}, RaySource{}, 0, media, context);
 }
 
 void expectColour(const glm::dvec3& got, const glm::dvec3& want, double tolerance = 1e-12) {

@@ -121,9 +121,12 @@ inline bool unitQuadricRoots(const Vec& o, const Vec& d, double& t0, double& t1)
 glm::dvec3 spanFaceNormal(scene::ObjectKind kind, SpanFace face, const glm::dvec3& origin,
                           const glm::dvec3& direction, double t);
 
-// Inline: it runs for every object a ray's search reaches.
-inline SpanDistances unitShapeDistances(scene::ObjectKind kind, const glm::dvec3& o,
-                                        const glm::dvec3& d) {
+// Inline, and forced so (GCC otherwise keeps one out-of-line copy and calls
+// it, with the span going back through memory): it runs for every object a
+// ray's search reaches.
+[[gnu::always_inline]] inline SpanDistances unitShapeDistances(scene::ObjectKind kind,
+                                                               const glm::dvec3& o,
+                                                               const glm::dvec3& d) {
   SpanDistances span;
   switch (kind) {
     case scene::ObjectKind::Plane:
