@@ -100,6 +100,8 @@ constexpr std::array kCodes = {
     CodeEntry{DiagnosticCode::PovIgnored, "pov-ignored"},
     CodeEntry{DiagnosticCode::PovLoss, "pov-loss"},
     CodeEntry{DiagnosticCode::PovDegenerate, "pov-degenerate"},
+    CodeEntry{DiagnosticCode::FileTooLarge, "file-too-large"},
+    CodeEntry{DiagnosticCode::TooManyObjects, "too-many-objects"},
 };
 
 }  // namespace

@@ -115,6 +115,9 @@ enum class DiagnosticCode : std::uint16_t {
   PovIgnored,
   PovLoss,
   PovDegenerate,
+  // Limits on what one input may cost (ReadOptions).
+  FileTooLarge,
+  TooManyObjects,
 };
 
 // Every code, in declaration order: for documentation and coverage tests.

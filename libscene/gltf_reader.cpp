@@ -21,6 +21,8 @@
 #include "libscene/gltf_mapping.h"
 #include "libscene/mesh_fit.h"
 #include "libscene/number.h"
+#include "libscene/reader_support.h"
+#include "libscene/scene_reader.h"
 #include "libscene/transform.h"
 #include "libscene/validation.h"
 
@@ -117,7 +119,9 @@ bool isInside(const fs::path& folder, const fs::path& path) {
 
 // Why a buffer's URI may not be followed, or nothing when it may: only a
 // relative path to a regular file inside the glTF's own folder is read.
-std::optional<std::string> uriProblem(const std::string& uri, const fs::path& folder) {
+// `target` is then the file it names.
+std::optional<std::string> uriProblem(const std::string& uri, const fs::path& folder,
+                                      fs::path& target) {
   if (uri.starts_with("data:")) return std::nullopt;
   std::optional<std::string> decoded = percentDecoded(uri);
   if (!decoded) return "is not a valid URI";
@@ -136,11 +140,10 @@ std::optional<std::string> uriProblem(const std::string& uri, const fs::path& fo
   std::error_code ec;
   fs::path base = fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder), ec);
   if (ec || base.empty()) return "cannot be resolved";
-  fs::path target = fs::weakly_canonical(base / relative, ec);
+  target = fs::weakly_canonical(base / relative, ec);
   if (ec || !isInside(base, target)) return "leads out of the glTF's folder (through a link)";
   if (!fs::exists(target, ec)) return "names a file that does not exist";
   if (!fs::is_regular_file(target, ec)) return "names something that is not a regular file";
-  if (fs::file_size(target, ec) > kMaxGltfBytes) return "names a file larger than 1 GiB";
   return std::nullopt;
 }
 
@@ -148,6 +151,7 @@ std::optional<std::string> uriProblem(const std::string& uri, const fs::path& fo
 // elsewhere, nor expand `~` or `$VAR`, nor write.
 struct Confinement {
   fs::path folder;
+  std::uint64_t maxFileSize = kDefaultMaxFileSize;
 };
 
 bool confinedExists(const std::string& path, void* user) {
@@ -169,7 +173,9 @@ bool confinedRead(std::vector<unsigned char>* out, std::string* err, const std::
   }
   std::error_code ec;
   std::uintmax_t size = fs::file_size(path, ec);
-  if (ec || size > kMaxGltfBytes) {
+  // Checked before, and again here in case the file grew since.
+  const auto* c = static_cast<const Confinement*>(user);
+  if (ec || size > c->maxFileSize) {
     if (err) *err += "cannot read '" + path + "'\n";
     return false;
   }
@@ -341,8 +347,31 @@ std::string deviationText(double value) {
   return text;
 }
 
+// Names come from the file: control bytes (a terminal's escape sequences)
+// are shown as \xNN and a long name is cut, so that a message stays one
+// harmless line.
 std::string quoted(const std::string& name) {
-  return name.empty() ? "" : " '" + name + "'";
+  if (name.empty()) return "";
+  constexpr std::size_t kMaxShown = 80;
+  // The cut falls between UTF-8 characters, not inside one.
+  std::size_t end = std::min(name.size(), kMaxShown);
+  while (end < name.size() && end > 0 && (static_cast<unsigned char>(name[end]) & 0xC0) == 0x80) {
+    --end;
+  }
+  std::string shown;
+  for (std::size_t i = 0; i < end; ++i) {
+    unsigned char c = static_cast<unsigned char>(name[i]);
+    if (c < 0x20 || c == 0x7F) {
+      constexpr char kHex[] = "0123456789ABCDEF";
+      shown += "\\x";
+      shown += kHex[c >> 4];
+      shown += kHex[c & 15];
+    } else {
+      shown += static_cast<char>(c);
+    }
+  }
+  if (end < name.size()) shown += "...";
+  return " '" + shown + "'";
 }
 
 std::string nodeLabel(const tinygltf::Model& model, int node) {
@@ -385,7 +414,12 @@ class Importer {
       : model_(model),
         scene_(result.scene),
         out_(result.diagnostics),
-        loss_(options.noLoss ? Severity::Error : Severity::Warning) {}
+        loss_(options.noLoss ? Severity::Error : Severity::Warning),
+        maxObjects_(options.maxObjects),
+        maxVertices_(options.maxGltfVertices),
+        maxIndices_(options.maxGltfVertices > std::numeric_limits<std::size_t>::max() / 3
+                        ? std::numeric_limits<std::size_t>::max()
+                        : 3 * options.maxGltfVertices) {}
 
   void run() {
     if (!checkIndices()) return;
@@ -540,7 +574,7 @@ class Importer {
     std::vector<std::pair<int, glm::dmat4>> stack;
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
       stack.emplace_back(*it, glm::dmat4(1.0));
-    while (!stack.empty() && !out_.full()) {
+    while (!stack.empty() && !out_.full() && !stopped_) {
       auto [node, parent] = stack.back();
       stack.pop_back();
       if (seen[node]) {
@@ -560,6 +594,9 @@ class Importer {
 
   void visit(int index, const glm::dmat4& world) {
     const tinygltf::Node& node = model_.nodes[index];
+    // A node holds at most one light, counted here, and one mesh, whose
+    // objects are counted as they are added (roomForOne).
+    if (nodeLight(index) >= 0 && !roomForOne(index)) return;
     if (std::optional<RecordExtras> extras = recordExtras(node.extras_json_string)) {
       if (useExtras(index, world, *extras)) return;
       out_.note(DiagnosticCode::GltfExtrasStale, {},
@@ -616,7 +653,7 @@ class Importer {
     object.matrix = extras.matrix;
     object.transforms = extras.transforms;
     object.material = material(model_.meshes[node.mesh].primitives[0].material, kind);
-    scene_.objects.push_back(std::move(object));
+    if (roomForOne(index)) scene_.objects.push_back(std::move(object));
     return true;
   }
 
@@ -796,10 +833,12 @@ class Importer {
 
   // The accessor's elements as doubles, after every bound is checked; an
   // error (or for what is valid but unsupported, a skip) leaves it empty.
+  // `limit` bounds the elements of this role over the whole file, of which
+  // `read` have been read before; a read adds its own.
   std::optional<std::vector<double>> readAccessor(int index, int wantType,
                                                   std::initializer_list<int> componentTypes,
-                                                  const std::string& role, std::size_t maxCount,
-                                                  bool& skipped) {
+                                                  const std::string& role, std::size_t limit,
+                                                  std::size_t& read, bool& skipped) {
     const tinygltf::Accessor& a = model_.accessors[index];
     std::string label = "accessor " + std::to_string(index) + " (" + role + ")";
     if (a.sparse.isSparse) {
@@ -828,10 +867,12 @@ class Importer {
       out_.error(DiagnosticCode::GltfBadAccessor, {}, label + " has a count of 0");
       return std::nullopt;
     }
-    if (a.count > maxCount) {
-      out_.error(DiagnosticCode::GltfTooLarge, {},
-                 label + " has " + std::to_string(a.count) + " elements; at most " +
-                     std::to_string(maxCount) + " are read");
+    if (a.count > limit - read) {
+      out_.error(
+          DiagnosticCode::GltfTooLarge, {},
+          label + " has " + std::to_string(a.count) + " elements; at most " +
+              std::to_string(limit) + " are read" +
+              (read ? " from a file, and " + std::to_string(read) + " were read before it" : ""));
       return std::nullopt;
     }
     const tinygltf::BufferView& view = model_.bufferViews[a.bufferView];
@@ -906,6 +947,7 @@ class Importer {
         }
       }
     }
+    read += a.count;
     return values;
   }
 
@@ -939,7 +981,7 @@ class Importer {
     bool skipped = false;
     std::optional<std::vector<double>> xyz =
         readAccessor(position->second, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
-                     "POSITION", kMaxFitVertices, skipped);
+                     "POSITION", maxVertices_, verticesRead_, skipped);
     if (!xyz) return std::nullopt;
     Triangles t;
     for (std::size_t i = 0; i + 2 < xyz->size(); i += 3) {
@@ -958,7 +1000,7 @@ class Importer {
           prim.indices, TINYGLTF_TYPE_SCALAR,
           {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
-          "indices", 3 * kMaxFitVertices, skipped);
+          "indices", maxIndices_, indicesRead_, skipped);
       if (!raw) return std::nullopt;
       for (double v : *raw) {
         if (v >= static_cast<double>(t.positions.size())) {
@@ -1061,8 +1103,22 @@ class Importer {
       object.kind = part.fit.kind;
       object.matrix = world * part.fit.shape;
       object.material = material(part.material, part.fit.kind);
+      if (!roomForOne(index)) return;
       scene_.objects.push_back(std::move(object));
     }
+  }
+
+  // Whether one more object or light fits under maxObjects; when not,
+  // reports too-many-objects on the node and stops the walk.
+  bool roomForOne(int node) {
+    if (stopped_) return false;
+    if (scene_.objects.size() + scene_.lights.size() < maxObjects_) return true;
+    // glTF has no lines to point at: the message names the node instead.
+    reportTooManyObjects({}, maxObjects_, out_).message =
+        "the file has more than " + std::to_string(maxObjects_) +
+        " objects and lights: reading stops at " + nodeLabel(model_, node);
+    stopped_ = true;
+    return false;
   }
 
   const tinygltf::Model& model_;
@@ -1073,6 +1129,13 @@ class Importer {
   std::map<int, std::vector<FittedPart>> fitted_;
   std::set<int> reportedMaterials_;
   std::vector<std::pair<std::size_t, glm::dvec3>> pendingDirectional_;
+  std::size_t maxObjects_;
+  bool stopped_ = false;  // past maxObjects: the walk ends
+  // POSITION vertices and indices allowed in the whole file, and read so far.
+  std::size_t maxVertices_;
+  std::size_t maxIndices_;
+  std::size_t verticesRead_ = 0;
+  std::size_t indicesRead_ = 0;
 };
 
 }  // namespace
@@ -1094,10 +1157,7 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
                      const ReadOptions& options) {
   ReadResult result{Scene{}, DiagnosticList(fileName, options.errorLimit)};
   DiagnosticList& out = result.diagnostics;
-  if (bytes.size() > kMaxGltfBytes) {
-    out.error(DiagnosticCode::GltfTooLarge, {}, "the file is larger than 1 GiB");
-    return result;
-  }
+  if (!checkFileSize(bytes.size(), options, out)) return result;
   bool binary = looksLikeGlb(bytes);
   std::string_view jsonText = bytes;
   std::optional<std::string_view> bin;
@@ -1131,6 +1191,16 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
         std::string(binary ? "the GLB's JSON chunk is not valid JSON: " : "not valid JSON: ") +
             parseErrorMessage(e.what()));
     return result;
+  } catch (const Json::out_of_range& e) {
+    // A number past a double's range (1e400) is refused by nlohmann as
+    // out_of_range, not as a parse error, and carries no position.
+    std::string what = e.what();
+    std::size_t bracket = what.find("] ");
+    out.error(
+        DiagnosticCode::GltfInvalidJson, {},
+        std::string(binary ? "the GLB's JSON chunk is not valid JSON: " : "not valid JSON: ") +
+            (bracket == std::string::npos ? what : what.substr(bracket + 2)));
+    return result;
   }
   if (!doc.is_object()) {
     out.error(DiagnosticCode::GltfInvalid, {}, "the JSON is not an object, so it is no glTF");
@@ -1163,10 +1233,21 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
       const Json& b = doc["buffers"][i];
       if (!b.is_object() || !b.contains("uri") || !b["uri"].is_string()) continue;
       std::string uri = b["uri"].get<std::string>();
-      if (std::optional<std::string> problem = uriProblem(uri, folder)) {
-        std::string shown = uri.size() > 80 ? uri.substr(0, 77) + "..." : uri;
+      std::string shown = uri.size() > 80 ? uri.substr(0, 77) + "..." : uri;
+      fs::path target;
+      if (std::optional<std::string> problem = uriProblem(uri, folder, target)) {
         out.error(DiagnosticCode::GltfExternalFile, {},
                   "buffer " + std::to_string(i) + "'s uri '" + shown + "' " + *problem);
+        continue;
+      }
+      std::error_code sizeError;
+      std::uintmax_t size = uri.starts_with("data:") ? 0 : fs::file_size(target, sizeError);
+      if (!sizeError && size > options.maxFileSize) {
+        out.error(DiagnosticCode::FileTooLarge, {},
+                  "buffer " + std::to_string(i) + "'s file '" + shown + "' is " +
+                      std::to_string(size) + " bytes, more than the limit of " +
+                      std::to_string(options.maxFileSize))
+            .hint = "raise the limit with --max-file-size if the file is meant to be this large";
       }
     }
     if (out.hasErrors()) return result;
@@ -1187,6 +1268,7 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
   std::error_code ec;
   confinement.folder =
       fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder), ec);
+  confinement.maxFileSize = options.maxFileSize;
   loader.SetFsCallbacks({&confinedExists, &unexpandedPath, &confinedRead, &noWrite, &confinement});
   loader.SetImageLoader(&noImageDecoding, nullptr);
   loader.SetStoreOriginalJSONForExtrasAndExtensions(true);

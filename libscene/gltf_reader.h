@@ -11,8 +11,9 @@
 
 namespace scene {
 
-// Limits that keep a hostile file from costing unbounded memory or time.
-inline constexpr std::size_t kMaxGltfBytes = std::size_t{1} << 30;  // a file or a buffer
+// Limits that keep a hostile file from costing unbounded memory or time;
+// the size of the file and of each buffer is ReadOptions::maxFileSize, the
+// vertices ReadOptions::maxGltfVertices.
 inline constexpr int kMaxJsonDepth = 64;
 
 // `bytes` starts with the GLB magic, or (after blanks) with '{'.

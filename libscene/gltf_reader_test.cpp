@@ -211,6 +211,75 @@ TEST(GltfReader, ReadsExternalBuffersFromItsOwnFolderOnly) {
   fs::remove_all(dir);
 }
 
+TEST(GltfReader, VerticesAreCountedOverTheWholeFileAgainstMaxGltfVertices) {
+  ThirdParty file;
+  TriangleMesh cube = cubeMesh();
+  int small = file.addMesh(cube, glm::dmat4(1.0));
+  int large = file.addMesh(cube, scaleMatrix(2, 2, 2));
+  file.doc()["nodes"] = {{{"mesh", small}}, {{"mesh", large}}};
+  ReadOptions options;
+  options.maxGltfVertices = cube.positions.size();  // room for one mesh
+  ReadResult read = parseScene(file.text(), "two.gltf", options);
+  std::vector<Diagnostic> tooLarge = withCode(read.diagnostics, DiagnosticCode::GltfTooLarge);
+  ASSERT_EQ(tooLarge.size(), 1u);
+  std::string n = std::to_string(cube.positions.size());
+  EXPECT_EQ(tooLarge[0].message, "accessor 2 (POSITION) has " + n + " elements; at most " + n +
+                                     " are read from a file, and " + n + " were read before it");
+
+  options.maxGltfVertices = 2 * cube.positions.size();
+  ReadResult raised = parseScene(file.text(), "two.gltf", options);
+  EXPECT_TRUE(raised.ok());
+  EXPECT_EQ(raised.scene.objects.size(), 2u);
+}
+
+TEST(GltfReader, StopsAtTheFirstObjectOrLightPastMaxObjects) {
+  ThirdParty file;
+  int sphere = file.addMesh(sphereMesh(24), glm::dmat4(1.0));
+  file.doc()["nodes"] = {{{"mesh", sphere}},
+                         {{"mesh", sphere}, {"translation", {3, 0, 0}}},
+                         {{"name", "third"}, {"mesh", sphere}, {"translation", {6, 0, 0}}}};
+  ReadOptions options;
+  options.maxObjects = 2;
+  ReadResult read = parseScene(file.text(), "three.gltf", options);
+  std::vector<Diagnostic> tooMany = withCode(read.diagnostics, DiagnosticCode::TooManyObjects);
+  ASSERT_EQ(tooMany.size(), 1u);
+  EXPECT_EQ(tooMany[0].message,
+            "the file has more than 2 objects and lights: reading stops at node 2 'third'");
+  EXPECT_EQ(read.diagnostics.errorCount(), 1u);
+
+  options.maxObjects = 3;
+  ReadResult raised = parseScene(file.text(), "three.gltf", options);
+  EXPECT_TRUE(raised.ok());
+  EXPECT_EQ(raised.scene.objects.size(), 3u);
+}
+
+TEST(GltfReader, AnExternalBufferLargerThanMaxFileSizeIsNotRead) {
+  fs::path dir = fs::temp_directory_path() / ("sfgltf-limit-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ReadResult original = parseScene(
+      testing::kCameraRecord + "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n", "a.sf");
+  GltfWriteOptions write;
+  write.externalBuffer = "scene.bin";
+  DiagnosticList out;
+  std::optional<GltfFiles> files = writeGltf(original.scene, write, out);
+  ASSERT_TRUE(files);
+  std::ofstream(dir / "scene.bin", std::ios::binary) << files->buffer;
+  ReadOptions options;
+  options.maxFileSize = files->main.size();  // the .gltf fits, its buffer does not
+  ASSERT_GT(files->buffer.size(), options.maxFileSize);
+  ReadResult refused = parseScene(files->main, (dir / "scene.gltf").string(), options);
+  std::vector<Diagnostic> tooLarge = withCode(refused.diagnostics, DiagnosticCode::FileTooLarge);
+  ASSERT_EQ(tooLarge.size(), 1u);
+  EXPECT_NE(tooLarge[0].message.find("buffer 0's file 'scene.bin' is " +
+                                     std::to_string(files->buffer.size()) + " bytes"),
+            std::string::npos)
+      << tooLarge[0].message;
+  options.maxFileSize = files->buffer.size() + files->main.size();
+  EXPECT_TRUE(parseScene(files->main, (dir / "scene.gltf").string(), options).ok());
+  fs::remove_all(dir);
+}
+
 TEST(GltfReader, FormatDetection) {
   EXPECT_EQ(detectFormat("  \n{\"asset\":{}}"), SceneFormat::Gltf);
   EXPECT_EQ(detectFormat(std::string("glTF\x02\0\0\0", 8)), SceneFormat::Glb);

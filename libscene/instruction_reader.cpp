@@ -110,11 +110,11 @@ struct OpenBlock {
 
 class InstructionParser {
  public:
-  InstructionParser(std::string_view text, ReadResult& result)
-      : cursor_(text), scene_(result.scene), out_(result.diagnostics) {}
+  InstructionParser(std::string_view text, const ReadOptions& options, ReadResult& result)
+      : cursor_(text), options_(options), scene_(result.scene), out_(result.diagnostics) {}
 
   void run() {
-    while (!out_.full() && cursor_.next()) {
+    while (!out_.full() && !stopped_ && cursor_.next()) {
       if (cursor_.blank() || reportComment(cursor_, out_)) continue;
       if (reportInvalidByte(cursor_, out_)) {
         // A damaged START or END is still read, as far as the damage, so
@@ -231,6 +231,12 @@ class InstructionParser {
       reportUnknownKeyword(cursor_, 1, kBlockNames, "a block name", out_);
       // Its lines would only repeat the error: skip to its END.
       skipping_ = std::string(cursor_.token(1).text);
+      return;
+    }
+    if ((*block == Block::Object || *block == Block::Light) &&
+        ++objectsSeen_ > options_.maxObjects) {
+      reportTooManyObjects(cursor_.tokenSpan(0), options_.maxObjects, out_);
+      stopped_ = true;
       return;
     }
     std::string name(blockName(*block));
@@ -515,6 +521,19 @@ class InstructionParser {
       out_.error(DiagnosticCode::CameraLookAtLocation, lookAtSpan_,
                  "LOOK_AT is the camera's own LOCATION, so it looks nowhere");
       ok = false;
+    } else if (ok) {
+      // The direction must survive normalisation: far apart points overflow
+      // its length, subnormal offsets underflow it to 0.
+      double length = glm::length(open.vectors[1] - open.vectors[0]);
+      if (!std::isfinite(length) || !(length > 0.0)) {
+        out_.error(DiagnosticCode::CameraDegenerate, lookAtSpan_,
+                   std::isfinite(length)
+                       ? "LOOK_AT is too close to LOCATION: the direction's length rounds to 0"
+                       : "LOOK_AT is too far from LOCATION: the direction's length overflows a "
+                         "double")
+            .hint = "scale the scene so that its coordinates stay between 1e-150 and 1e150";
+        ok = false;
+      }
     }
     if (!ok || open.duplicate) return;
     scene_.camera.matrix = cameraFromLookAt(open.vectors[0], open.vectors[1]);
@@ -542,7 +561,7 @@ class InstructionParser {
   }
 
   void finish() {
-    if (out_.full()) return;
+    if (out_.full() || stopped_) return;
     if (!sawContent_) {
       out_.error(DiagnosticCode::MissingOutputFile, SourceSpan{1, 1, 0}, "file is empty")
           .hint = "an instruction file starts with OUTPUT_FILE";
@@ -564,6 +583,7 @@ class InstructionParser {
   }
 
   LineCursor cursor_;
+  const ReadOptions& options_;
   Scene& scene_;
   DiagnosticList& out_;
   std::vector<OpenBlock> stack_;
@@ -572,6 +592,9 @@ class InstructionParser {
   std::optional<SourceSpan> cameraSpan_;
   SourceSpan lookAtSpan_;
   bool sawContent_ = false;
+  // START OBJECT and START LIGHT lines so far, against maxObjects.
+  std::size_t objectsSeen_ = 0;
+  bool stopped_ = false;                 // past maxObjects: nothing more is read
   std::optional<std::string> skipping_;  // the unknown block being skipped
 };
 
@@ -580,7 +603,7 @@ class InstructionParser {
 ReadResult parseInstructionFile(std::string_view text, std::string fileName,
                                 const ReadOptions& options) {
   ReadResult result{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
-  InstructionParser(text, result).run();
+  InstructionParser(text, options, result).run();
   return result;
 }
 

@@ -19,6 +19,24 @@ const std::string kLight = "START LIGHT\n  LOCATION 3 3 3\n  COLOUR 1 1 1\nEND L
 
 ReadResult parse(const std::string& text) { return parseInstructionFile(text, "test.txt"); }
 
+TEST(InstructionReader, StopsAtTheFirstObjectOrLightPastMaxObjects) {
+  const std::string sphere = "START OBJECT SPHERE\nEND OBJECT\n";
+  // Lines 1-5 header and camera, 6-9 the light, 10-11 a sphere, 12 the next.
+  std::string text = kHeader + kCamera + kLight + sphere + sphere + "START CAMERA\n";
+  ReadOptions options;
+  options.maxObjects = 2;
+  ReadResult r = parseInstructionFile(text, "test.txt", options);
+  Diagnostic d = expectOne(r.diagnostics, DiagnosticCode::TooManyObjects, 12, 1);
+  EXPECT_EQ(d.message, "the file has more than 2 objects and lights: reading stops here");
+  EXPECT_EQ(r.diagnostics.items().size(), 1u);  // no unclosed block, no second camera
+  EXPECT_EQ(r.scene.objects.size(), 1u);
+  EXPECT_EQ(r.scene.lights.size(), 1u);
+
+  options.maxObjects = 3;
+  EXPECT_TRUE(
+      parseInstructionFile(kHeader + kCamera + kLight + sphere + sphere, "test.txt", options).ok());
+}
+
 TEST(InstructionReader, ReadsTheManualsExample) {
   ReadResult r = parse(kHeader + kCamera + kLight +
                        "START OBJECT CUBE\n"

@@ -18,9 +18,6 @@ namespace scene {
 // above float rounding (1e-7), far below any visible difference.
 inline constexpr double kFitTolerance = 1e-4;
 
-// Meshes larger than this are not examined (a primitive needs few vertices).
-inline constexpr std::size_t kMaxFitVertices = std::size_t{1} << 24;
-
 struct MeshFit {
   ObjectKind kind = ObjectKind::Sphere;
   // Takes the unit primitive of FORMATS.md onto the mesh, in the mesh's space.

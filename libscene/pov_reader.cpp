@@ -1477,6 +1477,14 @@ class PovParser {
       if (glm::dot(d, d) < kPovEpsilon) {
         fail(keyword.span, "the camera's location and look_at are the same point");
       }
+      if (!std::isfinite(glm::dot(d, d))) {
+        // Normalising would give 0 or NaN, and every message after it lie.
+        out_.error(DiagnosticCode::CameraDegenerate, keyword.span,
+                   "the camera's look_at is too far from its location: the distance overflows "
+                   "a double")
+            .hint = "scale the scene so that its coordinates stay between 1e-150 and 1e150";
+        throw ParseError{};
+      }
       d = glm::normalize(d);
       glm::dvec3 right = glm::cross(c.sky, d);
       if (std::abs(right.x) < kPovEpsilon && std::abs(right.y) < kPovEpsilon &&
@@ -1666,10 +1674,8 @@ class PovParser {
   // Objects and lights cost memory in proportion: a bound keeps a file of a
   // few bytes per sphere from costing gigabytes.
   void countElement(SourceSpan span) {
-    if (objects_.size() + lights_.size() + 1 > kMaxPovObjects) {
-      out_.error(DiagnosticCode::PovLimit, span,
-                 "the file has more than " + std::to_string(kMaxPovObjects) +
-                     " objects and lights: refused");
+    if (objects_.size() + lights_.size() + 1 > options_.maxObjects) {
+      reportTooManyObjects(span, options_.maxObjects, out_);
       throw StopReading{};
     }
   }
@@ -1817,7 +1823,10 @@ class PovParser {
     camera.span = span;
     double directionLength = glm::length(c.direction);
     if (!(directionLength > 0.0) || !std::isfinite(directionLength)) {
-      out_.error(DiagnosticCode::CameraDegenerate, span, "the camera's direction has zero length");
+      out_.error(DiagnosticCode::CameraDegenerate, span,
+                 std::isfinite(directionLength)
+                     ? "the camera's direction has zero length"
+                     : "the camera's direction is too long for a double (its length overflows)");
       return;
     }
     glm::dvec3 forward = c.direction / directionLength;

@@ -21,7 +21,6 @@ inline constexpr std::size_t kMaxPovBytes = std::size_t{256} << 20;
 inline constexpr std::size_t kMaxPovTokens = 50'000'000;
 inline constexpr int kMaxPovNesting = 64;  // braces, parentheses and vectors inside each other
 inline constexpr std::size_t kMaxPovDeclarations = 100'000;
-inline constexpr std::size_t kMaxPovObjects = 1'000'000;  // objects and lights together
 
 struct PovReadOptions {
   // Constructs outside the subset are warnings, and the rest is converted.
@@ -32,6 +31,9 @@ struct PovReadOptions {
   int imageWidth = 640;
   int imageHeight = 480;
   std::size_t errorLimit = DiagnosticList::kDefaultErrorLimit;
+  // Objects and lights together; reading stops at the first past it
+  // (too-many-objects), as in the other readers.
+  std::size_t maxObjects = kDefaultMaxObjects;
 };
 
 // What POV-Ray's camera shows beyond what the scene's camera matrix holds.

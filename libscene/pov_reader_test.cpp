@@ -448,8 +448,11 @@ TEST(PovHostileInput, EveryLimitRefusesQuickly) {
             1u);
 
   std::string many;
-  for (std::size_t i = 0; i <= kMaxPovObjects; ++i) many += "sphere{0,1}";
-  EXPECT_EQ(withCode(read(many).read.diagnostics, DiagnosticCode::PovLimit).size(), 1u);
+  for (std::size_t i = 0; i <= 1000; ++i) many += "sphere{0,1}";
+  PovReadOptions fewObjects;
+  fewObjects.maxObjects = 1000;
+  EXPECT_EQ(
+      withCode(read(many, fewObjects).read.diagnostics, DiagnosticCode::TooManyObjects).size(), 1u);
 
   std::string names;
   for (std::size_t i = 0; i <= kMaxPovDeclarations; ++i)
@@ -459,6 +462,21 @@ TEST(PovHostileInput, EveryLimitRefusesQuickly) {
   std::string digits = "#declare D = " + std::string(10'000'000, '9') + ";";
   EXPECT_EQ(withCode(read(digits).read.diagnostics, DiagnosticCode::NumberOutOfRange).size(), 1u);
   EXPECT_LT(secondsSince(start), 20.0);
+}
+
+TEST(PovReader, StopsAtTheFirstObjectOrLightPastMaxObjects) {
+  // kCamera holds one light: with this, two lights and three objects.
+  std::string text = kCamera + "light_source { <0, 5, 0> rgb 1 }\nsphere { 0, 1 }\n" +
+                     "box { -1, 1 }\nsphere { 0, 2 }\n";
+  PovReadOptions options;
+  options.maxObjects = 3;
+  PovImport r = read(text, options);
+  Diagnostic d = expectOne(r.read.diagnostics, DiagnosticCode::TooManyObjects, 5, 1);
+  EXPECT_EQ(d.message, "the file has more than 3 objects and lights: reading stops here");
+  EXPECT_EQ(r.read.diagnostics.errorCount(), 1u);
+
+  options.maxObjects = 5;
+  EXPECT_TRUE(read(text, options).read.ok());
 }
 
 TEST(PovDetection, RecognisesPovRayBySyntaxAndTheOthersByTheirs) {

@@ -172,4 +172,12 @@ void reportUnknownKeyword(const LineCursor& cursor, std::size_t tokenIndex,
   }
 }
 
+Diagnostic& reportTooManyObjects(SourceSpan span, std::size_t maxObjects, DiagnosticList& out) {
+  Diagnostic& d = out.error(DiagnosticCode::TooManyObjects, span,
+                            "the file has more than " + std::to_string(maxObjects) +
+                                " objects and lights: reading stops here");
+  d.hint = "raise the limit with --max-objects if the scene is meant to be this large";
+  return d;
+}
+
 }  // namespace scene

@@ -50,4 +50,8 @@ void reportUnknownKeyword(const LineCursor& cursor, std::size_t tokenIndex,
                           std::span<const std::string_view> candidates, std::string_view expected,
                           DiagnosticList& out);
 
+// too-many-objects at `span`, the first object or light past `maxObjects`;
+// every reader words it the same way and then stops reading.
+Diagnostic& reportTooManyObjects(SourceSpan span, std::size_t maxObjects, DiagnosticList& out);
+
 }  // namespace scene

@@ -52,7 +52,21 @@ SceneFormat detectFormat(std::string_view text, std::string_view fileName) {
   return povName ? SceneFormat::Pov : SceneFormat::SceneFile;
 }
 
+bool checkFileSize(std::uint64_t bytes, const ReadOptions& options, DiagnosticList& out) {
+  if (bytes <= options.maxFileSize) return true;
+  out.error(DiagnosticCode::FileTooLarge, {},
+            "the file is " + std::to_string(bytes) + " bytes, more than the limit of " +
+                std::to_string(options.maxFileSize))
+      .hint = "raise the limit with --max-file-size if the file is meant to be this large";
+  return false;
+}
+
 ReadResult parseScene(std::string_view text, std::string fileName, const ReadOptions& options) {
+  if (text.size() > options.maxFileSize) {
+    ReadResult refused{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
+    checkFileSize(text.size(), options, refused.diagnostics);
+    return refused;
+  }
   switch (detectFormat(text, fileName)) {
     case SceneFormat::SceneFile:
       return parseSceneFile(text, std::move(fileName), options);
@@ -72,6 +86,7 @@ ReadResult parseScene(std::string_view text, std::string fileName, const ReadOpt
         povOptions.imageHeight = options.imageHeight;
       }
       povOptions.errorLimit = options.errorLimit;
+      povOptions.maxObjects = options.maxObjects;
       return importPov(text, std::move(fileName), povOptions).read;
     }
     case SceneFormat::Unknown:

@@ -71,11 +71,11 @@ class SceneFileParser {
  public:
   SceneFileParser(std::string_view text, const ReadOptions& options, ReadResult& result)
       : cursor_(text), options_(options), scene_(result.scene), out_(result.diagnostics) {
-    scene_.objects.reserve(estimateRecords(text));
+    scene_.objects.reserve(std::min(estimateRecords(text), options.maxObjects));
   }
 
   void run() {
-    while (!out_.full() && pull()) {
+    while (!out_.full() && !stopped_ && pull()) {
       if (cursor_.blank() || reportComment(cursor_, out_)) continue;
       if (reportInvalidByte(cursor_, out_)) {
         // Most likely a damaged record name: its body follows, and reading
@@ -122,6 +122,12 @@ class SceneFileParser {
       }
     }
     resyncing_ = false;
+    if (kind != RecordKind::Camera && kind != RecordKind::Unknown &&
+        ++objectsSeen_ > options_.maxObjects) {
+      reportTooManyObjects(nameSpan, options_.maxObjects, out_);
+      stopped_ = true;
+      return;
+    }
     if (cursor_.tokenCount() > 1) {
       out_.error(DiagnosticCode::TokenCount, cursor_.tokenSpan(1),
                  "a record name stands alone on its line");
@@ -267,7 +273,7 @@ class SceneFileParser {
   }
 
   void finish() {
-    if (out_.full()) return;
+    if (out_.full() || stopped_) return;
     if (!firstRecord_) {
       out_.error(DiagnosticCode::MissingCamera, SourceSpan{1, 1, 0},
                  out_.hasErrors() ? "scene has no CAMERA record" : "file holds no records")
@@ -291,6 +297,9 @@ class SceneFileParser {
   DiagnosticList& out_;
   bool pending_ = false;
   bool resyncing_ = false;
+  // Objects and lights named so far, read or not, against maxObjects.
+  std::size_t objectsSeen_ = 0;
+  bool stopped_ = false;  // past maxObjects: nothing more is read
   std::optional<SourceSpan> firstRecord_;
   bool firstIsCamera_ = false;
   std::string firstName_;

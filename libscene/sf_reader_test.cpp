@@ -54,6 +54,22 @@ TEST(SceneFileReader, AcceptsCrlfBomTabsAndNoFinalNewline) {
   EXPECT_EQ(r.scene.objects.size(), 1u);
 }
 
+TEST(SceneFileReader, StopsAtTheFirstObjectOrLightPastMaxObjects) {
+  ReadOptions options;
+  options.maxObjects = 2;
+  // The light and the first sphere fit; the second sphere (line 19) does not.
+  std::string text = kCameraRecord + kLightRecord + kSphere + kSphere + "garbage\n";
+  ReadResult r = parse(text, options);
+  Diagnostic d = expectOne(r.diagnostics, DiagnosticCode::TooManyObjects, 19, 1);
+  EXPECT_EQ(d.message, "the file has more than 2 objects and lights: reading stops here");
+  EXPECT_EQ(r.diagnostics.items().size(), 1u);  // nothing after it, not even the garbage
+  EXPECT_EQ(r.scene.objects.size(), 1u);
+
+  options.maxObjects = 3;
+  EXPECT_TRUE(parse(kCameraRecord + kLightRecord + kSphere + kSphere, options).ok());
+  EXPECT_TRUE(parse(kCameraRecord + kLightRecord + kSphere + kSphere).ok());  // the default
+}
+
 TEST(SceneFileReader, ColumnsCountFromTheLineNotTheBom) {
   ReadResult r = parse("\xEF\xBB\xBF" "camera\n");
   expectOne(r.diagnostics, DiagnosticCode::UnknownKeyword, 1, 1);

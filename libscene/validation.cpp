@@ -106,7 +106,14 @@ void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticLis
   glm::dvec3 up = glm::dvec3(matrix[1]);
   double lf = glm::length(forward);
   double lu = glm::length(up);
-  if (!(lf > 0.0) || !(lu > 0.0) || !std::isfinite(lf) || !std::isfinite(lu)) {
+  if (!std::isfinite(lf) || !std::isfinite(lu)) {
+    // Entries near 1e308 overflow the length; such a vector is not zero.
+    out.error(DiagnosticCode::CameraDegenerate, where,
+              "camera forward or up vector (third or second column) is too long for a double")
+        .hint = "scale the scene down";
+    return;
+  }
+  if (!(lf > 0.0) || !(lu > 0.0)) {
     out.error(DiagnosticCode::CameraDegenerate, where,
               lf > 0.0 ? "camera up vector (second column) is zero"
                        : "camera forward vector (third column) is zero");
