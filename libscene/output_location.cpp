@@ -1,5 +1,6 @@
 #include "libscene/output_location.h"
 
+#include <algorithm>
 #include <system_error>
 
 namespace scene {
@@ -17,14 +18,33 @@ bool outputStaysInFolder(const std::filesystem::path& folder, const std::string&
       ++depth;
     }
   }
-  // Through links: resolve what exists of the path and compare.
+  // Through links: resolve the path as a write would and compare.
   std::error_code ec;
   fs::path base = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, ec);
   if (ec) return false;
-  fs::path target = fs::weakly_canonical(base / relative, ec);
-  if (ec) return false;
-  auto [baseEnd, targetIt] = std::mismatch(base.begin(), base.end(), target.begin(), target.end());
+  std::optional<fs::path> target = followLinks(base / relative);
+  if (!target) return false;
+  auto [baseEnd, targetIt] =
+      std::mismatch(base.begin(), base.end(), target->begin(), target->end());
   return baseEnd == base.end();
+}
+
+std::optional<std::filesystem::path> followLinks(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  // weakly_canonical resolves every link that leads somewhere, but takes a
+  // link to nothing for a plain name, so the last one is followed by hand.
+  constexpr int kMaxLinks = 40;  // Linux's own limit on a chain of links
+  std::error_code ec;
+  fs::path current = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec) return std::nullopt;
+  for (int hops = 0; fs::is_symlink(fs::symlink_status(current, ec)); ++hops) {
+    if (hops == kMaxLinks) return std::nullopt;
+    fs::path next = fs::read_symlink(current, ec);
+    if (ec) return std::nullopt;
+    current = fs::weakly_canonical(current.parent_path() / next, ec);
+    if (ec) return std::nullopt;
+  }
+  return current;
 }
 
 void checkOutputLocation(const Scene& scene, const std::filesystem::path& folder,

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/common/diagnostic_printer.h"
 #include "tools/common/exit_code.h"
 #include "tools/common/file_io.h"
 #include "tools/sfcheck/sfcheck.h"
@@ -122,6 +123,32 @@ TEST_F(ToolTest, SfcheckWerrorAndJson) {
   EXPECT_EQ(d["severity"], "warning");
   EXPECT_EQ(d["line"], 1);
   EXPECT_EQ(d["column"], 1);
+}
+
+// A file's bytes quoted in a message (a POV-Ray #include name here) must not
+// reach the terminal raw, nor break the JSON report with invalid UTF-8.
+TEST_F(ToolTest, QuotedBytesArePrintableInTextAndJson) {
+  std::string pov = write("escape.pov", "#include \"a\x1B[31mb\xFF\xC3\xA9.inc\"\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", pov}), 1);
+  EXPECT_NE(err_.str().find("'#include \"a\\x1B[31mb\\xFF\xC3\xA9.inc\"' would read another file"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_EQ(err_.str().find('\x1B'), std::string::npos);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", pov}), 1);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  std::string message = report["files"][0]["diagnostics"][0]["message"];
+  EXPECT_NE(message.find("a\\x1B[31mb\\xFF\xC3\xA9.inc"), std::string::npos) << message;
+}
+
+TEST(PrintableText, EscapesControlBytesAndWhatIsNotUtf8) {
+  EXPECT_EQ(printableText("plain text, \xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80"),
+            "plain text, \xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80");
+  EXPECT_EQ(printableText(std::string("a\0b\tc\x7F", 6)), "a\\x00b\\x09c\\x7F");
+  EXPECT_EQ(printableText("\xC0\xAF"), "\\xC0\\xAF");              // overlong '/'
+  EXPECT_EQ(printableText("\xED\xA0\x80"), "\\xED\\xA0\\x80");      // a surrogate
+  EXPECT_EQ(printableText("\xF4\x90\x80\x80"), "\\xF4\\x90\\x80\\x80");  // past U+10FFFF
+  EXPECT_EQ(printableText("\xE2\x82"), "\\xE2\\x82");              // cut short
+  EXPECT_EQ(printableText("x\xFF"), "x\\xFF");
 }
 
 TEST_F(ToolTest, SfcheckWarnsWhenOutputFileLeavesItsFolder) {
@@ -453,6 +480,128 @@ TEST(FileIo, AtomicWriteReplacesWholeAndLeavesNoTemporary) {
   ASSERT_TRUE(writeFileAtomically(dir / "f", std::string(1 << 20, 'x'), error)) << error;
   EXPECT_EQ(readWholeFile(dir / "f", error)->size(), 1u << 20);
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
+// The limits (docs/FORMATS.md, "Limits"): each over its default or lowered
+// limit, then raised.
+
+TEST_F(ToolTest, SfcheckRefusesAFileAboveMaxFileSizeUnread) {
+  std::string scene = write("scene.sf", kValidScene);
+  std::string size = std::to_string(kValidScene.size());
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", "100", scene}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(err_.str(), scene + ": error: the file is " + size +
+                            " bytes, more than the limit of 100 [file-too-large]\n"
+                            "  hint: raise the limit with --max-file-size if the file is meant "
+                            "to be this large\n"
+                            "sfcheck: 1 file checked, 1 error, 0 warnings\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", "--max-file-size", "100", scene}), 1);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["files"][0]["diagnostics"][0]["code"], "file-too-large");
+  EXPECT_EQ(report["summary"]["errors"], 1);
+  // Size suffixes, and the limit itself is allowed.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", "1kib", scene}), 0) << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", size, scene}), 0) << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", "-5", scene}), toInt(ExitCode::Usage));
+}
+
+TEST_F(ToolTest, EveryReaderToolTakesTheLimitFlags) {
+  std::string scene = write("scene.sf", kValidScene);  // one light, one sphere
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-objects", "1", scene}), 1);
+  EXPECT_NE(err_.str().find(":13:1: error: the file has more than 1 objects and lights"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-objects", "2", scene}), 0);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-objects", "0", scene}), toInt(ExitCode::Usage));
+
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--max-objects", "1", scene, path("a.txt")}), 1);
+  EXPECT_NE(err_.str().find("[too-many-objects]"), std::string::npos) << err_.str();
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--max-file-size", "10", scene, path("a.txt")}), 1);
+  EXPECT_NE(err_.str().find("[file-too-large]"), std::string::npos) << err_.str();
+  EXPECT_EQ(files(), std::vector<std::string>{"scene.sf"});  // nothing written
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--max-objects", "2", "--max-file-size", "1MiB", scene,
+                               path("a.txt")}),
+            0)
+      << err_.str();
+
+  std::vector<std::string> render = {"sfrender", scene,      "-o", path("a.ppm"), "--width",
+                                     "8",        "--height", "6",  "--quiet"};
+  std::vector<std::string> few = render;
+  few.insert(few.end(), {"--max-objects", "1"});
+  EXPECT_EQ(run(sfrender, few), 1);
+  EXPECT_NE(err_.str().find("[too-many-objects]"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(path("a.ppm")));
+  std::vector<std::string> enough = render;
+  enough.insert(enough.end(), {"--max-objects", "2"});
+  EXPECT_EQ(run(sfrender, enough), 0) << err_.str();
+  EXPECT_TRUE(fs::exists(path("a.ppm")));
+}
+
+TEST_F(ToolTest, SfrenderSettingsAboveTheirLimitsAreUsageErrorsNamingTheFlag) {
+  std::string out = path("a.ppm");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--width", "8192", "--height", "8193"}),
+            toInt(ExitCode::Usage));
+  EXPECT_EQ(err_.str(),
+            "sfrender: --width 8192 and --height 8193 make 67,117,056 pixels, more than the limit "
+            "of 67,108,864; raise it with --max-pixels\n");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--spp", "1025"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(err_.str(),
+            "sfrender: --spp 1025 is more than the limit of 1024 samples per pixel; raise it with "
+            "--max-spp\n");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--depth", "65"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(err_.str(),
+            "sfrender: --depth 65 is more than the limit of 64 bounces; raise it with "
+            "--max-depth\n");
+  EXPECT_FALSE(fs::exists(out));
+  // Lowered limits hold too, and raised ones let the render through.
+  EXPECT_EQ(
+      run(sfrender, {"sfrender", "-o", out, "--width", "8", "--height", "8", "--max-pixels", "63"}),
+      toInt(ExitCode::Usage));
+  // A scene with nothing reflective or transparent: bounces cost nothing.
+  std::string matte = write("matte.sf", kValidScene);
+  EXPECT_EQ(
+      run(sfrender, {"sfrender", matte, "-o", out, "--width", "2", "--height", "2", "--spp", "2000",
+                     "--max-spp", "2000", "--depth", "70", "--max-depth", "70", "--quiet"}),
+      0)
+      << err_.str();
+  EXPECT_TRUE(fs::exists(out));
+}
+
+TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
+  std::string out = path("a.ppm");
+  std::vector<std::string> args = {"sfrender", "-o", out, "--width", "640", "--height", "480"};
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  auto oneMebibyte = [] { return std::optional<std::uint64_t>(std::uint64_t{1} << 20); };
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, oneMebibyte),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_NE(err_.str().find("sfrender: error: the render needs about "), std::string::npos)
+      << err_.str();
+  EXPECT_NE(err_.str().find("(image 7 MiB, scene "), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("but only 1 MiB of memory is available"), std::string::npos)
+      << err_.str();
+  EXPECT_FALSE(fs::exists(out));
+  // Enough memory, or none known: it renders.
+  args = {"sfrender", "-o", out, "--width", "16", "--height", "12", "--quiet"};
+  argv.clear();
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, oneMebibyte),
+            0)
+      << err_.str();
+  auto unknown = [] { return std::optional<std::uint64_t>(); };
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, unknown), 0);
+}
+
+TEST(FileIo, ReadingStopsOneBytePastTheLimit) {
+  fs::path dir = fs::temp_directory_path() / ("sflimit-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "f", std::ios::binary) << std::string(200'000, 'x');
+  std::string error;
+  EXPECT_EQ(readWholeFile(dir / "f", error, 100)->size(), 101u);
+  EXPECT_EQ(readWholeFile(dir / "f", error, 199'999)->size(), 200'000u);
+  EXPECT_EQ(readWholeFile(dir / "f", error, 200'000)->size(), 200'000u);
+  EXPECT_EQ(readWholeFile(dir / "f", error)->size(), 200'000u);
   fs::remove_all(dir);
 }
 

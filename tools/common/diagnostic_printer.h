@@ -2,6 +2,8 @@
 #pragma once
 
 #include <ostream>
+#include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +12,12 @@
 namespace tools {
 
 enum class DiagnosticFormat { Text, Json };
+
+// The text as it is safe to show: a message may quote bytes from a file, and
+// a control byte (a terminal's escape sequence) or a byte that is not UTF-8
+// is written as \xNN instead, so that printing cannot drive the terminal and
+// JSON output stays valid UTF-8.
+std::string printableText(std::string_view text);
 
 // FILE:LINE:COLUMN: error: message [code], then "  hint: ..." and one line per
 // note. With `warningsAsErrors`, warnings print as errors.

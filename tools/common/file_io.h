@@ -1,21 +1,94 @@
 // Whole-file reads and writes that never leave a half-written file behind.
+//
+// Every tool writes its outputs the same way: into a temporary file beside
+// the target, named `.NAME.tmp-XXXXXX` (NAME the target's file name, XXXXXX
+// six characters chosen by mkstemp, then NAME's extension again where the
+// writer picks the format by it), flushed to disk, then renamed over the
+// target. rename() replaces a name in one step, so a reader, or a run killed
+// at any moment (even by SIGKILL), finds the old file or the new one, never a
+// part; a killed run leaves at most its temporary. Two runs never share a
+// temporary: mkstemp creates it exclusively.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tools {
 
-// The file's bytes, or nothing with the reason in `error`.
-std::optional<std::string> readWholeFile(const std::filesystem::path& path, std::string& error);
+// The file's bytes, or nothing with the reason in `error`. Reading stops
+// after `maxBytes` + 1 bytes, which tells a caller with a limit that the file
+// (a pipe, or a file that grew since its size was looked at) is over it
+// without reading it all.
+std::optional<std::string> readWholeFile(
+    const std::filesystem::path& path, std::string& error,
+    std::uint64_t maxBytes = std::numeric_limits<std::uint64_t>::max());
 
-// Writes `content` to a temporary file beside `path`, flushes it to disk and
-// renames it over `path`: a reader sees the old file or the new one, never a
-// part. False, with the reason in `error` and no file left over, on failure.
+// A file being written under a temporary name beside its target, which gets
+// the target's name only on commit(); destroyed before that, it removes the
+// temporary. When `target` is a symbolic link, the file at the end of the
+// link is replaced (or created) and the link stays, as `cp` and the shell's
+// `>` do. A directory, a device or a pipe is refused. The new file keeps the
+// permissions of the file it replaces, or gets those of a new file (0666
+// less the umask).
+class StagedFile {
+ public:
+  StagedFile() = default;
+  StagedFile(const StagedFile&) = delete;
+  StagedFile& operator=(const StagedFile&) = delete;
+  ~StagedFile();
+
+  // Creates the temporary; `keepExtension` ends its name with the target's
+  // extension, for writers that choose the format by it (OpenImageIO).
+  bool open(const std::filesystem::path& target, bool keepExtension, std::string& error);
+  // The temporary, open for writing, for writers that take a descriptor.
+  int descriptor() const { return fd_; }
+  // The temporary's name, for writers that open the file themselves.
+  const std::filesystem::path& temporaryPath() const { return temporary_; }
+  // The file that commit() replaces (the link's target when it was a link).
+  const std::filesystem::path& targetPath() const { return target_; }
+
+  bool write(std::string_view content, std::string& error);
+  // Flushes the temporary to disk, whoever wrote it, and closes it: a crash
+  // after the rename must not leave a renamed but empty file.
+  bool finish(std::string& error);
+  // Renames the finished temporary over the target.
+  bool commit(std::string& error);
+
+ private:
+  void discard();
+
+  int fd_ = -1;
+  bool finished_ = false;
+  bool committed_ = false;
+  unsigned mode_ = 0;
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+};
+
+// Writes `content` to `path` through a StagedFile: a reader sees the old file
+// or the new one, never a part. False, with the reason in `error` and no
+// file left over, on failure.
 bool writeFileAtomically(const std::filesystem::path& path, std::string_view content,
                          std::string& error);
+
+struct FileToWrite {
+  std::filesystem::path path;
+  std::string_view content;
+};
+
+// Writes several files that belong together (a .gltf and its .bin): every
+// temporary is written and flushed first, and only then are they renamed,
+// one right after the other in the given order, so that the moment in which
+// a kill leaves the new first file beside the old second one is that of one
+// rename() call, not that of a whole write.
+// `failed`, when given, gets the name of the file that could not be written.
+bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& error,
+                          std::filesystem::path* failed = nullptr);
 
 // True when both paths name one existing file (through links too).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);

@@ -13,6 +13,7 @@
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
+#include "tools/common/input_limits.h"
 #include "tools/sfbuild/builder_state.h"
 #include "tools/sfbuild/gl_view.h"
 
@@ -111,6 +112,8 @@ int main(int argc, char** argv) {
   cli.add_option("--width", width, "window width in pixels")->check(CLI::Range(64, 8192));
   cli.add_option("--height", height, "window height in pixels")->check(CLI::Range(64, 8192));
   cli.add_flag("--id-view", idView, "draw each object in a flat colour of its own (F9 toggles)");
+  scene::ReadOptions readOptions;
+  tools::addReadLimitOptions(cli, readOptions);
   if (auto code = tools::parseCommandLine(cli, argc, argv, std::cout, std::cerr)) {
     return tools::toInt(*code);
   }
@@ -118,13 +121,16 @@ int main(int argc, char** argv) {
   App app;
   app.state = sfbuild::initialState(width, height);
   if (!input.empty()) {
-    std::string error;
-    auto text = tools::readWholeFile(input, error);
-    if (!text) {
-      std::cerr << "sfbuild: " << error << "\n";
+    tools::InputText text = tools::readInputText(input, readOptions);
+    if (text.tooLarge()) {
+      tools::printDiagnostics(text.refused, std::cerr);
+      return tools::toInt(tools::ExitCode::InvalidInput);
+    }
+    if (!text.text) {
+      std::cerr << "sfbuild: " << text.readError << "\n";
       return tools::toInt(tools::ExitCode::IoError);
     }
-    scene::ReadResult result = scene::parseScene(*text, input);
+    scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
     tools::printDiagnostics(result.diagnostics, std::cerr);
     if (!result.ok()) return tools::toInt(tools::ExitCode::InvalidInput);
     app.state = sfbuild::stateForScene(std::move(result.scene), width, height);

@@ -8,7 +8,7 @@
 #include "libscene/scene_reader.h"
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
-#include "tools/common/file_io.h"
+#include "tools/common/input_limits.h"
 
 namespace tools {
 
@@ -53,6 +53,8 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
   app.add_flag("--werror", werror, "treat warnings as errors");
   app.add_option("--format", format, "how to print diagnostics")
       ->check(CLI::IsMember({"text", "json"}));
+  scene::ReadOptions readOptions;
+  addReadLimitOptions(app, readOptions);
   if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
 
   bool json = format == "json";
@@ -61,19 +63,31 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
   std::size_t warnings = 0;
   bool unreadable = false;
   for (const std::string& file : files) {
-    std::string readError;
-    std::optional<std::string> text = readWholeFile(file, readError);
-    if (!text) {
-      unreadable = true;
+    InputText input = readInputText(file, readOptions);
+    if (input.tooLarge()) {
+      errors += input.refused.errorCount();
       if (json) {
-        report["files"].push_back({{"file", file}, {"readError", readError}});
+        report["files"].push_back(
+            {{"file", printableText(file)}, {"diagnostics", diagnosticsToJson(input.refused, werror)}});
       } else {
-        err << file << ": error: cannot read the file: " << readError << "\n";
+        printDiagnostics(input.refused, err, werror);
       }
       continue;
     }
-    scene::SceneFormat detected = scene::detectFormat(*text, file);
-    scene::ReadResult result = scene::parseScene(*text, file);
+    if (!input.text) {
+      unreadable = true;
+      if (json) {
+        report["files"].push_back(
+            {{"file", printableText(file)}, {"readError", printableText(input.readError)}});
+      } else {
+        err << printableText(file) << ": error: cannot read the file: "
+            << printableText(input.readError) << "\n";
+      }
+      continue;
+    }
+    const std::string& text = *input.text;
+    scene::SceneFormat detected = scene::detectFormat(text, file);
+    scene::ReadResult result = scene::parseScene(text, file, readOptions);
     if (detected == scene::SceneFormat::InstructionFile) {
       scene::checkOutputLocation(result.scene, std::filesystem::path(file).parent_path(),
                                  scene::Severity::Warning, result.diagnostics);
@@ -81,7 +95,7 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
     errors += result.diagnostics.errorCount();
     warnings += result.diagnostics.warningCount();
     if (json) {
-      report["files"].push_back({{"file", file},
+      report["files"].push_back({{"file", printableText(file)},
                                  {"format", formatName(detected)},
                                  {"diagnostics", diagnosticsToJson(result.diagnostics, werror)}});
     } else {

@@ -4,12 +4,15 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "libscene/conversion.h"
+#include "libscene/output_location.h"
 #include "libscene/scene_reader.h"
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
+#include "tools/common/input_limits.h"
 
 namespace tools {
 
@@ -101,6 +104,8 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
                "rest");
   app.add_option("--format", format, "how to print diagnostics (on standard error)")
       ->check(CLI::IsMember({"text", "json"}));
+  scene::ReadOptions readOptions;
+  addReadLimitOptions(app, readOptions);
   if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
   bool json = format == "json";
   bool toStdout = output == "-";
@@ -135,20 +140,46 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
         << "' is the input file; sfconvert never writes over its input\n";
     return toInt(ExitCode::InvalidInput);
   }
+  // The buffer lies beside the .gltf that names it and takes its name: when
+  // the output is a link, the file at its end (file_io.h writes through
+  // links), so that the .gltf actually written finds its buffer.
+  std::filesystem::path bufferPath;
+  if (!bufferFile.empty()) {
+    std::error_code ec;
+    std::filesystem::path gltfFile = output;
+    if (std::filesystem::is_symlink(gltfFile, ec)) {
+      gltfFile = scene::followLinks(gltfFile).value_or(gltfFile);
+      bufferFile = gltfFile.stem().string() + ".bin";
+    }
+    bufferPath = gltfFile.parent_path() / bufferFile;
+    if (isSameFile(input, bufferPath)) {
+      err << "sfconvert: error: the buffer file '" << bufferPath.string()
+          << "' is the input file; sfconvert never writes over its input\n";
+      return toInt(ExitCode::InvalidInput);
+    }
+    if (gltfFile.filename() == bufferFile) {
+      err << "sfconvert: error: the buffer file '" << bufferPath.string()
+          << "' is the output itself; name the output NAME.gltf\n";
+      return toInt(ExitCode::Usage);
+    }
+  }
 
-  std::string readError;
-  std::optional<std::string> text = readWholeFile(input, readError);
-  if (!text) {
-    err << input << ": error: cannot read the file: " << readError << "\n";
+  InputText text = readInputText(input, readOptions);
+  if (text.tooLarge()) {
+    printAll(text.refused, json, err);
+    return toInt(ExitCode::InvalidInput);
+  }
+  if (!text.text) {
+    err << printableText(input) << ": error: cannot read the file: "
+        << printableText(text.readError) << "\n";
     return toInt(ExitCode::IoError);
   }
-  scene::ReadOptions readOptions;
   readOptions.transposedMatrices = transpose;
   readOptions.noLoss = noLoss;
   readOptions.skipUnsupported = skipUnsupported;
   readOptions.imageWidth = width;
   readOptions.imageHeight = height;
-  scene::ReadResult result = scene::parseScene(*text, input, readOptions);
+  scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
   if (!result.ok()) {
     printAll(result.diagnostics, json, err);
     return toInt(ExitCode::InvalidInput);
@@ -186,22 +217,15 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
     out.flush();
     return toInt(out ? ExitCode::Success : ExitCode::IoError);
   }
+  // The buffer first, so that the .gltf never names a buffer not there;
+  // both are written in full before either is renamed.
+  std::vector<FileToWrite> files;
+  if (!converted->sidecar.empty()) files.push_back({bufferPath, converted->sidecar});
+  files.push_back({output, converted->main});
   std::string writeError;
-  if (!converted->sidecar.empty()) {
-    // The buffer first, so that the .gltf never names a buffer not there.
-    std::filesystem::path bufferPath = std::filesystem::path(output).parent_path() / bufferFile;
-    if (isSameFile(input, bufferPath)) {
-      err << "sfconvert: error: the buffer file '" << bufferPath.string()
-          << "' is the input file; sfconvert never writes over its input\n";
-      return toInt(ExitCode::InvalidInput);
-    }
-    if (!writeFileAtomically(bufferPath, converted->sidecar, writeError)) {
-      err << bufferPath.string() << ": error: cannot write the file: " << writeError << "\n";
-      return toInt(ExitCode::IoError);
-    }
-  }
-  if (!writeFileAtomically(output, converted->main, writeError)) {
-    err << output << ": error: cannot write the file: " << writeError << "\n";
+  std::filesystem::path failed;
+  if (!writeFilesAtomically(files, writeError, &failed)) {
+    err << failed.string() << ": error: cannot write the file: " << writeError << "\n";
     return toInt(ExitCode::IoError);
   }
   return toInt(ExitCode::Success);

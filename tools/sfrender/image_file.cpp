@@ -1,16 +1,14 @@
 #include "tools/sfrender/image_file.h"
 
 #include <dlfcn.h>
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <optional>
+#include <string>
 #include <vector>
+
+#include "tools/common/file_io.h"
 
 namespace tools {
 
@@ -54,38 +52,14 @@ bool isPpm(const std::filesystem::path& path) {
   return path.extension() == ".ppm";
 }
 
-bool writePpm(const render::Image& image, int fd) {
+std::string ppmBytes(const render::Image& image) {
   std::string header =
       "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
-  std::vector<unsigned char> bytes(header.size() + image.rgb.size());
+  std::string bytes(header.size() + image.rgb.size(), '\0');
   std::copy(header.begin(), header.end(), bytes.begin());
   std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin() + header.size(),
-                 quantizeChannel);
-  const unsigned char* next = bytes.data();
-  std::size_t left = bytes.size();
-  while (left > 0) {
-    ssize_t n = ::write(fd, next, left);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    next += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-// Gives the finished temporary file the mode a new file would get (mkstemps
-// made it private) and the target's name.
-bool finishTemporary(const std::string& temporary, const std::filesystem::path& path,
-                     std::string& error) {
-  mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::chmod(temporary.c_str(), 0666 & ~mask);
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    error = std::strerror(errno);
-    ::unlink(temporary.c_str());
-    return false;
-  }
-  return true;
+                 [](float v) { return static_cast<char>(quantizeChannel(v)); });
+  return bytes;
 }
 
 }  // namespace
@@ -118,61 +92,31 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
   }
   bool floating = format == 1;
 
-  // A temporary file beside the target, keeping its extension so that the
-  // same writer handles it.
-  std::filesystem::path folder = path.parent_path();
-  std::string extension = path.extension().string();
-  std::string pattern =
-      (folder / ("." + path.stem().string() + ".tmp-XXXXXX" + extension)).string();
-  std::vector<char> name(pattern.begin(), pattern.end());
-  name.push_back('\0');
-  int fd = ::mkstemps(name.data(), static_cast<int>(extension.size()));
-  if (fd < 0) {
-    error = std::strerror(errno);
-    return false;
-  }
-  std::string temporary(name.data());
+  // The image goes to a temporary beside the target (file_io.h), which keeps
+  // the target's extension so that OpenImageIO picks the same writer.
+  StagedFile file;
+  if (!file.open(path, true, error)) return false;
   if (ppm) {
-    errno = 0;
-    bool ok = writePpm(image, fd);
-    int saved = errno;
-    // On disk before it takes the target's name (see below).
-    ok = ok && ::fsync(fd) == 0;
-    ok = ::close(fd) == 0 && ok;
+    if (!file.write(ppmBytes(image), error)) return false;
+  } else {
+    bool ok = false;
+    char message[512] = "";
+    std::string temporary = file.temporaryPath().string();
+    if (floating) {
+      ok = oiio->write(temporary.c_str(), image.width, image.height, 1, image.rgb.data(), message,
+                       sizeof message);
+    } else {
+      std::vector<unsigned char> bytes(image.rgb.size());
+      std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), quantizeChannel);
+      ok = oiio->write(temporary.c_str(), image.width, image.height, 0, bytes.data(), message,
+                       sizeof message);
+    }
     if (!ok) {
-      error = std::strerror(saved != 0 ? saved : errno);
-      if (error.empty()) error = "the image could not be written";
-      ::unlink(temporary.c_str());
+      error = message;
       return false;
     }
-    return finishTemporary(temporary, path, error);
   }
-  ::close(fd);
-
-  bool ok = false;
-  char message[512] = "";
-  if (floating) {
-    ok = oiio->write(temporary.c_str(), image.width, image.height, 1, image.rgb.data(), message,
-                     sizeof message);
-  } else {
-    std::vector<unsigned char> bytes(image.rgb.size());
-    std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), quantizeChannel);
-    ok = oiio->write(temporary.c_str(), image.width, image.height, 0, bytes.data(), message,
-                     sizeof message);
-  }
-  if (!ok) {
-    error = message;
-    ::unlink(temporary.c_str());
-    return false;
-  }
-  // On disk before it takes the target's name, so that a crash cannot leave
-  // a renamed but empty file.
-  int written = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
-  if (written >= 0) {
-    ::fsync(written);
-    ::close(written);
-  }
-  return finishTemporary(temporary, path, error);
+  return file.finish(error) && file.commit(error);
 }
 
 }  // namespace tools

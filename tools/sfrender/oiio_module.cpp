@@ -33,7 +33,10 @@ __attribute__((visibility("default"))) int sfrender_oiio_format(const char* path
 }
 
 // Writes width x height RGB pixels, floats or bytes as `floating` says, to
-// `path`; returns 1 on success, or 0 with a message in `error`.
+// `path`; returns 1 on success, or 0 with a message in `error`. `path` is
+// always image_file.cpp's temporary, which keeps the target's extension for
+// OpenImageIO to choose its writer by, and is renamed over the target only
+// once this returns: OpenImageIO writes the file in place, a part at a time.
 __attribute__((visibility("default"))) int sfrender_oiio_write(const char* path, int width,
                                                                int height, int floating,
                                                                const void* pixels, char* error,

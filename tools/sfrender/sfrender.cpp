@@ -1,8 +1,10 @@
 #include "tools/sfrender/sfrender.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -13,6 +15,7 @@
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
+#include "tools/common/input_limits.h"
 #include "tools/sfrender/image_file.h"
 
 namespace tools {
@@ -25,6 +28,40 @@ std::string withThousands(std::uint64_t n) {
   std::string digits = std::to_string(n);
   for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(i, ",");
   return digits;
+}
+
+// The hard ceilings of --spp and --depth, whatever the --max- flags say: far
+// beyond any useful render (65536 samples was the cap before the flags).
+constexpr int kSppCeiling = 65536;
+constexpr int kDepthCeiling = 1000;
+
+// What one render may ask for; the flags raise them (docs/FORMATS.md, "Limits").
+struct RenderLimits {
+  std::int64_t maxPixels = std::int64_t{8192} * 8192;
+  int maxSpp = 1024;
+  int maxDepth = 64;
+};
+
+// The setting above its limit, named with the flag that raises it, if any.
+std::optional<std::string> settingOverLimit(const render::RenderSettings& settings,
+                                            const RenderLimits& limits) {
+  std::int64_t pixels = std::int64_t{settings.width} * settings.height;
+  if (pixels > limits.maxPixels) {
+    return "--width " + std::to_string(settings.width) + " and --height " +
+           std::to_string(settings.height) + " make " +
+           withThousands(static_cast<std::uint64_t>(pixels)) + " pixels, more than the limit of " +
+           withThousands(static_cast<std::uint64_t>(limits.maxPixels)) +
+           "; raise it with --max-pixels";
+  }
+  if (settings.samplesPerPixel > limits.maxSpp) {
+    return "--spp " + std::to_string(settings.samplesPerPixel) + " is more than the limit of " +
+           std::to_string(limits.maxSpp) + " samples per pixel; raise it with --max-spp";
+  }
+  if (settings.maxDepth > limits.maxDepth) {
+    return "--depth " + std::to_string(settings.maxDepth) + " is more than the limit of " +
+           std::to_string(limits.maxDepth) + " bounces; raise it with --max-depth";
+  }
+  return std::nullopt;
 }
 
 void printStatistics(const render::RenderStatistics& s, const render::RenderSettings& settings,
@@ -44,7 +81,7 @@ void printStatistics(const render::RenderStatistics& s, const render::RenderSett
 }  // namespace
 
 int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                bool errIsTerminal) {
+                bool errIsTerminal, const AvailableMemoryProbe& availableMemory) {
   CLI::App app{"Ray traces a scene file or an instruction file (the default scene without one)",
                "sfrender"};
   app.set_version_flag("--version", SCENEFILE_VERSION);
@@ -56,21 +93,41 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
   app.add_option("scene", input, "a scene file (.sf) or an instruction file");
   app.add_option("-o,--output", output,
                  "the image to write; its extension picks the format (.ppm, .png, .exr, .tif)");
+  // 32768 a side keeps width * height within an int whatever --max-pixels.
   app.add_option("--width", settings.width, "image width in pixels")->check(CLI::Range(1, 32768));
   app.add_option("--height", settings.height, "image height in pixels")
       ->check(CLI::Range(1, 32768));
   app.add_option("--fov", settings.verticalFovDegrees, "vertical field of view in degrees")
       ->check(CLI::Range(0.001, 179.999));
+  // --spp and --depth are held to the --max- flags below, checked after
+  // parsing so that the message can name the flag that raises them.
   app.add_option("--spp", settings.samplesPerPixel, "samples per pixel, stratified")
-      ->check(CLI::Range(1, 65536));
+      ->check(CLI::Range(1, kSppCeiling));
   app.add_option("--depth", settings.maxDepth, "bounces of reflection and refraction")
-      ->check(CLI::Range(0, 64));
+      ->check(CLI::Range(0, kDepthCeiling));
   app.add_option("--threads", settings.threads, "threads to render with (0: every core)")
       ->check(CLI::Range(0, 1024));
   app.add_option("--seed", settings.seed, "seed of the sample positions");
   app.add_flag("--quiet", quiet, "print nothing but errors");
   app.add_flag("--stats", stats, "print the time, the rays and the rays per second");
+  RenderLimits limits;
+  app.add_option("--max-pixels", limits.maxPixels,
+                 "refuse an image of more pixels (width x height)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{32768} * 32768))
+      ->capture_default_str();
+  app.add_option("--max-spp", limits.maxSpp, "refuse more samples per pixel than this")
+      ->check(CLI::Range(1, kSppCeiling))
+      ->capture_default_str();
+  app.add_option("--max-depth", limits.maxDepth, "refuse more bounces than this")
+      ->check(CLI::Range(0, kDepthCeiling))
+      ->capture_default_str();
+  scene::ReadOptions readOptions;
+  addReadLimitOptions(app, readOptions);
   if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
+  if (std::optional<std::string> overLimit = settingOverLimit(settings, limits)) {
+    err << "sfrender: " << *overLimit << "\n";
+    return toInt(ExitCode::Usage);
+  }
 
   // Step 1: the scene, and where its image goes.
   scene::Scene scene;
@@ -79,13 +136,17 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
     scene = render::defaultScene();
     target = output.empty() ? fs::path(*scene.outputFile) : fs::path(output);
   } else {
-    std::string readError;
-    std::optional<std::string> text = readWholeFile(input, readError);
-    if (!text) {
-      err << input << ": error: cannot read the file: " << readError << "\n";
+    InputText text = readInputText(input, readOptions);
+    if (text.tooLarge()) {
+      printDiagnostics(text.refused, err);
+      return toInt(ExitCode::InvalidInput);
+    }
+    if (!text.text) {
+      err << printableText(input) << ": error: cannot read the file: "
+        << printableText(text.readError) << "\n";
       return toInt(ExitCode::IoError);
     }
-    scene::ReadResult result = scene::parseScene(*text, input);
+    scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
     if (result.scene.outputFile && output.empty()) {
       // OUTPUT_FILE is the instruction file's to choose, inside its folder.
       scene::checkOutputLocation(result.scene, fs::path(input).parent_path(),
@@ -102,18 +163,27 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
       target = fs::path(input).stem().string() + ".ppm";
     }
   }
-  if (!canWriteImage(target)) {
-    err << "sfrender: cannot write images named '" << target.string()
-        << "': use .ppm, .png, .exr or .tif\n";
-    return toInt(ExitCode::Usage);
-  }
+  // Before the extension's check, so that an OUTPUT_FILE naming its own
+  // instruction file is told so, not that .txt is no image format.
   if (!input.empty() && isSameFile(input, target)) {
     err << "sfrender: error: the output '" << target.string()
         << "' is the input file; sfrender never writes over its input\n";
     return toInt(ExitCode::InvalidInput);
   }
+  if (!canWriteImage(target)) {
+    err << "sfrender: cannot write images named '" << target.string()
+        << "': use .ppm, .png, .exr or .tif\n";
+    return toInt(ExitCode::Usage);
+  }
 
-  // Step 2: render, with a progress bar on a terminal.
+  // Step 2: render, with a progress bar on a terminal, if it fits in memory.
+  RenderMemoryEstimate estimate = estimateRenderMemory(scene.objects.size(), scene.lights.size(),
+                                                       settings.width, settings.height);
+  if (std::optional<std::string> refusal =
+          renderMemoryRefusal(estimate, availableMemory ? availableMemory() : std::nullopt)) {
+    err << "sfrender: error: " << *refusal << "\n";
+    return toInt(ExitCode::InvalidInput);
+  }
   render::RenderScene compiled(scene);
   render::RenderStatistics statistics;
   render::ProgressCallback progress;

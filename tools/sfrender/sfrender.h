@@ -3,10 +3,15 @@
 
 #include <ostream>
 
+#include "tools/sfrender/render_memory.h"
+
 namespace tools {
 
-// `errIsTerminal` says whether `err` is a terminal, for the progress bar.
+// `errIsTerminal` says whether `err` is a terminal, for the progress bar;
+// `availableMemory` says how much memory a render may take (tests pass their
+// own figure).
 int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                bool errIsTerminal = false);
+                bool errIsTerminal = false,
+                const AvailableMemoryProbe& availableMemory = readAvailableMemory);
 
 }  // namespace tools

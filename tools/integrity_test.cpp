@@ -1,0 +1,374 @@
+// How the tools write their outputs (file_io.h): whole or not at all, never
+// over their own input, through links as the shell would, and never outside
+// an instruction file's folder unless the user names the output. The tools
+// run in-process with their streams captured; tests/integrity/ kills real
+// runs with SIGKILL.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "libscene/output_location.h"
+#include "tools/common/exit_code.h"
+#include "tools/common/file_io.h"
+#include "tools/sfcheck/sfcheck.h"
+#include "tools/sfconvert/sfconvert.h"
+#include "tools/sfrender/sfrender.h"
+
+namespace tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScene =
+    "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+    "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
+    "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+
+// An instruction file whose first line names its image.
+std::string instructions(const std::string& outputFile) {
+  return "OUTPUT_FILE " + outputFile +
+         "\nSTART CAMERA\nLOCATION 0 0 5\nLOOK_AT 0 0 0\nEND CAMERA\n"
+         "START LIGHT\nLOCATION 3 3 3\nCOLOUR 1 1 1\nEND LIGHT\n"
+         "START OBJECT SPHERE\nSTART MATERIAL\nCOLOUR 0 0 1\nEND MATERIAL\nEND OBJECT\n";
+}
+
+int sfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  return runSfrender(argc, argv, out, err, false);
+}
+
+class IntegrityTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("sfintegrity-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "work");
+    fs::create_directories(dir_ / "outside");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Paths are relative to dir_/work; "../outside/..." lies beyond it.
+  std::string path(const std::string& name) const { return (dir_ / "work" / name).string(); }
+
+  std::string write(const std::string& name, const std::string& content) const {
+    fs::create_directories(fs::path(path(name)).parent_path());
+    std::ofstream(path(name), std::ios::binary) << content;
+    return path(name);
+  }
+
+  std::string read(const std::string& name) const {
+    std::string error;
+    return readWholeFile(path(name), error).value_or("<missing>");
+  }
+
+  // The names in a folder of dir_/work, to see that nothing stayed behind.
+  std::vector<std::string> files(const std::string& folder = "") const {
+    std::vector<std::string> out;
+    for (const auto& entry : fs::directory_iterator(dir_ / "work" / folder)) {
+      out.push_back(entry.path().filename().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  template <typename Tool>
+  int run(Tool tool, std::vector<std::string> args) {
+    out_.str("");
+    err_.str("");
+    std::vector<const char*> argv;
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    return tool(static_cast<int>(argv.size()), argv.data(), out_, err_);
+  }
+
+  bool errorSays(const std::string& text) const {
+    return err_.str().find(text) != std::string::npos;
+  }
+
+  fs::path dir_;
+  std::ostringstream out_;
+  std::ostringstream err_;
+};
+
+unsigned modeOf(const std::string& file) {
+  struct stat info {};
+  ::stat(file.c_str(), &info);
+  return info.st_mode & 0777;
+}
+
+// --- file_io.h ---------------------------------------------------------------
+
+TEST_F(IntegrityTest, NewFilesFollowTheUmaskAndReplacedFilesKeepTheirMode) {
+  mode_t before = ::umask(027);
+  std::string error;
+  ASSERT_TRUE(writeFileAtomically(path("new.sf"), "a", error)) << error;
+  EXPECT_EQ(modeOf(path("new.sf")), 0640u);
+  ::umask(022);
+  ASSERT_TRUE(writeFileAtomically(path("other.sf"), "a", error)) << error;
+  EXPECT_EQ(modeOf(path("other.sf")), 0644u);
+  // A file the user made private stays private when it is written again.
+  ::chmod(path("new.sf").c_str(), 0600);
+  ASSERT_TRUE(writeFileAtomically(path("new.sf"), "b", error)) << error;
+  EXPECT_EQ(modeOf(path("new.sf")), 0600u);
+  EXPECT_EQ(read("new.sf"), "b");
+  ::umask(before);
+}
+
+TEST_F(IntegrityTest, WritingALinkReplacesTheFileItLeadsToAndKeepsTheLink) {
+  write("real/scene.sf", "old");
+  fs::create_symlink("real/scene.sf", path("link.sf"));
+  std::string error;
+  ASSERT_TRUE(writeFileAtomically(path("link.sf"), "new", error)) << error;
+  EXPECT_TRUE(fs::is_symlink(path("link.sf")));
+  EXPECT_EQ(read("real/scene.sf"), "new");
+  EXPECT_EQ(files("real"), (std::vector<std::string>{"scene.sf"}));
+  // A link to a file not there yet creates it, as the shell's '>' does.
+  fs::create_symlink("real/later.sf", path("later.sf"));
+  ASSERT_TRUE(writeFileAtomically(path("later.sf"), "made", error)) << error;
+  EXPECT_TRUE(fs::is_symlink(path("later.sf")));
+  EXPECT_EQ(read("real/later.sf"), "made");
+  // A loop of links is no file.
+  fs::create_symlink("loop-b", path("loop-a"));
+  fs::create_symlink("loop-a", path("loop-b"));
+  EXPECT_FALSE(writeFileAtomically(path("loop-a"), "x", error));
+  EXPECT_EQ(error, "its symbolic links cannot be followed (a loop, or more than 40)");
+}
+
+TEST_F(IntegrityTest, OnlyRegularFilesAreReplaced) {
+  fs::create_directory(path("folder"));
+  std::string error;
+  EXPECT_FALSE(writeFileAtomically(path("folder"), "x", error));
+  EXPECT_EQ(error, "it is a directory");
+  EXPECT_FALSE(writeFileAtomically("/dev/null", "x", error));
+  EXPECT_EQ(error, "it is not a regular file");
+  EXPECT_FALSE(writeFileAtomically(path("missing/x.sf"), "x", error));
+  EXPECT_EQ(error, "No such file or directory");
+  EXPECT_EQ(files(), (std::vector<std::string>{"folder"}));
+}
+
+TEST_F(IntegrityTest, TemporariesAreUniqueRecognisableAndNeverLeftByAnAbandonedWrite) {
+  write("out.ppm", "old");
+  std::string error;
+  StagedFile first;
+  StagedFile second;
+  ASSERT_TRUE(first.open(path("out.ppm"), true, error)) << error;
+  ASSERT_TRUE(second.open(path("out.ppm"), false, error)) << error;
+  std::string a = first.temporaryPath().filename().string();
+  std::string b = second.temporaryPath().filename().string();
+  EXPECT_NE(a, b);
+  // .NAME.tmp-XXXXXX, and the extension again where it is kept.
+  EXPECT_EQ(a.substr(0, 13), ".out.ppm.tmp-") << a;
+  EXPECT_EQ(a.size(), std::string(".out.ppm.tmp-XXXXXX.ppm").size()) << a;
+  EXPECT_EQ(a.substr(a.size() - 4), ".ppm");
+  EXPECT_EQ(b.size(), std::string(".out.ppm.tmp-XXXXXX").size()) << b;
+  ASSERT_TRUE(first.write("first", error));
+  ASSERT_TRUE(second.write("second", error));
+  // Until the rename, the target is the old file.
+  EXPECT_EQ(read("out.ppm"), "old");
+  ASSERT_TRUE(first.commit(error)) << error;
+  EXPECT_EQ(read("out.ppm"), "first");
+  {
+    StagedFile abandoned;
+    ASSERT_TRUE(abandoned.open(path("out.ppm"), false, error));
+    ASSERT_TRUE(abandoned.write("never", error));
+  }
+  ASSERT_TRUE(second.commit(error)) << error;
+  EXPECT_EQ(read("out.ppm"), "second");
+  EXPECT_EQ(files(), (std::vector<std::string>{"out.ppm"}));
+}
+
+TEST_F(IntegrityTest, FilesThatBelongTogetherAreRenamedOnlyWhenAllAreWritten) {
+  write("pair.bin", "old bin");
+  std::string error;
+  fs::path failed;
+  // The second cannot be written, so the first is not renamed either.
+  EXPECT_FALSE(writeFilesAtomically(
+      {{path("pair.bin"), "new bin"}, {path("missing/pair.gltf"), "new gltf"}}, error, &failed));
+  EXPECT_EQ(failed, path("missing/pair.gltf"));
+  EXPECT_EQ(read("pair.bin"), "old bin");
+  EXPECT_EQ(files(), (std::vector<std::string>{"pair.bin"}));
+  ASSERT_TRUE(
+      writeFilesAtomically({{path("pair.bin"), "new bin"}, {path("pair.gltf"), "gltf"}}, error));
+  EXPECT_EQ(read("pair.bin"), "new bin");
+  EXPECT_EQ(read("pair.gltf"), "gltf");
+}
+
+// --- no tool writes over its own input --------------------------------------
+
+TEST_F(IntegrityTest, SfconvertRefusesItsInputByAnyName) {
+  std::string in = write("scene.sf", kScene);
+  fs::create_symlink("scene.sf", path("soft.sf"));
+  fs::create_hard_link(in, path("hard.sf"));
+  for (const std::string& output :
+       {in, path("soft.sf"), path("hard.sf"), (dir_ / "work" / "." / "scene.sf").string(),
+        (dir_ / "work" / "sub" / ".." / "scene.sf").string()}) {
+    fs::create_directories(dir_ / "work" / "sub");
+    EXPECT_EQ(run(runSfconvert, {"sfconvert", in, output}), toInt(ExitCode::InvalidInput))
+        << output;
+    EXPECT_TRUE(errorSays("sfconvert: error: the output '" + output +
+                          "' is the input file; sfconvert never writes over its input"))
+        << err_.str();
+    EXPECT_EQ(read("scene.sf"), kScene);
+  }
+  // A relative name from the input's own folder too.
+  fs::path before = fs::current_path();
+  fs::current_path(dir_ / "work");
+  int status = run(runSfconvert, {"sfconvert", "scene.sf", "./scene.sf", "--to", "sf"});
+  fs::current_path(before);
+  EXPECT_EQ(status, toInt(ExitCode::InvalidInput)) << err_.str();
+  EXPECT_EQ(read("scene.sf"), kScene);
+}
+
+TEST_F(IntegrityTest, SfconvertRefusesABufferFileThatIsTheInputOrTheOutput) {
+  // A scene file may bear any name, a buffer's among them.
+  std::string in = write("out.bin", kScene);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("out.gltf"), "--external-buffers"}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_TRUE(errorSays("sfconvert: error: the buffer file '" + path("out.bin") +
+                        "' is the input file; sfconvert never writes over its input"))
+      << err_.str();
+  EXPECT_EQ(read("out.bin"), kScene);
+  EXPECT_EQ(files(), (std::vector<std::string>{"out.bin"}));
+  // --to gltf into NAME.bin would write the buffer and the .gltf to one file.
+  std::string scene = write("s.sf", kScene);
+  EXPECT_EQ(
+      run(runSfconvert, {"sfconvert", scene, path("x.bin"), "--to", "gltf", "--external-buffers"}),
+      toInt(ExitCode::Usage));
+  EXPECT_TRUE(errorSays("is the output itself")) << err_.str();
+  EXPECT_EQ(files(), (std::vector<std::string>{"out.bin", "s.sf"}));
+}
+
+TEST_F(IntegrityTest, SfconvertWritesAGltfAndItsBufferThroughALink) {
+  std::string in = write("s.sf", kScene);
+  fs::create_directories(dir_ / "work" / "real");
+  fs::create_symlink("real/model.gltf", path("link.gltf"));
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("link.gltf"), "--external-buffers"}), 0)
+      << err_.str();
+  // The buffer lies beside the file written, under its name.
+  EXPECT_EQ(files("real"), (std::vector<std::string>{"model.bin", "model.gltf"}));
+  EXPECT_NE(read("real/model.gltf").find("\"uri\": \"model.bin\""), std::string::npos);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", path("real/model.gltf"), path("back.sf")}), 0)
+      << err_.str();
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("direct.sf")}), 0) << err_.str();
+  EXPECT_EQ(read("back.sf"), read("direct.sf"));
+}
+
+TEST_F(IntegrityTest, SfrenderRefusesToWriteItsSceneByAnyName) {
+  std::string scene = write("scene.sf", kScene);
+  fs::create_symlink("scene.sf", path("soft.ppm"));
+  fs::create_hard_link(scene, path("hard.ppm"));
+  // -o naming the scene: by its own name (whose extension is no image
+  // format: still told that it is the input), a link, a hard link.
+  for (const std::string& output : {scene, path("soft.ppm"), path("hard.ppm")}) {
+    EXPECT_EQ(run(sfrender, {"sfrender", scene, "-o", output, "--width", "8", "--height", "6"}),
+              toInt(ExitCode::InvalidInput))
+        << output;
+    EXPECT_TRUE(errorSays("sfrender: error: the output '" + output +
+                          "' is the input file; sfrender never writes over its input"))
+        << err_.str();
+    EXPECT_EQ(read("scene.sf"), kScene);
+  }
+  // An instruction file whose OUTPUT_FILE names itself.
+  std::string self = write("self.txt", instructions("self.txt"));
+  EXPECT_EQ(run(sfrender, {"sfrender", self, "--width", "8", "--height", "6"}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_TRUE(errorSays("is the input file; sfrender never writes over its input")) << err_.str();
+  EXPECT_EQ(read("self.txt"), instructions("self.txt"));
+  // The default name (the scene's, .ppm, in the current folder) is the scene.
+  std::string odd = write("ball.ppm", kScene);
+  fs::path before = fs::current_path();
+  fs::current_path(dir_ / "work");
+  int status = run(sfrender, {"sfrender", "ball.ppm", "--width", "8", "--height", "6"});
+  fs::current_path(before);
+  EXPECT_EQ(status, toInt(ExitCode::InvalidInput)) << err_.str();
+  EXPECT_EQ(read("ball.ppm"), kScene);
+}
+
+// --- OUTPUT_FILE stays in its folder without -o ------------------------------
+
+TEST_F(IntegrityTest, SfrenderKeepsOutputFileInItsFolder) {
+  std::string outside = (dir_ / "outside").string();
+  write("../outside/victim.ppm", "precious");
+  fs::create_directory_symlink("../outside", path("out"));
+  fs::create_symlink("../outside/victim.ppm", path("to-victim.ppm"));
+  fs::create_symlink("../outside/new.ppm", path("to-new.ppm"));  // leads to nothing yet
+  fs::create_symlink("to-new.ppm", path("chain.ppm"));           // a link to that link
+  for (const std::string& name :
+       {outside + "/abs.ppm", std::string("../outside/up.ppm"), std::string("a/../../x.ppm"),
+        std::string("out/through-folder.ppm"), std::string("to-victim.ppm"),
+        std::string("to-new.ppm"), std::string("chain.ppm")}) {
+    std::string file = write("escape.txt", instructions(name));
+    EXPECT_EQ(run(sfrender, {"sfrender", file, "--width", "8", "--height", "6"}),
+              toInt(ExitCode::InvalidInput))
+        << name;
+    EXPECT_TRUE(errorSays("error: OUTPUT_FILE '" + name +
+                          "' leaves the instruction file's folder [output-file-escapes]"))
+        << err_.str();
+    // sfcheck warns of the same.
+    EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", file}), 1) << name;
+    EXPECT_TRUE(errorSays("[output-file-escapes]")) << err_.str();
+  }
+  EXPECT_EQ(read("../outside/victim.ppm"), "precious");
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir_ / "outside")) {
+    left.push_back(entry.path().filename().string());
+  }
+  EXPECT_EQ(left, (std::vector<std::string>{"victim.ppm"}));
+
+  // A link that stays inside is followed; -o is the user's own choice.
+  fs::create_directory(path("renders"));
+  fs::create_symlink("renders/latest.ppm", path("latest.ppm"));
+  std::string inside = write("inside.txt", instructions("latest.ppm"));
+  EXPECT_EQ(run(sfrender, {"sfrender", inside, "--width", "8", "--height", "6", "--quiet"}), 0)
+      << err_.str();
+  EXPECT_TRUE(fs::is_symlink(path("latest.ppm")));
+  EXPECT_EQ(read("renders/latest.ppm").substr(0, 9), "P6\n8 6\n25");
+  std::string escaping = write("escape.txt", instructions("../outside/victim.ppm"));
+  EXPECT_EQ(run(sfrender,
+                {"sfrender", escaping, "-o", path("chosen.ppm"), "--width", "8", "--height", "6"}),
+            0)
+      << err_.str();
+  EXPECT_EQ(read("../outside/victim.ppm"), "precious");
+}
+
+// glTF (in sfconvert's extras) and POV-Ray (in its exact-values comment)
+// carry an OUTPUT_FILE too, and sfrender confines it the same way.
+TEST_F(IntegrityTest, SfrenderConfinesTheOutputFileOfEveryFormat) {
+  std::string source = write("source.txt", instructions("../outside/x.ppm"));
+  for (std::string name : {"carried.gltf", "carried.glb", "carried.pov"}) {
+    ASSERT_EQ(run(runSfconvert, {"sfconvert", source, path(name)}), 0) << err_.str();
+    EXPECT_EQ(run(sfrender, {"sfrender", path(name), "--width", "8", "--height", "6"}),
+              toInt(ExitCode::InvalidInput))
+        << name;
+    EXPECT_TRUE(errorSays("OUTPUT_FILE '../outside/x.ppm' leaves the instruction file's folder"))
+        << name << ": " << err_.str();
+  }
+  EXPECT_TRUE(fs::is_empty(dir_ / "outside"));
+}
+
+TEST(OutputLocation, FollowsLinksAsAWriteWould) {
+  fs::path dir = fs::temp_directory_path() / ("sflinks-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "in");
+  fs::create_symlink("../elsewhere/x.ppm", dir / "in" / "dangling.ppm");
+  fs::create_symlink("dangling.ppm", dir / "in" / "chain.ppm");
+  fs::create_symlink("sub/x.ppm", dir / "in" / "inside.ppm");
+  fs::path base = fs::canonical(dir);
+  EXPECT_EQ(scene::followLinks(dir / "in" / "chain.ppm"), base / "elsewhere" / "x.ppm");
+  EXPECT_EQ(scene::followLinks(dir / "in" / "plain.ppm"), base / "in" / "plain.ppm");
+  EXPECT_FALSE(scene::outputStaysInFolder(dir / "in", "chain.ppm"));
+  EXPECT_FALSE(scene::outputStaysInFolder(dir / "in", "dangling.ppm"));
+  EXPECT_TRUE(scene::outputStaysInFolder(dir / "in", "inside.ppm"));
+  EXPECT_TRUE(scene::outputStaysInFolder(dir / "in", "plain.ppm"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tools
