@@ -27,5 +27,41 @@ bench: build
 	@bash bench/render_bench.sh $(BUILD_DIR)
 	@bash bench/render_suite.sh $(BUILD_DIR)
 
+# The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer:
+# the first finding, a leak included, aborts the program and fails its test.
+# tests/sanitizers/lsan.supp says which leaks are not ours, and why.
+SANITIZE_DIR ?= build-sanitize
+SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1 \
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp:print_suppressions=0
+.PHONY: test-sanitize
+test-sanitize: deps
+	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DSCENEFILE_SANITIZE=address,undefined >/dev/null
+	@cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	@cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS)
+
+# The tools' end-to-end tests (ctest label "valgrind") with every run of sfcheck,
+# sfconvert and sfrender under valgrind: any invalid access, use of an
+# uninitialised value, or definite or indirect leak fails the test.
+VALGRIND_DIR ?= build-valgrind
+VALGRIND = valgrind;-q;--error-exitcode=99;--leak-check=full;--errors-for-leak-kinds=definite,indirect;--show-leak-kinds=definite,indirect;--suppressions=$(CURDIR)/tests/sanitizers/valgrind.supp
+.PHONY: test-valgrind
+test-valgrind: deps
+	@cmake -S . -B $(VALGRIND_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  "-DSCENEFILE_TOOL_LAUNCHER=$(VALGRIND)" >/dev/null
+	@cmake --build $(VALGRIND_DIR) -j $(JOBS) --target sfcheck sfconvert sfrender sfrender_oiio
+	@cd $(VALGRIND_DIR) && ctest -L valgrind --output-on-failure -j $(JOBS)
+
+# libFuzzer on every reader and on sfconvert's whole path, under ASan and
+# UBSan (tests/fuzz, scripts/fuzz.sh): FUZZ_SECONDS per target (FUZZ_JOBS
+# jobs each); fuzz-ci is the bounded run of CI. Findings fail the target.
+FUZZ_SECONDS ?= 600
+.PHONY: fuzz fuzz-ci
+fuzz: deps
+	@bash scripts/fuzz.sh $(FUZZ_SECONDS)
+fuzz-ci: deps
+	@bash scripts/fuzz.sh 60
+
 clean:
 	rm -rf $(BUILD_DIR)

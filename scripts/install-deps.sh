@@ -18,6 +18,12 @@ packages=(
   # Mesa's software OpenGL, types with xdotool and takes screenshots with xwd
   # and netpbm.
   libglfw3-dev libepoxy-dev libgl1-mesa-dri xvfb xauth xdotool x11-apps netpbm
+  # The hostile-input tests measure sfcheck's peak memory with GNU time.
+  time
+  # make test-valgrind runs the tools' end-to-end tests under valgrind.
+  valgrind
+  # make fuzz builds the libFuzzer targets with clang and its runtime.
+  clang libclang-rt-14-dev
 )
 # The glTF Validator runs on Node.js; a machine with node and npm already
 # (from Debian or elsewhere) keeps them.

@@ -14,13 +14,13 @@ std::size_t utf8CharacterLength(std::string_view text) {
   if (lead >= 0xC2 && lead <= 0xDF) return continuation(1) ? 2 : 0;
   if (lead >= 0xE0 && lead <= 0xEF) {
     if (!continuation(1) || !continuation(2)) return 0;
-    if (lead == 0xE0 && byte(1) < 0xA0) return 0;  // overlong
+    if (lead == 0xE0 && byte(1) < 0xA0) return 0;   // overlong
     if (lead == 0xED && byte(1) >= 0xA0) return 0;  // a surrogate
     return 3;
   }
   if (lead >= 0xF0 && lead <= 0xF4) {
     if (!continuation(1) || !continuation(2) || !continuation(3)) return 0;
-    if (lead == 0xF0 && byte(1) < 0x90) return 0;  // overlong
+    if (lead == 0xF0 && byte(1) < 0x90) return 0;   // overlong
     if (lead == 0xF4 && byte(1) >= 0x90) return 0;  // past U+10FFFF
     return 4;
   }
@@ -74,8 +74,7 @@ void printDiagnostic(const scene::Diagnostic& d, std::ostream& out, bool warning
   }
 }
 
-void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out,
-                      bool warningsAsErrors) {
+void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out, bool warningsAsErrors) {
   for (const scene::Diagnostic& d : list.items()) printDiagnostic(d, out, warningsAsErrors);
 }
 

@@ -67,8 +67,8 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
     if (input.tooLarge()) {
       errors += input.refused.errorCount();
       if (json) {
-        report["files"].push_back(
-            {{"file", printableText(file)}, {"diagnostics", diagnosticsToJson(input.refused, werror)}});
+        report["files"].push_back({{"file", printableText(file)},
+                                   {"diagnostics", diagnosticsToJson(input.refused, werror)}});
       } else {
         printDiagnostics(input.refused, err, werror);
       }

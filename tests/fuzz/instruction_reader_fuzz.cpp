@@ -1,0 +1,22 @@
+// libFuzzer target: the instruction file reader on any bytes. A file it
+// accepts must write back to an instruction file that reads again to the
+// same scene.
+#include "libscene/instruction_reader.h"
+#include "libscene/instruction_writer.h"
+#include "tests/fuzz/fuzz_input.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  scene::ReadResult read = scene::parseInstructionFile(fuzz::asText(data, size), "fuzz.txt");
+  if (!read.ok()) return 0;
+  scene::DiagnosticList losses;
+  std::optional<std::string> written = scene::writeInstructionFile(read.scene, {}, losses);
+  if (!written) return 0;
+  scene::ReadResult again = scene::parseInstructionFile(*written, "again.txt");
+  if (!again.ok()) {
+    fuzz::propertyFailed("an instruction file read and written cannot be read back", *written);
+  }
+  if (!(again.scene == read.scene)) {
+    fuzz::propertyFailed("an instruction file read, written and read again differs", *written);
+  }
+  return 0;
+}

@@ -1,0 +1,13 @@
+// libFuzzer target: the POV-Ray reader on any bytes. It must stop on every
+// input, in bounded time and memory, whatever it accepts or refuses.
+#include "libscene/pov_reader.h"
+#include "tests/fuzz/fuzz_input.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  scene::PovImport imported = scene::importPov(fuzz::asText(data, size), "fuzz.pov");
+  // Every object the reader reports must have its closing brace inside the text.
+  for (std::size_t end : imported.objectEnds) {
+    if (end >= size) fuzz::propertyFailed("an object ends past the end of the text", "");
+  }
+  return 0;
+}
