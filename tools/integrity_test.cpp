@@ -20,16 +20,12 @@
 #include "tools/sfcheck/sfcheck.h"
 #include "tools/sfconvert/sfconvert.h"
 #include "tools/sfrender/sfrender.h"
+#include "tools/tool_test_support.h"
 
 namespace tools {
 namespace {
 
 namespace fs = std::filesystem;
-
-const std::string kScene =
-    "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
-    "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
-    "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
 
 // An instruction file whose first line names its image.
 std::string instructions(const std::string& outputFile) {
@@ -39,17 +35,10 @@ std::string instructions(const std::string& outputFile) {
          "START OBJECT SPHERE\nSTART MATERIAL\nCOLOUR 0 0 1\nEND MATERIAL\nEND OBJECT\n";
 }
 
-int sfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  return runSfrender(argc, argv, out, err, false);
-}
-
 class IntegrityTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sfintegrity-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
+    dir_ = freshTestFolder("sfintegrity");
     fs::create_directories(dir_ / "work");
     fs::create_directories(dir_ / "outside");
   }
@@ -71,21 +60,12 @@ class IntegrityTest : public ::testing::Test {
 
   // The names in a folder of dir_/work, to see that nothing stayed behind.
   std::vector<std::string> files(const std::string& folder = "") const {
-    std::vector<std::string> out;
-    for (const auto& entry : fs::directory_iterator(dir_ / "work" / folder)) {
-      out.push_back(entry.path().filename().string());
-    }
-    std::sort(out.begin(), out.end());
-    return out;
+    return fileNamesIn(dir_ / "work" / folder);
   }
 
   template <typename Tool>
-  int run(Tool tool, std::vector<std::string> args) {
-    out_.str("");
-    err_.str("");
-    std::vector<const char*> argv;
-    for (const std::string& a : args) argv.push_back(a.c_str());
-    return tool(static_cast<int>(argv.size()), argv.data(), out_, err_);
+  int run(Tool tool, const std::vector<std::string>& args) {
+    return runTool(tool, args, out_, err_);
   }
 
   bool errorSays(const std::string& text) const {
@@ -203,7 +183,7 @@ TEST_F(IntegrityTest, FilesThatBelongTogetherAreRenamedOnlyWhenAllAreWritten) {
 // --- no tool writes over its own input --------------------------------------
 
 TEST_F(IntegrityTest, SfconvertRefusesItsInputByAnyName) {
-  std::string in = write("scene.sf", kScene);
+  std::string in = write("scene.sf", kValidScene);
   fs::create_symlink("scene.sf", path("soft.sf"));
   fs::create_hard_link(in, path("hard.sf"));
   for (const std::string& output :
@@ -215,7 +195,7 @@ TEST_F(IntegrityTest, SfconvertRefusesItsInputByAnyName) {
     EXPECT_TRUE(errorSays("sfconvert: error: the output '" + output +
                           "' is the input file; sfconvert never writes over its input"))
         << err_.str();
-    EXPECT_EQ(read("scene.sf"), kScene);
+    EXPECT_EQ(read("scene.sf"), kValidScene);
   }
   // A relative name from the input's own folder too.
   fs::path before = fs::current_path();
@@ -223,21 +203,21 @@ TEST_F(IntegrityTest, SfconvertRefusesItsInputByAnyName) {
   int status = run(runSfconvert, {"sfconvert", "scene.sf", "./scene.sf", "--to", "sf"});
   fs::current_path(before);
   EXPECT_EQ(status, toInt(ExitCode::InvalidInput)) << err_.str();
-  EXPECT_EQ(read("scene.sf"), kScene);
+  EXPECT_EQ(read("scene.sf"), kValidScene);
 }
 
 TEST_F(IntegrityTest, SfconvertRefusesABufferFileThatIsTheInputOrTheOutput) {
   // A scene file may bear any name, a buffer's among them.
-  std::string in = write("out.bin", kScene);
+  std::string in = write("out.bin", kValidScene);
   EXPECT_EQ(run(runSfconvert, {"sfconvert", in, path("out.gltf"), "--external-buffers"}),
             toInt(ExitCode::InvalidInput));
   EXPECT_TRUE(errorSays("sfconvert: error: the buffer file '" + path("out.bin") +
                         "' is the input file; sfconvert never writes over its input"))
       << err_.str();
-  EXPECT_EQ(read("out.bin"), kScene);
+  EXPECT_EQ(read("out.bin"), kValidScene);
   EXPECT_EQ(files(), (std::vector<std::string>{"out.bin"}));
   // --to gltf into NAME.bin would write the buffer and the .gltf to one file.
-  std::string scene = write("s.sf", kScene);
+  std::string scene = write("s.sf", kValidScene);
   EXPECT_EQ(
       run(runSfconvert, {"sfconvert", scene, path("x.bin"), "--to", "gltf", "--external-buffers"}),
       toInt(ExitCode::Usage));
@@ -246,7 +226,7 @@ TEST_F(IntegrityTest, SfconvertRefusesABufferFileThatIsTheInputOrTheOutput) {
 }
 
 TEST_F(IntegrityTest, SfconvertWritesAGltfAndItsBufferThroughALink) {
-  std::string in = write("s.sf", kScene);
+  std::string in = write("s.sf", kValidScene);
   fs::create_directories(dir_ / "work" / "real");
   fs::create_symlink("real/model.gltf", path("link.gltf"));
   ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("link.gltf"), "--external-buffers"}), 0)
@@ -261,7 +241,7 @@ TEST_F(IntegrityTest, SfconvertWritesAGltfAndItsBufferThroughALink) {
 }
 
 TEST_F(IntegrityTest, SfrenderRefusesToWriteItsSceneByAnyName) {
-  std::string scene = write("scene.sf", kScene);
+  std::string scene = write("scene.sf", kValidScene);
   fs::create_symlink("scene.sf", path("soft.ppm"));
   fs::create_hard_link(scene, path("hard.ppm"));
   // -o naming the scene: by its own name (whose extension is no image
@@ -273,7 +253,7 @@ TEST_F(IntegrityTest, SfrenderRefusesToWriteItsSceneByAnyName) {
     EXPECT_TRUE(errorSays("sfrender: error: the output '" + output +
                           "' is the input file; sfrender never writes over its input"))
         << err_.str();
-    EXPECT_EQ(read("scene.sf"), kScene);
+    EXPECT_EQ(read("scene.sf"), kValidScene);
   }
   // An instruction file whose OUTPUT_FILE names itself.
   std::string self = write("self.txt", instructions("self.txt"));
@@ -282,13 +262,13 @@ TEST_F(IntegrityTest, SfrenderRefusesToWriteItsSceneByAnyName) {
   EXPECT_TRUE(errorSays("is the input file; sfrender never writes over its input")) << err_.str();
   EXPECT_EQ(read("self.txt"), instructions("self.txt"));
   // The default name (the scene's, .ppm, in the current folder) is the scene.
-  std::string odd = write("ball.ppm", kScene);
+  std::string odd = write("ball.ppm", kValidScene);
   fs::path before = fs::current_path();
   fs::current_path(dir_ / "work");
   int status = run(sfrender, {"sfrender", "ball.ppm", "--width", "8", "--height", "6"});
   fs::current_path(before);
   EXPECT_EQ(status, toInt(ExitCode::InvalidInput)) << err_.str();
-  EXPECT_EQ(read("ball.ppm"), kScene);
+  EXPECT_EQ(read("ball.ppm"), kValidScene);
 }
 
 // --- OUTPUT_FILE stays in its folder without -o ------------------------------

@@ -17,16 +17,12 @@
 #include "tools/sfconvert/sfconvert.h"
 #include "tools/sfrender/image_file.h"
 #include "tools/sfrender/sfrender.h"
+#include "tools/tool_test_support.h"
 
 namespace tools {
 namespace {
 
 namespace fs = std::filesystem;
-
-const std::string kValidScene =
-    "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
-    "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
-    "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
 
 const std::string kInstructions =
     "OUTPUT_FILE pic.ppm\nSTART CAMERA\nLOCATION 0 0 5\nLOOK_AT 0 0 0\nEND CAMERA\n"
@@ -35,20 +31,9 @@ const std::string kInstructions =
     "START TRANSFORMATION\nSCALE 0.5 0.5 0.5\nROTATE_Y 1.5707963267948966\n"
     "END TRANSFORMATION\nEND OBJECT\n";
 
-// sfrender as a test runs it: standard error is no terminal.
-int sfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  return runSfrender(argc, argv, out, err, false);
-}
-
 class ToolTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("sftools-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = freshTestFolder("sftools"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
@@ -64,22 +49,11 @@ class ToolTest : public ::testing::Test {
   }
 
   // Files in the folder, to see that nothing half-written stayed behind.
-  std::vector<std::string> files() const {
-    std::vector<std::string> out;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      out.push_back(entry.path().filename().string());
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-  }
+  std::vector<std::string> files() const { return fileNamesIn(dir_); }
 
   template <typename Tool>
-  int run(Tool tool, std::vector<std::string> args) {
-    out_.str("");
-    err_.str("");
-    std::vector<const char*> argv;
-    for (const std::string& a : args) argv.push_back(a.c_str());
-    return tool(static_cast<int>(argv.size()), argv.data(), out_, err_);
+  int run(Tool tool, const std::vector<std::string>& args) {
+    return runTool(tool, args, out_, err_);
   }
 
   fs::path dir_;

@@ -5,9 +5,6 @@
 // - a scene file comes back bit for bit through .sf, glTF, GLB and POV-Ray;
 // - an instruction file written from a scene reads back to one that writes
 //   the same instruction file.
-#include <filesystem>
-#include <system_error>
-
 #include "libscene/conversion.h"
 #include "libscene/scene_reader.h"
 #include "libscene/sf_writer.h"
@@ -16,14 +13,6 @@
 namespace {
 
 using scene::OutputFormat;
-
-std::filesystem::path emptyFolder() {
-  std::error_code ignored;
-  std::filesystem::path folder =
-      std::filesystem::temp_directory_path(ignored) / "scenefile-fuzz-empty";
-  std::filesystem::create_directories(folder, ignored);
-  return folder;
-}
 
 const char* nameFor(OutputFormat format) {
   switch (format) {
@@ -67,7 +56,7 @@ std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, Output
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::filesystem::path folder = emptyFolder();
+  static const std::filesystem::path folder = fuzz::emptyFolder();
   scene::ReadResult read =
       scene::parseScene(fuzz::asText(data, size), (folder / "fuzz-input").string());
   if (!read.ok()) return 0;

@@ -6,13 +6,26 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 namespace fuzz {
 
 inline std::string_view asText(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
+}
+
+// An empty folder of the fuzzers' own, where the glTF reader looks for
+// external buffers: an input that names a file cannot reach the machine's
+// files through it.
+inline std::filesystem::path emptyFolder() {
+  std::error_code ignored;
+  std::filesystem::path folder =
+      std::filesystem::temp_directory_path(ignored) / "scenefile-fuzz-empty";
+  std::filesystem::create_directories(folder, ignored);
+  return folder;
 }
 
 // A broken property is a finding like a crash: libFuzzer saves the input

@@ -1,0 +1,64 @@
+// What the tools' in-process tests (tools_test.cpp, integrity_test.cpp)
+// share: a valid scene, sfrender as a test runs it, and a scratch folder of
+// each test's own.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tools/sfrender/sfrender.h"
+
+namespace tools {
+
+// A camera, a light and a red sphere: valid without a warning.
+inline const std::string kValidScene =
+    "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+    "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
+    "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+
+// sfrender as a test runs it: standard error is no terminal.
+inline int sfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  return runSfrender(argc, argv, out, err, false);
+}
+
+// An empty folder for the running test alone, `prefix`-PID-TEST under the
+// system's temporary folder, so that tests run in parallel never meet.
+inline std::filesystem::path freshTestFolder(const std::string& prefix) {
+  std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                 (prefix + "-" + std::to_string(::getpid()) + "-" +
+                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+// Runs a tool's entry point (runSfcheck, sfrender, ...) on `args`, the
+// program's name first, with `out` and `err` emptied first.
+template <typename Tool>
+int runTool(Tool tool, const std::vector<std::string>& args, std::ostringstream& out,
+            std::ostringstream& err) {
+  out.str("");
+  err.str("");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  return tool(static_cast<int>(argv.size()), argv.data(), out, err);
+}
+
+// The names in a folder, sorted: to see that nothing half-written stayed.
+inline std::vector<std::string> fileNamesIn(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace tools
