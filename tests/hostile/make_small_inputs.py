@@ -7,12 +7,23 @@ Each input's expected diagnostics (NAME.expect beside it) were written after
 reading what sfcheck says about it: a new input here needs its .expect too.
 """
 import base64
+import importlib.util
 import json
 import random
 import struct
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent.parent / "testdata" / "hostile"
+
+# The glTF test-data generator's cube and JSON text, the same as testdata/gltf/
+# is made of (its file name has a '-', so it is loaded by path).
+_spec = importlib.util.spec_from_file_location(
+    "make_gltf_testdata", ROOT.parent.parent / "scripts" / "make-gltf-testdata.py"
+)
+_gltf_testdata = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_gltf_testdata)
+cube = _gltf_testdata.cube
+gltf_text = _gltf_testdata.text
 
 
 def write(relative, data):
@@ -254,27 +265,6 @@ def gltf_doc(
             }
         ],
     }
-
-
-def cube():
-    """The 24 corners and 36 indices of the cube from -1 to 1."""
-    positions, indices = [], []
-    for axis in range(3):
-        for sign in (1, -1):
-            n = [0, 0, 0]
-            n[axis] = sign
-            u = [0, 0, 0]
-            u[(axis + 1) % 3] = 1
-            v = [n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]]
-            first = len(positions)
-            for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
-                positions.append(tuple(n[i] + a * u[i] + b * v[i] for i in range(3)))
-            indices += [first, first + 1, first + 2, first, first + 2, first + 3]
-    return positions, indices
-
-
-def gltf_text(doc):
-    return json.dumps(doc, indent=1) + "\n"
 
 
 def glb(json_bytes, bin_bytes=b"", json_length=None, bin_length=None, total=None):
