@@ -37,3 +37,16 @@ warn_unless_release() {
   build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$1/CMakeCache.txt" 2>/dev/null || true)
   [[ $build_type == Release ]] || log "warning: $1 is a '${build_type:-unknown}' build, not Release"
 }
+
+# What the reports say of the machine and the build: the CPU's model, the
+# memory, the compiler of BUILD's CMake cache, POV-Ray's version and the
+# commit of ROOT (each "unknown" or empty when it cannot be told).
+cpu_model() { sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1; }
+memory_total() { awk '/^MemTotal:/ { printf "%.1f GB", $2 * 1024 / 1e9 }' /proc/meminfo 2>/dev/null || true; }
+compiler_of() {
+  local compiler
+  compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$1/CMakeCache.txt" 2>/dev/null || true)
+  "${compiler:-c++}" --version 2>/dev/null | head -n 1 || true
+}
+povray_version() { povray --version 2>&1 | sed -n 's/^\(POV-Ray [0-9.]*[^ ]*\).*/\1/p' | head -n 1; }
+short_commit() { git -C "$1" rev-parse --short HEAD 2>/dev/null || echo unknown; }

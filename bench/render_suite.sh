@@ -97,12 +97,11 @@ replace_section() {
   fi
 }
 
-cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1)
-mem_total=$(awk '/^MemTotal:/ { printf "%.1f GB", $2 * 1024 / 1e9 }' /proc/meminfo 2>/dev/null || true)
-compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null || true)
-compiler_version=$("${compiler:-c++}" --version 2>/dev/null | head -n 1 || true)
-pov_version=$(povray --version 2>&1 | sed -n 's/^\(POV-Ray [0-9.]*[^ ]*\).*/\1/p' | head -n 1)
-commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+cpu=$(cpu_model)
+mem_total=$(memory_total)
+compiler_version=$(compiler_of "$build")
+pov_version=$(povray_version)
+commit=$(short_commit "$root")
 dirty=$(git -C "$root" status --porcelain -- renderer tools libscene 2>/dev/null | awk '{ print $2 }' | tr '\n' ' ')
 if [[ -n $dirty ]]; then commit="$commit with uncommitted changes in: ${dirty% }"; fi
 built=$(date -u -r "$bin/sfrender" '+%Y-%m-%d %H:%M UTC')

@@ -128,11 +128,10 @@ ratio=$(calc "$peak / $model")
 speed_ok=$(awk -v v="$mbps" 'BEGIN { print (v >= 200) ? "yes" : "no" }')
 memory_ok=$(awk -v v="$ratio" 'BEGIN { print (v <= 2) ? "yes" : "no" }')
 
-cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1)
-mem_total=$(awk '/^MemTotal:/ { printf "%.1f GB", $2 * 1024 / 1e9 }' /proc/meminfo 2>/dev/null || true)
-compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null || true)
-compiler_version=$("${compiler:-c++}" --version 2>/dev/null | head -n 1 || true)
-commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+cpu=$(cpu_model)
+mem_total=$(memory_total)
+compiler_version=$(compiler_of "$build")
+commit=$(short_commit "$root")
 if [[ -n $(git -C "$root" status --porcelain 2>/dev/null) ]]; then commit="$commit (with uncommitted changes)"; fi
 
 section=$work/section.md
@@ -178,7 +177,7 @@ section=$work/section.md
     pmed=$(median "${pov_parse[@]}")
     pbound=$(median "${pov_bound[@]}")
     pwall=$(median "${pov_wall[@]}")
-    pov_version=$(povray --version 2>&1 | sed -n 's/^\(POV-Ray [0-9.]*[^ ]*\).*/\1/p' | head -n 1)
+    pov_version=$(povray_version)
     echo
     echo "### Against POV-Ray"
     echo
