@@ -106,9 +106,6 @@ std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec
       cost[b - 1] += rightCount ? rightCount * right.surfaceArea() : 0.0;
     }
     int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
-    // Step 3: a leaf is cheaper when splitting costs more than testing all.
-    double leafCost = count * bounds.surfaceArea();
-    if (count <= kMaxLeafItems && cost[best] >= leafCost) return makeLeaf();
     std::uint32_t* split = std::partition(items_.data() + begin, items_.data() + end,
                                           [&](std::uint32_t item) { return binOf(item) <= best; });
     std::uint32_t at = static_cast<std::uint32_t>(split - items_.data());
