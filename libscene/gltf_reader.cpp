@@ -347,9 +347,9 @@ std::string deviationText(double value) {
   return text;
 }
 
-// Names come from the file: control bytes (a terminal's escape sequences)
-// are shown as \xNN and a long name is cut, so that a message stays one
-// harmless line.
+// Names come from the file: a long one is cut, so that a message stays one
+// line. Control bytes stay as they are; the tools print every message
+// through tools::printableText, which shows them as \xNN.
 std::string quoted(const std::string& name) {
   if (name.empty()) return "";
   constexpr std::size_t kMaxShown = 80;
@@ -358,20 +358,7 @@ std::string quoted(const std::string& name) {
   while (end < name.size() && end > 0 && (static_cast<unsigned char>(name[end]) & 0xC0) == 0x80) {
     --end;
   }
-  std::string shown;
-  for (std::size_t i = 0; i < end; ++i) {
-    unsigned char c = static_cast<unsigned char>(name[i]);
-    if (c < 0x20 || c == 0x7F) {
-      constexpr char kHex[] = "0123456789ABCDEF";
-      shown += "\\x";
-      shown += kHex[c >> 4];
-      shown += kHex[c & 15];
-    } else {
-      shown += static_cast<char>(c);
-    }
-  }
-  if (end < name.size()) shown += "...";
-  return " '" + shown + "'";
+  return " '" + name.substr(0, end) + (end < name.size() ? "..." : "") + "'";
 }
 
 std::string nodeLabel(const tinygltf::Model& model, int node) {
