@@ -3,6 +3,7 @@
 #include "libscene/instruction_writer.h"
 #include "libscene/number.h"
 #include "libscene/sf_writer.h"
+#include "libscene/validation.h"
 
 namespace scene {
 
@@ -30,6 +31,9 @@ void reportMaterialLosses(const Scene& scene, Severity severity, DiagnosticList&
 
 std::optional<std::string> convertScene(const Scene& scene, OutputFormat format,
                                         const ConversionOptions& options, DiagnosticList& out) {
+  // Checked once here, so that no writer is ever given a NaN or an infinity,
+  // whatever built the scene.
+  if (!checkSceneFinite(scene, out)) return std::nullopt;
   switch (format) {
     case OutputFormat::SceneFile: {
       std::size_t errorsBefore = out.errorCount();
@@ -73,6 +77,7 @@ std::optional<ConvertedFiles> convertSceneToFiles(const Scene& scene, OutputForm
                                                   const ConversionOptions& options,
                                                   DiagnosticList& out) {
   if (format == OutputFormat::Gltf && !options.gltf.externalBuffer.empty()) {
+    if (!checkSceneFinite(scene, out)) return std::nullopt;
     GltfWriteOptions writeOptions = options.gltf;
     writeOptions.binary = false;
     writeOptions.noLoss = options.noLoss;

@@ -102,6 +102,7 @@ constexpr std::array kCodes = {
     CodeEntry{DiagnosticCode::PovDegenerate, "pov-degenerate"},
     CodeEntry{DiagnosticCode::FileTooLarge, "file-too-large"},
     CodeEntry{DiagnosticCode::TooManyObjects, "too-many-objects"},
+    CodeEntry{DiagnosticCode::ValueNotFinite, "value-not-finite"},
 };
 
 }  // namespace

@@ -118,6 +118,8 @@ enum class DiagnosticCode : std::uint16_t {
   // Limits on what one input may cost (ReadOptions).
   FileTooLarge,
   TooManyObjects,
+  // Numbers: a value that is not finite once evaluated, composed or converted.
+  ValueNotFinite,
 };
 
 // Every code, in declaration order: for documentation and coverage tests.

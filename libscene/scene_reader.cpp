@@ -8,6 +8,7 @@
 #include "libscene/pov_reader.h"
 #include "libscene/sf_reader.h"
 #include "libscene/text_lines.h"
+#include "libscene/validation.h"
 
 namespace scene {
 
@@ -61,7 +62,25 @@ bool checkFileSize(std::uint64_t bytes, const ReadOptions& options, DiagnosticLi
   return false;
 }
 
+namespace {
+
+ReadResult readInDetectedFormat(std::string_view text, std::string fileName,
+                                const ReadOptions& options);
+
+}  // namespace
+
 ReadResult parseScene(std::string_view text, std::string fileName, const ReadOptions& options) {
+  ReadResult result = readInDetectedFormat(text, std::move(fileName), options);
+  // The readers report a value that is not finite where it was made; this is
+  // the last line, so that no accepted scene holds one whatever a reader missed.
+  if (result.ok()) checkSceneFinite(result.scene, result.diagnostics);
+  return result;
+}
+
+namespace {
+
+ReadResult readInDetectedFormat(std::string_view text, std::string fileName,
+                                const ReadOptions& options) {
   if (text.size() > options.maxFileSize) {
     ReadResult refused{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
     checkFileSize(text.size(), options, refused.diagnostics);
@@ -108,5 +127,7 @@ ReadResult parseScene(std::string_view text, std::string fileName, const ReadOpt
       "a scene file starts with a CAMERA record, an instruction file with OUTPUT_FILE";
   return result;
 }
+
+}  // namespace
 
 }  // namespace scene

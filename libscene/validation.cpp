@@ -168,6 +168,69 @@ void checkMaterialValue(MaterialProperty property, double value, SourceSpan wher
   }
 }
 
+namespace {
+
+bool allFinite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool allFinite(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      if (!std::isfinite(m[c][r])) return false;
+    }
+  }
+  return true;
+}
+
+bool allFinite(const Material& material) {
+  if (!allFinite(material.colour)) return false;
+  for (MaterialProperty p : kMaterialProperties) {
+    if (!std::isfinite(materialValue(material, p))) return false;
+  }
+  return true;
+}
+
+void reportNotFinite(SourceSpan where, const std::string& what, DiagnosticList& out) {
+  out.error(DiagnosticCode::ValueNotFinite, where, what + " holds a value that is not finite")
+      .hint = "every number of a scene must be a finite double";
+}
+
+}  // namespace
+
+bool checkSceneFinite(const Scene& scene, DiagnosticList& out) {
+  std::size_t before = out.errorCount();
+  const Camera& camera = scene.camera;
+  if (!allFinite(camera.matrix) || !allFinite(camera.colour) ||
+      (camera.lookAt && !allFinite(*camera.lookAt))) {
+    reportNotFinite(camera.span, "the camera", out);
+  }
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    if (!allFinite(light.matrix) || !allFinite(light.colour)) {
+      reportNotFinite(light.span, "light " + std::to_string(i + 1), out);
+    }
+  }
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& object = scene.objects[i];
+    std::string what =
+        std::string(objectKindName(object.kind)) + " object " + std::to_string(i + 1);
+    if (!allFinite(object.matrix) || !allFinite(object.material)) {
+      reportNotFinite(object.span, what, out);
+      continue;
+    }
+    if (!object.transforms) continue;
+    for (const TransformOp& op : *object.transforms) {
+      if (!allFinite(op.value)) {
+        reportNotFinite(op.span.known() ? op.span : object.span,
+                        std::string(transformKindName(op.kind)) + " of " + what, out);
+        break;
+      }
+    }
+  }
+  return out.errorCount() == before;
+}
+
 void checkSceneLevel(const Scene& scene, DiagnosticList& out) {
   if (scene.lights.empty()) {
     out.warning(DiagnosticCode::NoLight, scene.camera.span, "scene has no LIGHT")

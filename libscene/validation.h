@@ -58,6 +58,14 @@ void checkMaterialValue(MaterialProperty property, double value, SourceSpan wher
 // Rules about the scene as a whole: a warning when nothing is lit.
 void checkSceneLevel(const Scene& scene, DiagnosticList& out);
 
+// Every number of the scene is finite: camera, lights, materials, matrices,
+// LOOK_AT and transform lists. Each record holding a NaN or an infinity gets
+// one value-not-finite error at its span (at the transform for a transform
+// list); true when there is none. The readers call it last, so no accepted
+// scene holds a non-finite number, and convertScene first, so no writer is
+// ever given one.
+bool checkSceneFinite(const Scene& scene, DiagnosticList& out);
+
 // Every rule above on a scene built in memory (by an importer, say).
 DiagnosticList validateScene(const Scene& scene, std::string file = {});
 
