@@ -2,18 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <utility>
-
 #include <glm/common.hpp>
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/matrix.hpp>
+#include <limits>
+#include <utility>
 
 namespace scene {
 
-glm::dmat3 linearPart(const glm::dmat4& m) { return glm::dmat3(m); }
+glm::dmat3 linearPart(const glm::dmat4& m) {
+  return glm::dmat3(m);
+}
 
-glm::dmat4 transposed(const glm::dmat4& m) { return glm::transpose(m); }
+glm::dmat4 transposed(const glm::dmat4& m) {
+  return glm::transpose(m);
+}
 
 glm::dvec3 singularValues(const glm::dmat3& a) {
   glm::dvec3 sigma = glm::abs(rotationScaleRotation(a).sigma);
@@ -107,6 +110,34 @@ bool conditionNumberExceeds(const glm::dmat3& a, double limit) {
     if (kappaF > 3.0 * limit) return true;
   }
   return conditionNumber(a) > limit;
+}
+
+namespace {
+
+// The power of two that brings the largest component of v into [1, 2); 0
+// for a zero or non-finite vector.
+int scaleExponent(const glm::dvec3& v) {
+  double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  if (!(largest > 0.0) || !std::isfinite(largest)) return 0;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return exponent - 1;
+}
+
+}  // namespace
+
+double scaledLength(const glm::dvec3& v) {
+  int e = scaleExponent(v);
+  glm::dvec3 w(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e));
+  return std::ldexp(std::sqrt(w.x * w.x + w.y * w.y + w.z * w.z), e);
+}
+
+glm::dvec3 scaledNormalize(const glm::dvec3& v) {
+  int e = scaleExponent(v);
+  glm::dvec3 w(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e));
+  double length = std::sqrt(w.x * w.x + w.y * w.y + w.z * w.z);
+  if (!(length > 0.0)) return glm::dvec3(0.0);
+  return w / length;
 }
 
 }  // namespace scene

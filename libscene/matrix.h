@@ -33,6 +33,16 @@ struct RotationScaleRotation {
 };
 RotationScaleRotation rotationScaleRotation(const glm::dmat3& a);
 
+// The length of v with no overflow or underflow on the way: v is first
+// scaled by a power of two (exactly) so that its largest component lies in
+// [1, 2). A vector of components 1e-300 or 1e300 has a length, not 0 or
+// infinity; the result itself overflows only when the length does.
+double scaledLength(const glm::dvec3& v);
+
+// v / |v| by the same scaling, so that any finite non-zero vector, however
+// short or long, has a direction. Zero for the zero vector.
+glm::dvec3 scaledNormalize(const glm::dvec3& v);
+
 // The transpose of a 4x4, as a file written column by column needs.
 glm::dmat4 transposed(const glm::dmat4& m);
 

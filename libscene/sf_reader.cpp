@@ -116,8 +116,7 @@ class SceneFileParser {
       }
       reportUnknownKeyword(cursor_, 0, kRecordNames, kExpectedRecord, out_);
       // "sphere" is still a sphere for the rest of the checks.
-      if (auto guess = suggestKeyword(name, kRecordNames);
-          guess && guess->size() == name.size()) {
+      if (auto guess = suggestKeyword(name, kRecordNames); guess && guess->size() == name.size()) {
         kind = recordKindFromName(*guess);
       }
     }
@@ -133,6 +132,9 @@ class SceneFileParser {
                  "a record name stands alone on its line");
     }
     noteRecordOrder(kind, nameSpan);
+    // A CAMERA with a bad number or a missing line is still the file's
+    // camera: its own error says what is wrong, "no CAMERA record" would not.
+    if (kind == RecordKind::Camera) cameraNamed_ = true;
     readBody(kind, name, nameSpan, false);
   }
 
@@ -280,10 +282,10 @@ class SceneFileParser {
           .hint = "a scene file starts with a CAMERA record, an instruction file with OUTPUT_FILE";
       return;
     }
-    if (!cameraSpan_) {
-      out_.error(DiagnosticCode::MissingCamera, *firstRecord_, "scene has no CAMERA record")
-          .hint = "the first record of a scene file must be the CAMERA";
-    } else if (!firstIsCamera_) {
+    if (!cameraSpan_ && !cameraNamed_) {
+      out_.error(DiagnosticCode::MissingCamera, *firstRecord_, "scene has no CAMERA record").hint =
+          "the first record of a scene file must be the CAMERA";
+    } else if (!firstIsCamera_ && cameraSpan_) {
       out_.error(DiagnosticCode::CameraNotFirst, *firstRecord_,
                  "the first record must be the CAMERA, not " + firstName_)
           .notes.push_back({*cameraSpan_, "the CAMERA is here"});
@@ -304,6 +306,7 @@ class SceneFileParser {
   bool firstIsCamera_ = false;
   std::string firstName_;
   std::optional<SourceSpan> cameraSpan_;
+  bool cameraNamed_ = false;  // a CAMERA record was named, read cleanly or not
   // Where the values of the record being read stand, for its diagnostics.
   RecordSpans spans_;
 };

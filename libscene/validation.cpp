@@ -1,10 +1,9 @@
 #include "libscene/validation.h"
 
 #include <cmath>
-#include <string>
-
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <string>
 
 #include "libscene/matrix.h"
 #include "libscene/number.h"
@@ -44,8 +43,8 @@ void checkColour(const glm::dvec3& colour, RecordRole role, const RecordSpans& s
     // -0.0 is not below 0: it is black, like 0.
     if (colour[i] < 0.0) {
       out.error(DiagnosticCode::NegativeColour, spans.colour[i],
-                describeRole(role) + " colour has a negative " + kChannelNames[i] +
-                    " component (" + formatNumber(colour[i]) + ")");
+                describeRole(role) + " colour has a negative " + kChannelNames[i] + " component (" +
+                    formatNumber(colour[i]) + ")");
     } else if (role == RecordRole::Object && colour[i] > 1.0) {
       out.warning(DiagnosticCode::ColourAboveOne, spans.colour[i],
                   std::string("object colour ") + kChannelNames[i] + " component " +
@@ -104,8 +103,10 @@ void checkObjectMatrix(const glm::dmat4& matrix, std::string_view what, SourceSp
 void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticList& out) {
   glm::dvec3 forward = -glm::dvec3(matrix[2]);
   glm::dvec3 up = glm::dvec3(matrix[1]);
-  double lf = glm::length(forward);
-  double lu = glm::length(up);
+  // Scaled by a power of two first: axes of length 1e-300 or 1e300 are as
+  // valid as unit ones, and the renderer orthonormalises them the same way.
+  double lf = scaledLength(forward);
+  double lu = scaledLength(up);
   if (!std::isfinite(lf) || !std::isfinite(lu)) {
     // Entries near 1e308 overflow the length; such a vector is not zero.
     out.error(DiagnosticCode::CameraDegenerate, where,
@@ -119,7 +120,8 @@ void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticLis
                        : "camera forward vector (third column) is zero");
     return;
   }
-  if (glm::length(glm::cross(forward, up)) <= kParallelTolerance * lf * lu) {
+  if (glm::length(glm::cross(scaledNormalize(forward), scaledNormalize(up))) <=
+      kParallelTolerance) {
     out.error(DiagnosticCode::CameraDegenerate, where,
               "camera forward and up vectors (third and second columns) are parallel");
     return;
@@ -130,7 +132,8 @@ void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticLis
   glm::dmat3 gram = glm::transpose(a) * a;
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
-    for (int r = 0; r < 3; ++r) worst = std::max(worst, std::abs(gram[c][r] - (r == c ? 1.0 : 0.0)));
+    for (int r = 0; r < 3; ++r)
+      worst = std::max(worst, std::abs(gram[c][r] - (r == c ? 1.0 : 0.0)));
   }
   if (worst > kParallelTolerance || glm::determinant(a) < 0.0) {
     out.warning(DiagnosticCode::CameraScaled, where,
@@ -233,8 +236,8 @@ bool checkSceneFinite(const Scene& scene, DiagnosticList& out) {
 
 void checkSceneLevel(const Scene& scene, DiagnosticList& out) {
   if (scene.lights.empty()) {
-    out.warning(DiagnosticCode::NoLight, scene.camera.span, "scene has no LIGHT")
-        .hint = "nothing will be lit; every object shows its ambient colour at most";
+    out.warning(DiagnosticCode::NoLight, scene.camera.span, "scene has no LIGHT").hint =
+        "nothing will be lit; every object shows its ambient colour at most";
   }
 }
 
