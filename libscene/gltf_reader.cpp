@@ -11,6 +11,7 @@
 #include <glm/matrix.hpp>
 #include <limits>
 #include <map>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
@@ -18,7 +19,9 @@
 #include <vector>
 
 #include "libscene/glb.h"
+#include "libscene/gltf_document.h"
 #include "libscene/gltf_mapping.h"
+#include "libscene/mesh.h"
 #include "libscene/mesh_fit.h"
 #include "libscene/number.h"
 #include "libscene/reader_support.h"
@@ -386,6 +389,24 @@ double distanceOfPbr(const gltf::PbrMaterial& a, const gltf::PbrMaterial& b) {
   return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
 }
 
+const std::string& ownExtras(const std::vector<std::string>& extras, int index) {
+  static const std::string kNone;
+  return index >= 0 && static_cast<std::size_t>(index) < extras.size() ? extras[index] : kNone;
+}
+
+// Whether the file's weighted count of objects (gltf::objectWeight) is
+// within options.maxGltfNodes; when not, says so.
+bool withinObjectLimit(std::size_t objects, const ReadOptions& options, DiagnosticList& out) {
+  if (objects <= options.maxGltfNodes) return true;
+  out.error(DiagnosticCode::GltfTooManyNodes, {},
+            "the file has " + std::to_string(objects) +
+                " nodes and other objects (a material counting 5, a camera or a light 2), more "
+                "than the limit of " +
+                std::to_string(options.maxGltfNodes))
+      .hint = "raise the limit with --max-nodes if the file is meant to be this large";
+  return false;
+}
+
 // The extras tell whether they still describe the file's own data: a
 // difference above this (relative) means the file was edited elsewhere.
 constexpr double kExtrasAgreement = 1e-9;
@@ -397,8 +418,10 @@ struct FittedPart {
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const ReadOptions& options, ReadResult& result)
+  Importer(const tinygltf::Model& model, const gltf::OwnExtras& own, const ReadOptions& options,
+           ReadResult& result)
       : model_(model),
+        own_(own),
         scene_(result.scene),
         out_(result.diagnostics),
         loss_(options.noLoss ? Severity::Error : Severity::Warning),
@@ -584,7 +607,7 @@ class Importer {
     // A node holds at most one light, counted here, and one mesh, whose
     // objects are counted as they are added (roomForOne).
     if (nodeLight(index) >= 0 && !roomForOne(index)) return;
-    if (std::optional<RecordExtras> extras = recordExtras(node.extras_json_string)) {
+    if (std::optional<RecordExtras> extras = recordExtras(ownExtras(own_.nodes, index))) {
       if (useExtras(index, world, *extras)) return;
       out_.note(DiagnosticCode::GltfExtrasStale, {},
                 nodeLabel(model_, index) + " no longer matches the " + extras->record +
@@ -632,7 +655,8 @@ class Importer {
     }
     ObjectKind kind = *objectKindFromName(extras.record);
     if (node.mesh < 0 || model_.meshes[node.mesh].primitives.size() != 1 ||
-        gltf::matrixDistance(gltf::withinFloatRange(extras.matrix), world) > kExtrasAgreement) {
+        gltf::matrixDistance(gltf::withinFloatRange(extras.matrix), world) > kExtrasAgreement ||
+        !holdsWrittenMesh(node.mesh, kind)) {
       return false;
     }
     Object object;
@@ -644,12 +668,79 @@ class Importer {
     return true;
   }
 
+  // Whether the mesh holds the vertices the writer writes for `kind`
+  // (libscene/mesh.*): a node edited to point at another mesh keeps its old
+  // extras, and they are believed only while the mesh is still their kind's.
+  // Cached by accessor, which the writer shares among a kind's meshes.
+  bool holdsWrittenMesh(int meshIndex, ObjectKind kind) {
+    const tinygltf::Primitive& prim = model_.meshes[meshIndex].primitives[0];
+    auto position = prim.attributes.find("POSITION");
+    if ((prim.mode >= 0 && prim.mode != TINYGLTF_MODE_TRIANGLES) ||
+        position == prim.attributes.end()) {
+      return false;
+    }
+    auto [cached, fresh] = writtenMesh_.emplace(std::pair{position->second, kind}, false);
+    if (!fresh) return cached->second;
+    const tinygltf::Accessor& accessor = model_.accessors[position->second];
+    std::optional<int> segments = writtenSegments(kind, accessor.count);
+    if (!segments || accessor.sparse.isSparse || accessor.bufferView < 0) return false;
+    bool skipped = false;
+    std::optional<std::vector<double>> xyz =
+        readAccessor(position->second, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                     "POSITION", maxVertices_, verticesRead_, skipped);
+    if (!xyz || xyz->empty()) return false;
+    TriangleMesh want = primitiveMesh(kind, *segments, static_cast<float>(std::abs((*xyz)[0])));
+    if (want.positions.size() * 3 != xyz->size()) return false;
+    for (std::size_t i = 0; i < want.positions.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        if (static_cast<double>(want.positions[i][c]) != (*xyz)[3 * i + c]) return false;
+      }
+    }
+    cached->second = true;
+    return true;
+  }
+
+  // The --tessellation that gives the writer's mesh of `kind` this many
+  // vertices, if one does.
+  static std::optional<int> writtenSegments(ObjectKind kind, std::size_t vertices) {
+    for (int n = kMinSegments; n <= kMaxSegments; ++n) {
+      std::size_t want = 0;
+      switch (kind) {
+        case ObjectKind::Sphere:
+          want = 2 + static_cast<std::size_t>(n) * (std::max(2, n / 2) - 1);
+          break;
+        case ObjectKind::Cylinder:
+          want = 4 * static_cast<std::size_t>(n) + 2;
+          break;
+        case ObjectKind::Cube:
+          want = 24;
+          break;
+        case ObjectKind::Plane:
+          want = 4;
+          break;
+      }
+      if (want == vertices) return n;
+    }
+    return std::nullopt;
+  }
+
   // --- Cameras and lights -------------------------------------------------
 
   void reportFov(int camera) {
     const tinygltf::Camera& c = model_.cameras[camera];
     if (c.type != "perspective" || !(c.perspective.yfov > 0.0)) return;
     double degrees = std::round(c.perspective.yfov * 180.0 / std::numbers::pi * 1e6) / 1e6;
+    // sfrender's --fov range; a yfov from pi is reported with the file's
+    // other values (gltf_document.h).
+    if (!(degrees >= 0.001 && degrees <= 179.999)) {
+      if (c.perspective.yfov < std::numbers::pi) {
+        out_.report(loss_, DiagnosticCode::GltfIgnored, {},
+                    "the camera's vertical field of view of " + formatNumber(c.perspective.yfov) +
+                        " radians is outside what sfrender renders (0.001 to 179.999 degrees), "
+                        "and is dropped");
+      }
+      return;
+    }
     out_.note(DiagnosticCode::CameraFov, {},
               "the camera's vertical field of view is " + formatNumber(degrees) +
                   " degrees, which a scene file cannot hold")
@@ -788,7 +879,7 @@ class Importer {
     pbr.ior = factor("KHR_materials_ior", "ior");
     pbr.transmission = factor("KHR_materials_transmission", "transmissionFactor");
     pbr.specular = factor("KHR_materials_specular", "specularFactor");
-    if (std::optional<Material> exact = materialExtras(m.extras_json_string)) {
+    if (std::optional<Material> exact = materialExtras(ownExtras(own_.materials, index))) {
       if (distanceOfPbr(gltf::pbrFromMaterial(*exact, kind), pbr) <= kExtrasAgreement) {
         return *exact;
       }
@@ -1109,11 +1200,13 @@ class Importer {
   }
 
   const tinygltf::Model& model_;
+  const gltf::OwnExtras& own_;
   Scene& scene_;
   DiagnosticList& out_;
   Severity loss_;
   bool haveCamera_ = false;
   std::map<int, std::vector<FittedPart>> fitted_;
+  std::map<std::pair<int, ObjectKind>, bool> writtenMesh_;
   std::set<int> reportedMaterials_;
   std::vector<std::pair<std::size_t, glm::dvec3>> pendingDirectional_;
   std::size_t maxObjects_;
@@ -1168,6 +1261,9 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
               "the JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     return result;
   }
+  // Counted in the bytes, before anything is parsed: a node costs three
+  // bytes of text and hundreds in memory.
+  if (!withinObjectLimit(gltf::countTopLevelObjects(jsonText), options, out)) return result;
   Json doc;
   try {
     doc = Json::parse(jsonText);
@@ -1205,6 +1301,10 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
               "asset.version is '" + version + "'; only glTF 2.0 is read");
     return result;
   }
+  if (!withinObjectLimit(gltf::countObjects(doc), options, out)) return result;
+  gltf::reportProblems(gltf::checkDocument(doc, options.noLoss),
+                       binary ? std::string_view{} : bytes, bytes.size() - jsonText.size(), out);
+  if (out.hasErrors()) return result;
   if (doc.contains("extensionsRequired") && doc["extensionsRequired"].is_array()) {
     for (const Json& name : doc["extensionsRequired"]) {
       if (name.is_string() && !kReadableRequired.count(name.get<std::string>())) {
@@ -1246,9 +1346,13 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
       outputFile = (*sf)["outputFile"].get<std::string>();
     }
   }
-  // Images are never needed: tinygltf does not even see them.
+  // Images are never needed: tinygltf does not even see them, nor any
+  // extras or extension that is not read; the document is let go before
+  // tinygltf parses its own.
   doc.erase("images");
+  gltf::OwnExtras own = gltf::trimForTinygltf(doc);
   std::string cleaned = doc.dump();
+  doc = Json();
 
   tinygltf::TinyGLTF loader;
   Confinement confinement;
@@ -1274,16 +1378,22 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
                                           static_cast<unsigned int>(cleaned.size()),
                                           confinement.folder.string());
     }
+  } catch (const std::bad_alloc&) {
+    // Out of memory is no property of the file: the tools report it.
+    throw;
   } catch (const std::exception& e) {
     err = e.what();
     loaded = false;
   }
+  // tinygltf catches what its JSON parser throws, std::bad_alloc too, and
+  // returns its text: that is no fault of the file, and goes on as itself.
+  if (!loaded && err.starts_with(std::bad_alloc().what())) throw std::bad_alloc();
   if (!loaded) {
     out.error(DiagnosticCode::GltfInvalid, {}, "not a valid glTF 2.0 file: " + firstLine(err));
     return result;
   }
 
-  Importer importer(model, options, result);
+  Importer importer(model, own, options, result);
   importer.run();
   if (out.hasErrors()) return result;
   // What the file gave must hold as a scene file's values would.

@@ -19,6 +19,9 @@ inline constexpr std::size_t kDefaultMaxObjects = 5'000'000;
 // POSITION vertices read from one glTF file, all meshes together; indices
 // are held to three times as many.
 inline constexpr std::size_t kDefaultMaxGltfVertices = std::size_t{1} << 24;
+// Nodes and every other glTF object (docs/GLTF.md, "Hostile files"):
+// tinygltf holds each in hundreds of bytes, however few the file spends.
+inline constexpr std::size_t kDefaultMaxGltfNodes = 1'000'000;
 
 struct ReadOptions {
   // Read each 4x4 of a scene file column by column: the repair for files
@@ -42,6 +45,9 @@ struct ReadOptions {
   std::size_t maxObjects = kDefaultMaxObjects;
   // glTF: more POSITION vertices than this in the file is gltf-too-large.
   std::size_t maxGltfVertices = kDefaultMaxGltfVertices;
+  // glTF: more nodes and other objects (gltf::objectWeight) than this is
+  // gltf-too-many-nodes, refused before tinygltf reads the file.
+  std::size_t maxGltfNodes = kDefaultMaxGltfNodes;
 };
 
 // The scene and everything found while reading it. The scene is complete

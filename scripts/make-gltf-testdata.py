@@ -314,10 +314,112 @@ def hostile():
     write(h + "glb-bin-shorter-than-buffer.glb", glb(json.dumps(doc).encode(), data))
 
 
+def scene_gltf():
+    """A valid glTF of a cube, a camera and a point light, for the files
+    below that change one value of it."""
+    cp, ci = cube()
+    doc = mesh_gltf(cp, ci, nodes=[
+        {"name": "Box", "mesh": 0},
+        {"name": "Eye", "camera": 0, "translation": [0, 1, 10]},
+        {"name": "Lamp", "translation": [5, 5, 5],
+         "extensions": {"KHR_lights_punctual": {"light": 0}}}])
+    doc["scenes"] = [{"nodes": [0, 1, 2]}]
+    doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]
+    doc["extensionsUsed"] = ["KHR_lights_punctual"]
+    doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"type": "point", "color": [1, 1, 1], "intensity": 2}]}}
+    return doc
+
+
+def changed(doc, path, value):
+    """A copy of doc with the value at path (a list of keys and indices)
+    set, or removed when value is DELETE."""
+    doc = json.loads(json.dumps(doc))
+    at = doc
+    for key in path[:-1]:
+        at = at[key]
+    if value is DELETE:
+        del at[path[-1]]
+    else:
+        at[path[-1]] = value
+    return doc
+
+
+DELETE = object()
+
+
+def hardening():
+    """Indices of the wrong type or range, meshes without primitives, and
+    values that glTF bounds (docs/GLTF.md, "Hostile files"): errors at the
+    JSON pointer of the value, in testdata/gltf-hostile/; what a scene file
+    cannot hold is a loss, in testdata/gltf/."""
+    h = "gltf-hostile/"
+    base = scene_gltf()
+    light = ["extensions", "KHR_lights_punctual", "lights", 0]
+    errors = {
+        "index-node-mesh-negative": (["nodes", 0, "mesh"], -1),
+        "index-node-mesh-fraction": (["nodes", 0, "mesh"], 0.5),
+        "index-node-mesh-string": (["nodes", 0, "mesh"], "0"),
+        "index-node-mesh-null": (["nodes", 0, "mesh"], None),
+        "index-node-mesh-2-pow-32": (["nodes", 0, "mesh"], 4294967296),
+        "index-scene-nodes-string": (["scenes", 0, "nodes", 1], "1"),
+        "index-scene-nodes-negative": (["scenes", 0, "nodes", 2], -3),
+        "index-children-fraction": (["nodes", 1, "children"], [2.5]),
+        "index-position-negative": (["meshes", 0, "primitives", 0, "attributes", "POSITION"], -1),
+        "index-indices-null": (["meshes", 0, "primitives", 0, "indices"], None),
+        "index-light-string": (["nodes", 2, "extensions", "KHR_lights_punctual", "light"], "0"),
+        "index-material-beyond-2-pow-32": (["meshes", 0, "primitives", 0, "material"],
+                                           2 ** 32 + 1),
+        "mesh-primitives-empty": (["meshes", 0, "primitives"], []),
+        "mesh-primitives-missing": (["meshes", 0, "primitives"], DELETE),
+        "camera-yfov-zero": (["cameras", 0, "perspective", "yfov"], 0),
+        "camera-yfov-negative": (["cameras", 0, "perspective", "yfov"], -0.5),
+        "camera-aspect-ratio-zero": (["cameras", 0, "perspective", "aspectRatio"], 0),
+        "light-intensity-negative": (light + ["intensity"], -2),
+        "light-range-zero": (light + ["range"], 0),
+        "light-colour-times-intensity-overflows": (light + ["color"], [2, 1, 1]),
+        "material-emission-above-one": (["materials"], [{"emissiveFactor": [2, 0, 0]}]),
+    }
+    for name, (path, value) in errors.items():
+        doc = changed(base, path, value)
+        if name == "light-colour-times-intensity-overflows":
+            doc = changed(doc, light + ["intensity"], 1e308)
+        if name == "material-emission-above-one":
+            doc = changed(doc, ["meshes", 0, "primitives", 0, "material"], 0)
+        write(h + name + ".gltf", text(doc))
+    # Losses: valid files whose values a scene file cannot hold.
+    lossy = changed(base, ["cameras", 0, "perspective", "aspectRatio"], 1.5)
+    lossy = changed(lossy, light + ["range"], 20)
+    lossy = changed(lossy, ["materials"], [{"name": "glow", "emissiveFactor": [1, 0.5, 0]}])
+    lossy = changed(lossy, ["meshes", 0, "primitives", 0, "material"], 0)
+    write("gltf/emission-aspect-ratio-range.gltf", text(lossy))
+    write("gltf/camera-yfov-above-pi.gltf",
+          text(changed(base, ["cameras", 0, "perspective", "yfov"], 3.5)))
+    write("gltf/camera-yfov-tiny.gltf",
+          text(changed(base, ["cameras", 0, "perspective", "yfov"], 1e-9)))
+    own_edited()
+
+
+def own_edited():
+    """Our own file (sfconvert testdata/valid/all-primitives.sf, kept as
+    gltf/own-all-primitives.gltf) with the SPHERE's node pointed at the
+    CUBE's mesh: its extras still say SPHERE, and are stale."""
+    own = ROOT / "gltf" / "own-all-primitives.gltf"
+    if not own.exists():
+        return
+    doc = json.loads(own.read_text())
+    names = [n.get("name", "") for n in doc["nodes"]]
+    sphere = next(i for i, n in enumerate(names) if n.startswith("SPHERE"))
+    cube_node = next(i for i, n in enumerate(names) if n.startswith("CUBE"))
+    doc["nodes"][sphere]["mesh"] = doc["nodes"][cube_node]["mesh"]
+    write("gltf/own-sphere-on-cube-mesh.gltf", text(doc))
+
+
 def main():
     third_party()
     edited_elsewhere()
     hostile()
+    hardening()
 
 
 if __name__ == "__main__":

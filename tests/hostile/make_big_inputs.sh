@@ -119,6 +119,21 @@ repeat_line CAMERA 100000 >camera-repeated-100000.sf
   printf '{"name": "last", "mesh": 7}]}\n'
 } >node-chain-100000.gltf
 
+# Nodes without a mesh, which cost three bytes of text each and hundreds of
+# bytes once read: two million, past the node limit (refused before any
+# parse), and 999,999 with one scene, at the limit of a million objects,
+# read whole until the walk meets a cycle at node 0.
+{
+  printf '{"asset": {"version": "2.0"}, "nodes": ['
+  repeat_line '{},' 1999999 | tr -d '\n'
+  printf '{}]}\n'
+} >gltf-nodes-2000000.gltf
+{
+  printf '{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [0]},'
+  repeat_line '{},' 999997 | tr -d '\n'
+  printf '{}]}\n'
+} >gltf-nodes-at-limit-cycle.gltf
+
 # A buffer that is a link, beside the glTF, to /dev/zero: reading it would
 # never end.
 ln -sf /dev/zero zero.bin

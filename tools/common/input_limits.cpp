@@ -29,6 +29,11 @@ void addReadLimitOptions(CLI::App& app, scene::ReadOptions& options) {
                  "glTF: refuse a file with more mesh vertices than this")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--max-nodes", options.maxGltfNodes,
+                 "glTF: refuse a file with more nodes and other objects than this (a material "
+                 "counts 5, a camera or a light 2)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
 }
 
 InputText readInputText(const std::string& file, const scene::ReadOptions& options) {

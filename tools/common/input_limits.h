@@ -10,8 +10,8 @@
 
 namespace tools {
 
-// --max-file-size (CLI11's size suffixes: 512MiB, 2GB), --max-objects and
-// --max-vertices, stored into `options`.
+// --max-file-size (CLI11's size suffixes: 512MiB, 2GB), --max-objects,
+// --max-vertices and --max-nodes, stored into `options`.
 void addReadLimitOptions(CLI::App& app, scene::ReadOptions& options);
 
 // An input file's bytes, read only when it is within options.maxFileSize.

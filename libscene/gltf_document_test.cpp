@@ -1,0 +1,183 @@
+#include "libscene/gltf_document.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "libscene/gltf_reader.h"
+#include "libscene/gltf_writer.h"
+#include "libscene/scene_reader.h"
+#include "libscene/test_support.h"
+
+namespace scene {
+namespace {
+
+using Json = nlohmann::json;
+using testing::withCode;
+
+// A file of no mesh at all, with a camera: valid but for what a test sets.
+Json cameraOnly() {
+  return Json::parse(R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
+    "nodes": [{"camera": 0}],
+    "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}]})");
+}
+
+TEST(GltfDocument, AnIndexOfTheWrongTypeIsAnErrorAtItsPointerAndLine) {
+  for (const char* value : {"-1", "0.5", "\"0\"", "null", "4294967296", "true", "[0]"}) {
+    std::string text =
+        std::string("{\"asset\": {\"version\": \"2.0\"},\n\"nodes\": [{},\n {\"mesh\": ") + value +
+        "}],\n\"meshes\": []}";
+    for (bool noLoss : {false, true}) {
+      ReadOptions options;
+      options.noLoss = noLoss;
+      ReadResult read = parseGltf(text, "i.gltf", ".", options);
+      ASSERT_FALSE(read.ok()) << value;
+      const Diagnostic& d = read.diagnostics.items().front();
+      EXPECT_EQ(d.message.rfind("/nodes/1/mesh ", 0), 0u) << d.message;
+      EXPECT_EQ(d.span.line, 3u) << value;
+      EXPECT_EQ(d.span.column, 11u) << value;
+    }
+  }
+}
+
+TEST(GltfDocument, EveryIndexTheReaderFollowsIsChecked) {
+  const char* cases[][2] = {
+      {"/scenes/0/nodes/0", R"({"scenes": [{"nodes": ["0"]}]})"},
+      {"/nodes/0/children/0", R"({"nodes": [{"children": [-2]}]})"},
+      {"/meshes/0/primitives/0/attributes/POSITION",
+       R"({"meshes": [{"primitives": [{"attributes": {"POSITION": 1.5}}]}]})"},
+      {"/meshes/0/primitives/0/indices",
+       R"({"meshes": [{"primitives": [{"attributes": {}, "indices": null}]}]})"},
+      {"/meshes/0/primitives", R"({"meshes": [{"primitives": []}]})"},
+      {"/meshes/0", R"({"meshes": [{"name": "no primitives"}]})"},
+      {"/bufferViews/0/buffer", R"({"bufferViews": [{"buffer": 7, "byteLength": 4}]})"},
+      {"/nodes/0", R"({"nodes": [3]})"},
+  };
+  for (const auto& [pointer, text] : cases) {
+    Json doc = Json::parse(text);
+    doc["asset"] = {{"version", "2.0"}};
+    std::vector<gltf::DocumentProblem> found = gltf::checkDocument(doc, false);
+    ASSERT_EQ(found.size(), 1u) << text;
+    EXPECT_EQ(found[0].pointer, pointer);
+    EXPECT_EQ(found[0].severity, Severity::Error);
+  }
+}
+
+TEST(GltfDocument, ValuesGltfBoundsAreErrorsAndWhatAScenefileCannotHoldIsALoss) {
+  struct Case {
+    const char* pointer;
+    Json value;
+    Severity severity;
+    DiagnosticCode code;
+  };
+  const Case cases[] = {
+      {"/cameras/0/perspective/yfov", 0.0, Severity::Error, DiagnosticCode::GltfInvalid},
+      {"/cameras/0/perspective/yfov", -1.0, Severity::Error, DiagnosticCode::GltfInvalid},
+      {"/cameras/0/perspective/yfov", 3.5, Severity::Warning, DiagnosticCode::GltfIgnored},
+      {"/cameras/0/perspective/aspectRatio", 0.0, Severity::Error, DiagnosticCode::GltfInvalid},
+      {"/cameras/0/perspective/aspectRatio", 1.5, Severity::Warning, DiagnosticCode::GltfIgnored},
+  };
+  for (const Case& c : cases) {
+    Json doc = cameraOnly();
+    doc[Json::json_pointer(c.pointer)] = c.value;
+    std::vector<gltf::DocumentProblem> found = gltf::checkDocument(doc, false);
+    ASSERT_EQ(found.size(), 1u) << c.pointer << " " << c.value;
+    EXPECT_EQ(found[0].pointer, c.pointer);
+    EXPECT_EQ(found[0].severity, c.severity);
+    EXPECT_EQ(found[0].code, c.code);
+    if (c.severity == Severity::Warning) {
+      EXPECT_EQ(gltf::checkDocument(doc, true)[0].severity, Severity::Error);
+    }
+  }
+}
+
+TEST(GltfDocument, LightsAndEmission) {
+  Json doc = cameraOnly();
+  doc["extensions"]["KHR_lights_punctual"]["lights"] =
+      Json::parse(R"([{"type": "point", "intensity": -1}, {"type": "point", "range": 5},
+                      {"type": "point", "color": [2, 0, 0], "intensity": 1e308},
+                      {"type": "point", "range": 0}])");
+  doc["materials"] =
+      Json::parse(R"([{"emissiveFactor": [0, 0.5, 0]}, {"emissiveFactor": [0, 0, 0]}])");
+  std::vector<gltf::DocumentProblem> found = gltf::checkDocument(doc, false);
+  ASSERT_EQ(found.size(), 5u);
+  EXPECT_EQ(found[0].pointer, "/materials/0/emissiveFactor");
+  EXPECT_EQ(found[0].severity, Severity::Warning);
+  EXPECT_EQ(found[1].pointer, "/extensions/KHR_lights_punctual/lights/0/intensity");
+  EXPECT_EQ(found[1].code, DiagnosticCode::GltfInvalid);
+  EXPECT_EQ(found[2].pointer, "/extensions/KHR_lights_punctual/lights/1/range");
+  EXPECT_EQ(found[2].severity, Severity::Warning);
+  EXPECT_EQ(found[3].pointer, "/extensions/KHR_lights_punctual/lights/2/intensity");
+  EXPECT_EQ(found[3].code, DiagnosticCode::ValueNotFinite);
+  EXPECT_EQ(found[4].pointer, "/extensions/KHR_lights_punctual/lights/3/range");
+  EXPECT_EQ(found[4].code, DiagnosticCode::GltfInvalid);
+}
+
+TEST(GltfDocument, ObjectsAreCountedFromTheBytesAndAgainstMaxGltfNodes) {
+  EXPECT_EQ(gltf::countTopLevelObjects(
+                R"({"asset": {"a": [{}]}, "nodes": [{}, {"children": [{}]}], "materials": [{}],)"
+                R"( "x": "nodes", "cameras": [{}, {}]})"),
+            2u + 5u + 4u);
+  std::string text = R"({"asset": {"version": "2.0"}, "nodes": [{}, {}, {}, {}]})";
+  ReadOptions options;
+  options.maxGltfNodes = 3;
+  ReadResult read = parseGltf(text, "n.gltf", ".", options);
+  ASSERT_EQ(withCode(read.diagnostics, DiagnosticCode::GltfTooManyNodes).size(), 1u);
+  options.maxGltfNodes = 4;
+  EXPECT_TRUE(withCode(parseGltf(text, "n.gltf", ".", options).diagnostics,
+                       DiagnosticCode::GltfTooManyNodes)
+                  .empty());
+  // Primitives count too, once the document is parsed.
+  Json doc = Json::parse(text);
+  doc["meshes"] = Json::parse(R"([{"primitives": [{}, {}]}])");
+  EXPECT_EQ(gltf::countObjects(doc), 7u);
+}
+
+TEST(GltfDocument, TinygltfIsGivenOnlyWhatIsRead) {
+  Json doc = Json::parse(R"({"asset": {"version": "2.0", "extras": [1, 2, 3]},
+    "nodes": [{"extras": {"sf": {"record": "CUBE"}, "junk": [1]},
+               "extensions": {"EXT_other": {}, "KHR_lights_punctual": {"light": 0, "x": 1}}}],
+    "materials": [{"extras": {"sf": {"colour": [1, 1, 1]}}}],
+    "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "junk": [1, 2]}]}}})");
+  gltf::OwnExtras own = gltf::trimForTinygltf(doc);
+  EXPECT_EQ(own.nodes, std::vector<std::string>{R"({"sf":{"record":"CUBE"}})"});
+  EXPECT_EQ(own.materials, std::vector<std::string>{R"({"sf":{"colour":[1,1,1]}})"});
+  EXPECT_EQ(doc.dump(), R"({"asset":{"version":"2.0"},"extensions":{"KHR_lights_punctual":)"
+                        R"({"lights":[{"type":"point"}]}},"materials":[{}],)"
+                        R"("nodes":[{"extensions":{"KHR_lights_punctual":{"light":0}}}]})");
+}
+
+// Our own file, edited so that the SPHERE's node points at the CUBE's mesh:
+// the extras still say SPHERE, but the mesh is a cube's, so they are stale.
+TEST(GltfDocument, ExtrasAreStaleWhenTheNodePointsAtAnotherKindsMesh) {
+  ReadResult original = parseScene(testing::kCameraRecord + testing::kLightRecord +
+                                       "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n"
+                                       "CUBE\n1 0 0\n1 0 0 3\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",
+                                   "a.sf");
+  ASSERT_TRUE(original.ok());
+  DiagnosticList out;
+  std::optional<GltfFiles> files = writeGltf(original.scene, {}, out);
+  ASSERT_TRUE(files);
+  Json doc = Json::parse(files->main);
+  int sphere = -1, cube = -1;
+  for (std::size_t i = 0; i < doc["nodes"].size(); ++i) {
+    std::string name = doc["nodes"][i].value("name", "");
+    if (name.starts_with("SPHERE")) sphere = static_cast<int>(i);
+    if (name.starts_with("CUBE")) cube = static_cast<int>(i);
+  }
+  ASSERT_GE(sphere, 0);
+  ASSERT_GE(cube, 0);
+  ReadResult unedited = parseScene(doc.dump(), "own.gltf");
+  ASSERT_TRUE(unedited.ok());
+  EXPECT_TRUE(withCode(unedited.diagnostics, DiagnosticCode::GltfExtrasStale).empty());
+  doc["nodes"][sphere]["mesh"] = doc["nodes"][cube]["mesh"];
+  ReadResult read = parseScene(doc.dump(), "edited.gltf");
+  ASSERT_TRUE(read.ok());
+  ASSERT_EQ(read.scene.objects.size(), 2u);
+  EXPECT_EQ(read.scene.objects[0].kind, ObjectKind::Cube);
+  EXPECT_EQ(withCode(read.diagnostics, DiagnosticCode::GltfExtrasStale).size(), 1u);
+}
+
+}  // namespace
+}  // namespace scene
