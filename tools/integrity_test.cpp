@@ -8,8 +8,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -127,10 +129,71 @@ TEST_F(IntegrityTest, OnlyRegularFilesAreReplaced) {
   EXPECT_FALSE(writeFileAtomically(path("folder"), "x", error));
   EXPECT_EQ(error, "it is a directory");
   EXPECT_FALSE(writeFileAtomically("/dev/null", "x", error));
-  EXPECT_EQ(error, "it is not a regular file");
+  EXPECT_EQ(error, "it is a character device, not a regular file");
   EXPECT_FALSE(writeFileAtomically(path("missing/x.sf"), "x", error));
-  EXPECT_EQ(error, "No such file or directory");
+  EXPECT_EQ(error, "its folder '" + path("missing") + "' does not exist");
   EXPECT_EQ(files(), (std::vector<std::string>{"folder"}));
+}
+
+// /dev/stdout leads through /proc/self/fd/1 to "pipe:[N]", a name no folder
+// holds: it was taken for a loop of links. It is a pipe, and said so.
+TEST_F(IntegrityTest, StandardOutputAsAFileIsNamedForWhatItIs) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  std::string error;
+  EXPECT_FALSE(writeFileAtomically("/proc/self/fd/" + std::to_string(ends[1]), "x", error));
+  EXPECT_EQ(error, "it is a pipe, not a regular file");
+  ::close(ends[0]);
+  ::close(ends[1]);
+  ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
+  EXPECT_FALSE(writeFileAtomically(path("fifo"), "x", error));
+  EXPECT_EQ(error, "it is a pipe, not a regular file");
+  EXPECT_EQ(files(), (std::vector<std::string>{"fifo"}));
+}
+
+// An exception (std::bad_alloc from a writer) between the temporary's
+// creation and its rename must not leave the temporary.
+TEST_F(IntegrityTest, AnExceptionLeavesNoTemporary) {
+  std::string error;
+  try {
+    StagedFile file;
+    ASSERT_TRUE(file.open(path("out.sf"), false, error)) << error;
+    ASSERT_TRUE(file.write("part", error));
+    throw std::bad_alloc();
+  } catch (const std::bad_alloc&) {
+  }
+  EXPECT_TRUE(files().empty());
+}
+
+// sfrender learns that its image cannot be written before the first ray:
+// a render of hours (8192 x 8192, 1024 samples a pixel) fails at once. As
+// root every folder is writable, so the cases are those root cannot write
+// either: no folder, a file where the folder should be, /proc, a folder
+// as the target; and a disk too full for a PPM's known size.
+TEST_F(IntegrityTest, SfrenderFindsAnUnwritableTargetBeforeRendering) {
+  write("file", "x");
+  fs::create_directory(path("folder.ppm"));
+  for (const std::string& target : {path("missing/x.ppm"), path("file/x.ppm"),
+                                    std::string("/proc/sfrender-test.ppm"), path("folder.ppm")}) {
+    auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(run(sfrender, {"sfrender", "-o", target, "--width", "8192", "--height", "8192",
+                             "--spp", "1024", "--quiet"}),
+              toInt(ExitCode::IoError))
+        << target << ": " << err_.str();
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 1.0) << target;
+    EXPECT_TRUE(errorSays(target + ": error: cannot write the image: ")) << err_.str();
+  }
+  EXPECT_TRUE(errorSays("it is a directory")) << err_.str();
+  EXPECT_EQ(files(), (std::vector<std::string>{"file", "folder.ppm"}));
+  std::string error;
+  EXPECT_FALSE(checkCanWrite(path("huge.ppm"), true, std::uint64_t{1} << 62, error));
+  EXPECT_NE(error.find("it needs 4611686018427387904 bytes but the file system has "),
+            std::string::npos)
+      << error;
+  EXPECT_TRUE(checkCanWrite(path("small.ppm"), true, 100, error)) << error;
+  EXPECT_EQ(files(), (std::vector<std::string>{"file", "folder.ppm"}));
 }
 
 TEST_F(IntegrityTest, TemporariesAreUniqueRecognisableAndNeverLeftByAnAbandonedWrite) {
@@ -348,6 +411,50 @@ TEST(OutputLocation, FollowsLinksAsAWriteWould) {
   EXPECT_TRUE(scene::outputStaysInFolder(dir / "in", "inside.ppm"));
   EXPECT_TRUE(scene::outputStaysInFolder(dir / "in", "plain.ppm"));
   fs::remove_all(dir);
+}
+
+// A loop of links that stays inside the folder is a loop, not a way out;
+// one that leaves it on the way is a way out, wherever it loops.
+TEST(OutputLocation, TellsALoopInsideFromAWayOut) {
+  fs::path dir = fs::temp_directory_path() / ("sfloops-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "in");
+  fs::create_directories(dir / "out");
+  fs::create_symlink("b.ppm", dir / "in" / "a.ppm");
+  fs::create_symlink("a.ppm", dir / "in" / "b.ppm");
+  fs::create_symlink("self.ppm", dir / "in" / "self.ppm");
+  fs::create_directory_symlink("d", dir / "in" / "d");  // a folder that is a loop
+  fs::create_symlink("../out/c.ppm", dir / "in" / "leaves.ppm");
+  fs::create_symlink("d.ppm", dir / "out" / "c.ppm");
+  fs::create_symlink("c.ppm", dir / "out" / "d.ppm");
+  using scene::OutputPlace;
+  EXPECT_EQ(scene::outputPlace(dir / "in", "a.ppm"), OutputPlace::LinkLoop);
+  EXPECT_EQ(scene::outputPlace(dir / "in", "self.ppm"), OutputPlace::LinkLoop);
+  EXPECT_EQ(scene::outputPlace(dir / "in", "d/x.ppm"), OutputPlace::LinkLoop);
+  EXPECT_EQ(scene::outputPlace(dir / "in", "leaves.ppm"), OutputPlace::Outside);
+  EXPECT_EQ(scene::outputPlace(dir / "in", "plain.ppm"), OutputPlace::Inside);
+  fs::remove_all(dir);
+}
+
+TEST_F(IntegrityTest, ALoopOfLinksInsideTheFolderIsReportedAsALoop) {
+  fs::create_symlink("loop-b.ppm", path("loop-a.ppm"));
+  fs::create_symlink("loop-a.ppm", path("loop-b.ppm"));
+  std::string file = write("loop.txt", instructions("loop-a.ppm"));
+  EXPECT_EQ(run(sfrender, {"sfrender", file, "--width", "8", "--height", "6"}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_TRUE(errorSays(file +
+                        ":1:13: error: OUTPUT_FILE 'loop-a.ppm' leads into a loop of symbolic "
+                        "links (or a chain of more than 40) [output-file-link-loop]"))
+      << err_.str();
+  EXPECT_FALSE(errorSays("leaves the instruction file's folder")) << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", file}), 0);
+  EXPECT_TRUE(errorSays(":1:13: warning: OUTPUT_FILE 'loop-a.ppm' leads into a loop"))
+      << err_.str();
+  // With -o the loop is the user's to follow, and the write refuses it.
+  EXPECT_EQ(run(sfrender, {"sfrender", file, "-o", path("loop-b.ppm"), "--width", "8"}),
+            toInt(ExitCode::IoError));
+  EXPECT_TRUE(errorSays("its symbolic links cannot be followed (a loop, or more than 40)"))
+      << err_.str();
 }
 
 }  // namespace

@@ -8,15 +8,19 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/exit_code.h"
 #include "tools/common/file_io.h"
+#include "tools/common/output_file_format.h"
+#include "tools/common/resource_guard.h"
 #include "tools/sfcheck/sfcheck.h"
 #include "tools/sfconvert/sfconvert.h"
 #include "tools/sfrender/image_file.h"
 #include "tools/sfrender/sfrender.h"
+#include "tools/sfrender/thread_probe.h"
 #include "tools/tool_test_support.h"
 
 namespace tools {
@@ -549,7 +553,7 @@ TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
   for (const std::string& a : args) argv.push_back(a.c_str());
   auto oneMebibyte = [] { return std::optional<std::uint64_t>(std::uint64_t{1} << 20); };
   EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, oneMebibyte),
-            toInt(ExitCode::InvalidInput));
+            toInt(ExitCode::OutOfResources));
   EXPECT_NE(err_.str().find("sfrender: error: the render needs about "), std::string::npos)
       << err_.str();
   EXPECT_NE(err_.str().find("(image 7 MiB, scene "), std::string::npos) << err_.str();
@@ -565,6 +569,94 @@ TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
       << err_.str();
   auto unknown = [] { return std::optional<std::uint64_t>(); };
   EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, unknown), 0);
+}
+
+// A file that cannot be read is no "0 errors": counted as an error, and
+// named in the summary (text) or counted under "unreadable" (JSON).
+TEST_F(ToolTest, SfcheckCountsAnUnreadableFileAsAnError) {
+  std::string good = write("good.sf", kValidScene);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", good, path("missing.sf")}), toInt(ExitCode::IoError));
+  EXPECT_NE(err_.str().find("sfcheck: 2 files checked, 1 error, 0 warnings (1 file could not be "
+                            "read)\n"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", path("missing.sf"), dir_.string()}),
+            toInt(ExitCode::IoError));
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["summary"]["errors"], 2);
+  EXPECT_EQ(report["summary"]["unreadable"], 2);
+  EXPECT_EQ(report["files"][1]["readError"], "it is a directory");
+}
+
+TEST_F(ToolTest, AnOutputFileWithNoImageExtensionIsReportedWhereItStands) {
+  for (std::string name : {"picture", "picture.xyz", "picture.txt"}) {
+    std::string file = write("n.txt", "OUTPUT_FILE " + name + kInstructions.substr(19));
+    std::string where = file + ":1:13: ";
+    EXPECT_EQ(run(runSfcheck, {"sfcheck", file}), 0) << name;
+    EXPECT_NE(err_.str().find(where + "warning: OUTPUT_FILE '" + name + "' "), std::string::npos)
+        << err_.str();
+    EXPECT_NE(err_.str().find("sfrender can write [output-file-format]"), std::string::npos)
+        << err_.str();
+    EXPECT_EQ(run(sfrender, {"sfrender", file, "--width", "8", "--height", "6"}),
+              toInt(ExitCode::InvalidInput))
+        << name;
+    EXPECT_NE(err_.str().find(where + "error: OUTPUT_FILE '" + name + "' "), std::string::npos)
+        << err_.str();
+    EXPECT_NE(err_.str().find("  hint: name the image with .ppm, .pnm, .png"), std::string::npos)
+        << err_.str();
+  }
+  std::string upper = write("u.txt", "OUTPUT_FILE pic.PNG" + kInstructions.substr(19));
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", upper}), 0) << err_.str();
+  // Named with -o, the name is a usage error, as before.
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", path("picture")}), toInt(ExitCode::Usage));
+  EXPECT_EQ(files(), (std::vector<std::string>{"n.txt", "u.txt"}));
+}
+
+// sfcheck's list (tools/common/output_file_format.h) is what the OpenImageIO
+// module writes: nothing it names is refused by sfrender.
+TEST(ImageFormats, EveryListedExtensionIsWritten) {
+  for (std::string_view extension : imageExtensions()) {
+    EXPECT_TRUE(canWriteImage("x" + std::string(extension))) << extension;
+  }
+  EXPECT_FALSE(canWriteImage("x.term"));  // OpenImageIO's, but no file
+  EXPECT_FALSE(canWriteImage("x"));
+  EXPECT_TRUE(hasImageExtension("a/b.Tiff"));
+  EXPECT_FALSE(hasImageExtension("a.png/b"));
+}
+
+TEST(ResourceGuard, OutOfMemoryAndThreadsAreMessagesAndAnExitCode) {
+  std::ostringstream err;
+  Stage stage;
+  stage.set("reading big.txt");
+  EXPECT_EQ(runGuarded("sfcheck", err, stage, []() -> int { throw std::bad_alloc(); }),
+            toInt(ExitCode::OutOfResources));
+  EXPECT_EQ(err.str(), "sfcheck: error: out of memory while reading big.txt\n");
+  err.str("");
+  stage.set("starting 1024 threads");
+  EXPECT_EQ(runGuarded("sfrender", err, stage,
+                       []() -> int {
+                         throw std::system_error(
+                             std::make_error_code(std::errc::resource_unavailable_try_again));
+                       }),
+            toInt(ExitCode::OutOfResources));
+  EXPECT_EQ(err.str(),
+            "sfrender: error: starting 1024 threads: Resource temporarily unavailable\n");
+  err.str("");
+  EXPECT_EQ(runGuarded("sfconvert", err, stage,
+                       []() -> int {
+                         throw fs::filesystem_error(
+                             "x", "/some/file", std::make_error_code(std::errc::permission_denied));
+                       }),
+            toInt(ExitCode::IoError));
+  EXPECT_EQ(err.str(), "sfconvert: error: /some/file: Permission denied\n");
+  EXPECT_EQ(runGuarded("sfcheck", err, stage, [] { return 1; }), 1);
+}
+
+TEST(ThreadProbe, StartsTheThreadsItIsAskedFor) {
+  EXPECT_EQ(threadStartFailure(1), std::nullopt);
+  EXPECT_EQ(threadStartFailure(64), std::nullopt);
+  EXPECT_GE(renderThreadCount(0), 1);
+  EXPECT_EQ(renderThreadCount(7), 7);
 }
 
 TEST(FileIo, ReadingStopsOneBytePastTheLimit) {

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -65,6 +66,34 @@ unsigned newFileMode() {
   return 0666u & ~static_cast<unsigned>(mask);
 }
 
+constexpr const char* kLinkLoop = "its symbolic links cannot be followed (a loop, or more than 40)";
+
+// What a file that is no regular file is, for the message that refuses it.
+std::string fileKind(mode_t mode) {
+  if (S_ISFIFO(mode)) return "a pipe";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "a special file";
+}
+
+// Why no file could be created in `folder`, in the words of the folder.
+std::string folderProblem(const fs::path& folder, int error) {
+  std::string name = folder.empty() ? std::string(".") : folder.string();
+  switch (error) {
+    case ENOENT:
+      return "its folder '" + name + "' does not exist";
+    case ENOTDIR:
+      return "its folder '" + name + "' is not a folder";
+    case EACCES:
+    case EPERM:
+    case EROFS:
+      return "its folder '" + name + "' cannot be written: " + std::strerror(error);
+    default:
+      return std::strerror(error);
+  }
+}
+
 // Flushes a folder's entries, so that a rename in it survives a crash too.
 // Only a power loss needs this, so a failure is not an error.
 void syncFolder(const fs::path& folder) {
@@ -90,14 +119,31 @@ void StagedFile::discard() {
 bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& error) {
   discard();
   finished_ = committed_ = false;
+  target_ = target;
+  // What the name leads to, as the kernel sees it: this follows every link,
+  // the /proc/self/fd ones of /dev/stdout included, which lead to a pipe or
+  // a terminal that no path names.
+  struct stat info {};
+  if (::stat(target.c_str(), &info) == 0) {
+    if (S_ISDIR(info.st_mode)) {
+      error = "it is a directory";
+      return false;
+    }
+    if (!S_ISREG(info.st_mode)) {
+      error = "it is " + fileKind(info.st_mode) + ", not a regular file";
+      return false;
+    }
+  } else if (errno == ELOOP) {
+    error = kLinkLoop;
+    return false;
+  }
   // Through a link, the file it leads to is replaced (or created) and the
   // link stays.
-  target_ = target;
   std::error_code ec;
   if (fs::is_symlink(fs::symlink_status(target, ec))) {
     std::optional<fs::path> end = scene::followLinks(target);
     if (!end) {
-      error = "its symbolic links cannot be followed (a loop, or more than 40)";
+      error = kLinkLoop;
       return false;
     }
     target_ = *end;
@@ -121,10 +167,19 @@ bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& e
   buffer.push_back('\0');
   fd_ = ::mkostemps(buffer.data(), static_cast<int>(extension.size()), O_CLOEXEC);
   if (fd_ < 0) {
-    error = std::strerror(errno);
+    error = folderProblem(target_.parent_path(), errno);
     return false;
   }
-  temporary_ = buffer.data();
+  // Keeping the name allocates: if that fails, the file just created must
+  // not outlive the exception (discard() knows it only by this name).
+  try {
+    temporary_ = buffer.data();
+  } catch (...) {
+    ::unlink(buffer.data());
+    ::close(fd_);
+    fd_ = -1;
+    throw;
+  }
   return true;
 }
 
@@ -193,6 +248,23 @@ bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& er
     }
   }
   return true;
+}
+
+bool checkCanWrite(const fs::path& target, bool keepExtension, std::uint64_t bytes,
+                   std::string& error) {
+  StagedFile probe;
+  if (!probe.open(target, keepExtension, error)) return false;
+  struct statvfs room {};
+  if (bytes > 0 && ::fstatvfs(probe.descriptor(), &room) == 0) {
+    std::uint64_t blocks = ::geteuid() == 0 ? room.f_bfree : room.f_bavail;
+    std::uint64_t free = blocks * room.f_frsize;
+    if (free < bytes) {
+      error = "it needs " + std::to_string(bytes) + " bytes but the file system has " +
+              std::to_string(free) + " free";
+      return false;
+    }
+  }
+  return true;  // the probe's temporary goes with it
 }
 
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b) {

@@ -90,6 +90,15 @@ struct FileToWrite {
 bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& error,
                           std::filesystem::path* failed = nullptr);
 
+// Whether `target` can be written, found out the way the write itself will
+// go: a StagedFile is opened (the temporary created) and discarded. For a
+// long job (a render) to learn before it starts that its output has no
+// folder, a read-only one, or is a folder or a device. With `bytes` > 0,
+// also whether the file system has that much room left (for root, the
+// blocks kept for root count). False, with the reason in `error`.
+bool checkCanWrite(const std::filesystem::path& target, bool keepExtension, std::uint64_t bytes,
+                   std::string& error);
+
 // True when both paths name one existing file (through links too).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 

@@ -1,5 +1,9 @@
 #include <iostream>
 
+#include "tools/common/standard_streams.h"
 #include "tools/sfcheck/sfcheck.h"
 
-int main(int argc, char** argv) { return tools::runSfcheck(argc, argv, std::cout, std::cerr); }
+int main(int argc, char** argv) {
+  int status = tools::runSfcheck(argc, argv, std::cout, std::cerr);
+  return tools::closeStandardStreams("sfcheck", status);
+}

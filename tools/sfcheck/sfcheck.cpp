@@ -9,6 +9,9 @@
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/input_limits.h"
+#include "tools/common/output_file_format.h"
+#include "tools/common/resource_guard.h"
+#include "tools/common/standard_streams.h"
 
 namespace tools {
 
@@ -36,9 +39,8 @@ std::string count(std::size_t n, const char* word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
-}  // namespace
-
-int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+int checkFiles(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+               Stage& stage) {
   CLI::App app{
       "Checks scene files, instruction files and POV-Ray scenes (the subset sfconvert reads) and "
       "reports every problem",
@@ -61,8 +63,11 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
   nlohmann::json report = {{"files", nlohmann::json::array()}};
   std::size_t errors = 0;
   std::size_t warnings = 0;
-  bool unreadable = false;
+  // A file that cannot be read is a failed check, counted as an error: a
+  // summary of "0 errors" must mean that every file was read and is valid.
+  std::size_t unreadable = 0;
   for (const std::string& file : files) {
+    stage.set("reading " + printableText(file));
     InputText input = readInputText(file, readOptions);
     if (input.tooLarge()) {
       errors += input.refused.errorCount();
@@ -75,7 +80,8 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
       continue;
     }
     if (!input.text) {
-      unreadable = true;
+      ++unreadable;
+      ++errors;
       if (json) {
         report["files"].push_back(
             {{"file", printableText(file)}, {"readError", printableText(input.readError)}});
@@ -86,12 +92,15 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
       continue;
     }
     const std::string& text = *input.text;
+    stage.set("checking " + printableText(file));
     scene::SceneFormat detected = scene::detectFormat(text, file);
     scene::ReadResult result = scene::parseScene(text, file, readOptions);
     if (detected == scene::SceneFormat::InstructionFile) {
       scene::checkOutputLocation(result.scene, std::filesystem::path(file).parent_path(),
                                  scene::Severity::Warning, result.diagnostics);
     }
+    // Whatever the format: sfrender writes the OUTPUT_FILE of each.
+    checkOutputFileFormat(result.scene, scene::Severity::Warning, result.diagnostics);
     errors += result.diagnostics.errorCount();
     warnings += result.diagnostics.warningCount();
     if (json) {
@@ -106,15 +115,29 @@ int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostrea
     errors += warnings;
     warnings = 0;
   }
+  stage.set("writing the report");
   if (json) {
-    report["summary"] = {{"files", files.size()}, {"errors", errors}, {"warnings", warnings}};
+    report["summary"] = {{"files", files.size()},
+                         {"errors", errors},
+                         {"warnings", warnings},
+                         {"unreadable", unreadable}};
     out << report.dump(2) << "\n";
+    if (!flushStandardOutput("sfcheck", out, err)) return toInt(ExitCode::IoError);
   } else {
     err << "sfcheck: " << count(files.size(), "file") << " checked, " << count(errors, "error")
-        << ", " << count(warnings, "warning") << "\n";
+        << ", " << count(warnings, "warning");
+    if (unreadable) err << " (" << count(unreadable, "file") << " could not be read)";
+    err << "\n";
   }
   if (unreadable) return toInt(ExitCode::IoError);
   return toInt(errors ? ExitCode::InvalidInput : ExitCode::Success);
+}
+
+}  // namespace
+
+int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  Stage stage;
+  return runGuarded("sfcheck", err, stage, [&] { return checkFiles(argc, argv, out, err, stage); });
 }
 
 }  // namespace tools

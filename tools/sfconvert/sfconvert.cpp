@@ -13,6 +13,8 @@
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
+#include "tools/common/resource_guard.h"
+#include "tools/common/standard_streams.h"
 
 namespace tools {
 
@@ -46,9 +48,13 @@ void printAll(const scene::DiagnosticList& list, bool json, std::ostream& err) {
   }
 }
 
-}  // namespace
+// Whether the name is one of standard output's: written as a file, it is
+// the pipe or terminal behind it, which an atomic write cannot replace.
+bool namesStandardOutput(const std::string& path) {
+  return path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
+}
 
-int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+int convert(int argc, const char* const* argv, std::ostream& out, std::ostream& err, Stage& stage) {
   CLI::App app{
       "Converts between scene files (.sf), instruction files, glTF 2.0 (.gltf, .glb) and "
       "POV-Ray (.pov)",
@@ -164,6 +170,7 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
     }
   }
 
+  stage.set("reading " + printableText(input));
   InputText text = readInputText(input, readOptions);
   if (text.tooLarge()) {
     printAll(text.refused, json, err);
@@ -185,6 +192,8 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
     return toInt(ExitCode::InvalidInput);
   }
 
+  text.text.reset();  // the scene holds all that is needed now
+  stage.set("converting");
   scene::ConversionOptions options;
   options.noLoss = noLoss;
   options.approximate = approximate;
@@ -213,10 +222,12 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
   if (!converted) return toInt(ExitCode::InvalidInput);
 
   if (toStdout) {
+    stage.set("writing to standard output");
     out << converted->main;
-    out.flush();
-    return toInt(out ? ExitCode::Success : ExitCode::IoError);
+    return toInt(flushStandardOutput("sfconvert", out, err) ? ExitCode::Success
+                                                            : ExitCode::IoError);
   }
+  stage.set("writing " + printableText(output));
   // The buffer first, so that the .gltf never names a buffer not there;
   // both are written in full before either is renamed.
   std::vector<FileToWrite> files;
@@ -226,9 +237,19 @@ int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostr
   std::filesystem::path failed;
   if (!writeFilesAtomically(files, writeError, &failed)) {
     err << failed.string() << ": error: cannot write the file: " << writeError << "\n";
+    if (namesStandardOutput(output)) {
+      err << "  hint: sfconvert writes regular files; name the output - for standard output\n";
+    }
     return toInt(ExitCode::IoError);
   }
   return toInt(ExitCode::Success);
+}
+
+}  // namespace
+
+int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  Stage stage;
+  return runGuarded("sfconvert", err, stage, [&] { return convert(argc, argv, out, err, stage); });
 }
 
 }  // namespace tools

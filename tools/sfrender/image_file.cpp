@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tools/common/file_io.h"
+#include "tools/common/output_file_format.h"
 
 namespace tools {
 
@@ -70,14 +71,26 @@ unsigned char quantizeChannel(float value) {
 }
 
 bool canWriteImage(const std::filesystem::path& path) {
+  if (!hasImageExtension(path)) return false;
   if (isPpm(path)) return true;
   std::string ignored;
   std::optional<OiioModule> oiio = loadOiio(ignored);
   return oiio && oiio->format(path.c_str()) >= 0;
 }
 
+std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path) {
+  if (!isPpm(path)) return 0;
+  std::string header = "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+  return header.size() +
+         std::uint64_t{3} * static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+}
+
 bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
                     std::string& error) {
+  if (!hasImageExtension(path)) {
+    error = "no image format for the extension '" + path.extension().string() + "'";
+    return false;
+  }
   bool ppm = isPpm(path);
   std::optional<OiioModule> oiio;
   int format = 0;

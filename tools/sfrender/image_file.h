@@ -1,6 +1,7 @@
 // Writing a rendered image in the format its file name asks for.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -8,9 +9,15 @@
 
 namespace tools {
 
-// Whether files with this name's extension can be written: ".ppm" here,
-// every other through OpenImageIO.
+// Whether files with this name's extension can be written: one of
+// tools/common/output_file_format.h's, ".ppm" here and every other through
+// OpenImageIO (whose module must load and take it).
 bool canWriteImage(const std::filesystem::path& path);
+
+// The bytes of a width x height image written to `path` when it is a ".ppm"
+// (the header and three bytes a pixel); 0 for another format, whose size
+// is known only once written.
+std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path);
 
 // Writes the image, as binary PPM (P6) by hand for ".ppm" and through
 // OpenImageIO for every other extension: floating-point formats (EXR) get the

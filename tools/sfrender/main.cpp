@@ -2,8 +2,10 @@
 
 #include <iostream>
 
+#include "tools/common/standard_streams.h"
 #include "tools/sfrender/sfrender.h"
 
 int main(int argc, char** argv) {
-  return tools::runSfrender(argc, argv, std::cout, std::cerr, ::isatty(STDERR_FILENO) == 1);
+  int status = tools::runSfrender(argc, argv, std::cout, std::cerr, ::isatty(STDERR_FILENO) == 1);
+  return tools::closeStandardStreams("sfrender", status);
 }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,8 +30,31 @@ RenderMemoryEstimate estimateRenderMemory(std::uint64_t objects, std::uint64_t l
 // MemAvailable of /proc/meminfo's text, in bytes, or nothing when absent.
 std::optional<std::uint64_t> parseMemAvailable(std::string_view meminfo);
 
-// Where the free memory comes from: /proc/meminfo on the machine, anything
-// a test likes in a test.
+// The kB figure of a /proc line such as /proc/self/status's "VmSize:", in
+// bytes, or nothing when absent.
+std::optional<std::uint64_t> parseKibibyteField(std::string_view text, std::string_view key);
+
+// What RLIMIT_AS leaves to allocate: the limit less the address space in use
+// (VmSize of /proc/self/status), or nothing when there is no limit.
+std::optional<std::uint64_t> addressSpaceLeft(std::optional<std::uint64_t> limit,
+                                              std::string_view status);
+
+// What a cgroup v2 leaves: memory.max less memory.current (their texts), or
+// nothing for "max" or what cannot be read.
+std::optional<std::uint64_t> cgroupMemoryLeft(std::string_view max, std::string_view current);
+
+// The cgroup v2 folder of the process, from /proc/self/cgroup's text
+// ("0::/PATH"): /sys/fs/cgroup/PATH, or nothing without a v2 line.
+std::optional<std::string> cgroupFolder(std::string_view procSelfCgroup);
+
+// The least of those that are known; nothing when none is.
+std::optional<std::uint64_t> leastOf(std::initializer_list<std::optional<std::uint64_t>> limits);
+
+// Where the free memory comes from: on the machine, the least of
+// MemAvailable (/proc/meminfo), what RLIMIT_AS leaves (getrlimit, ulimit -v,
+// prlimit --as) and what the cgroup's memory.max leaves (cgroup v2, the
+// process's own cgroup, else /sys/fs/cgroup/memory.max); anything a test
+// likes in a test.
 using AvailableMemoryProbe = std::function<std::optional<std::uint64_t>()>;
 std::optional<std::uint64_t> readAvailableMemory();
 

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <fstream>
+#include <sstream>
 
 namespace tools {
 namespace {
@@ -59,6 +61,39 @@ TEST(RenderMemory, RefusesOnlyWhatDoesNotFitAndSaysBothFigures) {
   EXPECT_EQ(refusal->rfind("the render needs about ", 0), 0u) << *refusal;
   EXPECT_NE(refusal->find("(image 7 MiB, scene "), std::string::npos) << *refusal;
   EXPECT_NE(refusal->find("only 1000 bytes of memory is available"), std::string::npos) << *refusal;
+}
+
+// An address-space limit (RLIMIT_AS) counts what is mapped already.
+TEST(RenderMemory, AddressSpaceLeftIsTheLimitLessWhatIsMapped) {
+  const char* status = "Name:\tsfrender\nVmPeak:\t  300000 kB\nVmSize:\t  204800 kB\n";
+  EXPECT_EQ(parseKibibyteField(status, "VmSize:"), std::uint64_t{204800} * 1024);
+  EXPECT_EQ(addressSpaceLeft(std::uint64_t{1} << 30, status),
+            (std::uint64_t{1} << 30) - std::uint64_t{204800} * 1024);
+  EXPECT_EQ(addressSpaceLeft(std::uint64_t{100} << 20, status), 0u);  // over it already
+  EXPECT_EQ(addressSpaceLeft(std::nullopt, status), std::nullopt);    // unlimited
+}
+
+TEST(RenderMemory, CgroupLeftIsMaxLessCurrent) {
+  EXPECT_EQ(cgroupMemoryLeft("1073741824\n", "73741824\n"), std::uint64_t{1000000000});
+  EXPECT_EQ(cgroupMemoryLeft("max\n", "5\n"), std::nullopt);
+  EXPECT_EQ(cgroupMemoryLeft("100\n", "200\n"), 0u);
+  EXPECT_EQ(cgroupFolder("0::/user.slice/session-2.scope\n"),
+            "/sys/fs/cgroup/user.slice/session-2.scope");
+  EXPECT_EQ(cgroupFolder("0::/\n"), "/sys/fs/cgroup/");
+  EXPECT_EQ(cgroupFolder("12:memory:/docker/abc\n"), std::nullopt);  // cgroup v1 only
+}
+
+TEST(RenderMemory, TheLeastKnownLimitCounts) {
+  EXPECT_EQ(leastOf({std::uint64_t{5}, std::nullopt, std::uint64_t{3}}), std::uint64_t{3});
+  EXPECT_EQ(leastOf({std::nullopt, std::nullopt}), std::nullopt);
+  // On this machine: never more than MemAvailable alone.
+  std::optional<std::uint64_t> all = readAvailableMemory();
+  ASSERT_TRUE(all.has_value());
+  std::ifstream in("/proc/meminfo");
+  std::stringstream meminfo;
+  meminfo << in.rdbuf();
+  EXPECT_LE(*all,
+            parseMemAvailable(meminfo.str()).value_or(UINT64_MAX) + (std::uint64_t{64} << 20));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include "libscene/output_location.h"
 #include "libscene/scene_reader.h"
@@ -16,7 +17,10 @@
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
+#include "tools/common/output_file_format.h"
+#include "tools/common/resource_guard.h"
 #include "tools/sfrender/image_file.h"
+#include "tools/sfrender/thread_probe.h"
 
 namespace tools {
 
@@ -78,10 +82,89 @@ void printStatistics(const render::RenderStatistics& s, const render::RenderSett
   err << line.str();
 }
 
-}  // namespace
+// The scene to render and where its image goes, or the exit status.
+struct SceneAndTarget {
+  scene::Scene scene;
+  fs::path target;
+  bool fromOutputFile = false;  // the target is the scene's OUTPUT_FILE
+};
 
-int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                bool errIsTerminal, const AvailableMemoryProbe& availableMemory) {
+std::variant<SceneAndTarget, int> readSceneAndTarget(const std::string& input,
+                                                     const std::string& output,
+                                                     const scene::ReadOptions& readOptions,
+                                                     bool quiet, std::ostream& err) {
+  SceneAndTarget job;
+  if (input.empty()) {
+    job.scene = render::defaultScene();
+    job.target = output.empty() ? fs::path(*job.scene.outputFile) : fs::path(output);
+    return job;
+  }
+  InputText text = readInputText(input, readOptions);
+  if (text.tooLarge()) {
+    printDiagnostics(text.refused, err);
+    return toInt(ExitCode::InvalidInput);
+  }
+  if (!text.text) {
+    err << printableText(input)
+        << ": error: cannot read the file: " << printableText(text.readError) << "\n";
+    return toInt(ExitCode::IoError);
+  }
+  scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
+  if (result.scene.outputFile && output.empty()) {
+    // OUTPUT_FILE is the instruction file's to choose, inside its folder.
+    scene::checkOutputLocation(result.scene, fs::path(input).parent_path(), scene::Severity::Error,
+                               result.diagnostics);
+  }
+  if (!quiet || result.diagnostics.hasErrors()) printDiagnostics(result.diagnostics, err);
+  if (!result.ok()) return toInt(ExitCode::InvalidInput);
+  text.text.reset();  // the scene holds all the render needs
+  job.scene = std::move(result.scene);
+  if (!output.empty()) {
+    job.target = output;
+  } else if (job.scene.outputFile) {
+    job.target = fs::path(input).parent_path() / *job.scene.outputFile;
+    job.fromOutputFile = true;
+  } else {
+    job.target = fs::path(input).stem().string() + ".ppm";
+  }
+  return job;
+}
+
+// Whether the image can go where it is to go, found out before the first
+// ray: the name (not the input, an image format) and the place (the folder
+// there and writable, the target no folder or device, room for a PPM).
+std::optional<int> targetRefusal(const std::string& input, const SceneAndTarget& job,
+                                 const render::RenderSettings& settings, std::ostream& err) {
+  const fs::path& target = job.target;
+  // Before the extension's check, so that an OUTPUT_FILE naming its own
+  // instruction file is told so, not that .txt is no image format.
+  if (!input.empty() && isSameFile(input, target)) {
+    err << "sfrender: error: the output '" << target.string()
+        << "' is the input file; sfrender never writes over its input\n";
+    return toInt(ExitCode::InvalidInput);
+  }
+  if (job.fromOutputFile && !hasImageExtension(target)) {
+    // The file's mistake, at its line and column, like any other.
+    scene::DiagnosticList diagnostics(input);
+    checkOutputFileFormat(job.scene, scene::Severity::Error, diagnostics);
+    printDiagnostics(diagnostics, err);
+    return toInt(ExitCode::InvalidInput);
+  }
+  if (!canWriteImage(target)) {
+    err << "sfrender: cannot write images named '" << target.string() << "': use "
+        << imageExtensionList() << "\n";
+    return toInt(ExitCode::Usage);
+  }
+  std::string error;
+  if (!checkCanWrite(target, true, ppmFileSize(settings.width, settings.height, target), error)) {
+    err << target.string() << ": error: cannot write the image: " << error << "\n";
+    return toInt(ExitCode::IoError);
+  }
+  return std::nullopt;
+}
+
+int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                 bool errIsTerminal, const AvailableMemoryProbe& availableMemory, Stage& stage) {
   CLI::App app{"Ray traces a scene file or an instruction file (the default scene without one)",
                "sfrender"};
   app.set_version_flag("--version", SCENEFILE_VERSION);
@@ -91,8 +174,9 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
   bool quiet = false;
   bool stats = false;
   app.add_option("scene", input, "a scene file (.sf) or an instruction file");
-  app.add_option("-o,--output", output,
-                 "the image to write; its extension picks the format (.ppm, .png, .exr, .tif)");
+  app.add_option(
+      "-o,--output", output,
+      "the image to write; its extension picks the format (.ppm, .png, .exr, .tif, ...)");
   // 32768 a side keeps width * height within an int whatever --max-pixels.
   app.add_option("--width", settings.width, "image width in pixels")->check(CLI::Range(1, 32768));
   app.add_option("--height", settings.height, "image height in pixels")
@@ -130,61 +214,32 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
   }
 
   // Step 1: the scene, and where its image goes.
-  scene::Scene scene;
-  fs::path target;
-  if (input.empty()) {
-    scene = render::defaultScene();
-    target = output.empty() ? fs::path(*scene.outputFile) : fs::path(output);
-  } else {
-    InputText text = readInputText(input, readOptions);
-    if (text.tooLarge()) {
-      printDiagnostics(text.refused, err);
-      return toInt(ExitCode::InvalidInput);
-    }
-    if (!text.text) {
-      err << printableText(input) << ": error: cannot read the file: "
-        << printableText(text.readError) << "\n";
-      return toInt(ExitCode::IoError);
-    }
-    scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
-    if (result.scene.outputFile && output.empty()) {
-      // OUTPUT_FILE is the instruction file's to choose, inside its folder.
-      scene::checkOutputLocation(result.scene, fs::path(input).parent_path(),
-                                 scene::Severity::Error, result.diagnostics);
-    }
-    if (!quiet || result.diagnostics.hasErrors()) printDiagnostics(result.diagnostics, err);
-    if (!result.ok()) return toInt(ExitCode::InvalidInput);
-    scene = std::move(result.scene);
-    if (!output.empty()) {
-      target = output;
-    } else if (scene.outputFile) {
-      target = fs::path(input).parent_path() / *scene.outputFile;
-    } else {
-      target = fs::path(input).stem().string() + ".ppm";
-    }
-  }
-  // Before the extension's check, so that an OUTPUT_FILE naming its own
-  // instruction file is told so, not that .txt is no image format.
-  if (!input.empty() && isSameFile(input, target)) {
-    err << "sfrender: error: the output '" << target.string()
-        << "' is the input file; sfrender never writes over its input\n";
-    return toInt(ExitCode::InvalidInput);
-  }
-  if (!canWriteImage(target)) {
-    err << "sfrender: cannot write images named '" << target.string()
-        << "': use .ppm, .png, .exr or .tif\n";
-    return toInt(ExitCode::Usage);
-  }
+  if (!input.empty()) stage.set("reading " + printableText(input));
+  std::variant<SceneAndTarget, int> read =
+      readSceneAndTarget(input, output, readOptions, quiet, err);
+  if (const int* status = std::get_if<int>(&read)) return *status;
+  SceneAndTarget& job = std::get<SceneAndTarget>(read);
+  const fs::path& target = job.target;
+  if (std::optional<int> refused = targetRefusal(input, job, settings, err)) return *refused;
 
-  // Step 2: render, with a progress bar on a terminal, if it fits in memory.
-  RenderMemoryEstimate estimate = estimateRenderMemory(scene.objects.size(), scene.lights.size(),
-                                                       settings.width, settings.height);
+  // Step 2: render, with a progress bar on a terminal, if it fits in memory
+  // and its threads start.
+  RenderMemoryEstimate estimate = estimateRenderMemory(
+      job.scene.objects.size(), job.scene.lights.size(), settings.width, settings.height);
   if (std::optional<std::string> refusal =
           renderMemoryRefusal(estimate, availableMemory ? availableMemory() : std::nullopt)) {
     err << "sfrender: error: " << *refusal << "\n";
-    return toInt(ExitCode::InvalidInput);
+    return toInt(ExitCode::OutOfResources);
   }
-  render::RenderScene compiled(scene);
+  int threads = renderThreadCount(settings.threads);
+  stage.set("starting " + std::to_string(threads) + " threads");
+  if (std::optional<std::string> failure = threadStartFailure(threads)) {
+    err << "sfrender: error: cannot start " << threads << " threads: " << *failure
+        << "; ask for fewer with --threads\n";
+    return toInt(ExitCode::OutOfResources);
+  }
+  stage.set("preparing the scene");
+  render::RenderScene compiled(job.scene);
   render::RenderStatistics statistics;
   render::ProgressCallback progress;
   if (errIsTerminal && !quiet) {
@@ -193,9 +248,11 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
           << (done == total ? "\n" : "") << std::flush;
     };
   }
+  stage.set("rendering");
   render::Image image = render::renderImage(compiled, settings, &statistics, progress);
 
   // Step 3: the file, whole or not at all.
+  stage.set("writing " + printableText(target.string()));
   std::string writeError;
   if (!writeImageFile(image, target, writeError)) {
     err << target.string() << ": error: cannot write the image: " << writeError << "\n";
@@ -207,6 +264,16 @@ int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostre
         << (input.empty() ? ", the default scene" : "") << ")\n";
   }
   return toInt(ExitCode::Success);
+}
+
+}  // namespace
+
+int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                bool errIsTerminal, const AvailableMemoryProbe& availableMemory) {
+  Stage stage;
+  return runGuarded("sfrender", err, stage, [&] {
+    return renderToFile(argc, argv, out, err, errIsTerminal, availableMemory, stage);
+  });
 }
 
 }  // namespace tools

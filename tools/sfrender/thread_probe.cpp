@@ -1,0 +1,50 @@
+#include "tools/sfrender/thread_probe.h"
+
+#include <algorithm>
+#include <condition_variable>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace tools {
+
+int renderThreadCount(int requested) {
+  if (requested > 0) return requested;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+std::optional<std::string> threadStartFailure(int threads) {
+  std::mutex mutex;
+  std::condition_variable released;
+  bool go = false;
+  std::vector<std::thread> pool;
+  // Only remembered here: making the message allocates, which must wait
+  // until no thread is left joinable.
+  std::error_code failure;
+  bool noMemory = false;
+  try {
+    pool.reserve(static_cast<std::size_t>(std::max(0, threads - 1)));
+    for (int t = 1; t < threads; ++t) {
+      pool.emplace_back([&] {
+        std::unique_lock<std::mutex> lock(mutex);
+        released.wait(lock, [&] { return go; });
+      });
+    }
+  } catch (const std::system_error& e) {
+    failure = e.code();
+  } catch (const std::bad_alloc&) {
+    noMemory = true;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    go = true;
+  }
+  released.notify_all();
+  for (std::thread& t : pool) t.join();
+  if (noMemory) return "out of memory";
+  if (failure) return failure.message();
+  return std::nullopt;
+}
+
+}  // namespace tools
