@@ -103,6 +103,7 @@ constexpr std::array kCodes = {
     CodeEntry{DiagnosticCode::FileTooLarge, "file-too-large"},
     CodeEntry{DiagnosticCode::TooManyObjects, "too-many-objects"},
     CodeEntry{DiagnosticCode::ValueNotFinite, "value-not-finite"},
+    CodeEntry{DiagnosticCode::GltfTooManyNodes, "gltf-too-many-nodes"},
     CodeEntry{DiagnosticCode::OutputFileFormat, "output-file-format"},
     CodeEntry{DiagnosticCode::OutputFileLinkLoop, "output-file-link-loop"},
 };

@@ -120,6 +120,8 @@ enum class DiagnosticCode : std::uint16_t {
   TooManyObjects,
   // Numbers: a value that is not finite once evaluated, composed or converted.
   ValueNotFinite,
+  // glTF: more objects than ReadOptions::maxGltfNodes.
+  GltfTooManyNodes,
   // OUTPUT_FILE: no image format sfrender writes; a loop of symbolic links.
   OutputFileFormat,
   OutputFileLinkLoop,
