@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "libscene/matrix.h"
+#include "libscene/transform.h"
 
 namespace scene::gltf {
 
@@ -65,8 +66,10 @@ glm::dmat4 cameraNodeMatrix(const glm::dmat4& camera) {
                std::abs(glm::dot(up, back)) <= 1e-9 && std::abs(glm::dot(right, back)) <= 1e-9 &&
                glm::determinant(glm::dmat3(camera)) > 0.0;
   if (rigid) return camera;
-  back = glm::normalize(back);
-  right = glm::normalize(glm::cross(up, back));
+  // Axes of length 1e-300 or 1e300 are valid: unitDirection scales them.
+  back = unitDirection(back);
+  if (!isModerate(up)) up = unitDirection(up);
+  right = unitDirection(glm::cross(up, back));
   up = glm::cross(back, right);
   return glm::dmat4(glm::dvec4(right, 0.0), glm::dvec4(up, 0.0), glm::dvec4(back, 0.0), camera[3]);
 }

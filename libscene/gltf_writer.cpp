@@ -411,6 +411,26 @@ void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize, Di
   }
 }
 
+// The JSON pointer of the first number in `j` that is not finite, which
+// nlohmann would write as null: a last check over every derived value (a
+// node of a chain, a light's intensity, the plane's square).
+std::optional<std::string> firstNonFinite(const Json& j, const std::string& at) {
+  if (j.is_number_float()) {
+    if (std::isfinite(j.get<double>())) return std::nullopt;
+    return at.empty() ? "/" : at;
+  }
+  if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      if (auto found = firstNonFinite(j[i], at + "/" + std::to_string(i))) return found;
+    }
+  } else if (j.is_object()) {
+    for (const auto& [key, value] : j.items()) {
+      if (auto found = firstNonFinite(value, at + "/" + key)) return found;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<GltfFiles> writeGltf(const Scene& scene, const GltfWriteOptions& options,
@@ -531,6 +551,12 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const GltfWriteOptions& o
   if (!materials.empty()) doc["materials"] = std::move(materials);
   if (!meshes.empty()) doc["meshes"] = std::move(meshes);
 
+  if (std::optional<std::string> where = firstNonFinite(doc, "")) {
+    out.error(DiagnosticCode::ValueNotFinite, scene.camera.span,
+              "the glTF's number at " + *where + " is not finite, so nothing is written")
+        .hint = "scale the scene so that its numbers stay within about 1e300";
+    return std::nullopt;
+  }
   GltfFiles files;
   std::string& bin = buffer.data();
   if (!bin.empty()) {

@@ -39,8 +39,7 @@ std::string objectLabel(const Object& object, std::size_t index) {
 }
 
 // Every matrix entry that the approximation moved, as notes.
-void addMovedEntries(Diagnostic& d, const glm::dmat4& from, const glm::dmat4& to,
-                     SourceSpan span) {
+void addMovedEntries(Diagnostic& d, const glm::dmat4& from, const glm::dmat4& to, SourceSpan span) {
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) {
       if (from[c][r] == to[c][r]) continue;
@@ -53,6 +52,17 @@ void addMovedEntries(Diagnostic& d, const glm::dmat4& from, const glm::dmat4& to
       d.notes.push_back({span, std::move(message)});
     }
   }
+}
+
+// Whether every number of the operations is finite: a decomposition's scale
+// factors are column lengths, which can overflow where the entries do not.
+bool opsFinite(const std::vector<TransformOp>& ops) {
+  for (const TransformOp& op : ops) {
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(op.value[k])) return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace
@@ -77,16 +87,21 @@ std::optional<std::string> writeInstructionFile(const Scene& scene,
   } else {
     LookAtCamera described = lookAtFromCamera(scene.camera.matrix);
     lookAt = described.lookAt;
-    if (std::abs(described.roll) > kRollTolerance) {
+    if (!described.expressible) {
+      out.error(DiagnosticCode::ValueNotFinite, scene.camera.span,
+                "the camera cannot be written as LOCATION and LOOK_AT: every point far enough "
+                "along its forward axis to give that direction overflows a double")
+          .hint = "the eye lies too near the largest double, looking further out";
+    } else if (std::abs(described.roll) > kRollTolerance) {
       double degrees = described.roll * 180.0 / std::numbers::pi;
       bool approximate = approximationSeverity == Severity::Warning;
-      out.report(approximationSeverity,
-                 approximate ? DiagnosticCode::CameraRollApproximated
-                             : DiagnosticCode::LossCameraRoll,
-                 scene.camera.span,
-                 "the camera is rolled by " + formatNumber(degrees) +
-                     " degrees about its forward axis, which an instruction file cannot hold" +
-                     (approximate ? "; written without the roll" : ""))
+      out.report(
+             approximationSeverity,
+             approximate ? DiagnosticCode::CameraRollApproximated : DiagnosticCode::LossCameraRoll,
+             scene.camera.span,
+             "the camera is rolled by " + formatNumber(degrees) +
+                 " degrees about its forward axis, which an instruction file cannot hold" +
+                 (approximate ? "; written without the roll" : ""))
           .hint = approximate ? "" : "'--approximate' writes the camera without its roll";
     }
   }
@@ -140,6 +155,12 @@ std::optional<std::string> writeInstructionFile(const Scene& scene,
         }
       }
       ops = std::move(d.ops);
+      if (!opsFinite(ops)) {
+        out.error(DiagnosticCode::ValueNotFinite, object.span,
+                  "the matrix of " + objectLabel(object, i) +
+                      " has a column longer than the largest double, which no SCALE can hold")
+            .hint = "scale the scene down";
+      }
     }
     text += "  START TRANSFORMATION\n";
     for (const TransformOp& op : ops) appendOp(text, op);

@@ -1981,7 +1981,8 @@ class PovParser {
                             " becomes plain transparency: sfrender's light through an object "
                             "is not tinted by its colour");
     }
-    m.transparency = *p.filter + *p.transmit;
+    // +0 + -0 is +0: without a filter, transmit as written keeps a -0.
+    m.transparency = *p.filter == 0.0 ? *p.transmit : *p.filter + *p.transmit;
     m.ambient = *p.ambient;
     m.diffuse = *p.diffuse;
     m.specular = *p.phong;

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <limits>
 #include <numbers>
 
 #include "libscene/number.h"
+#include "libscene/transform.h"
 
 namespace scene {
 
@@ -85,7 +87,13 @@ bool onlyTranslation(const glm::dmat4& m) {
 // leaves the eye out.
 bool eyeBelowPlane(const glm::dmat4& plane, const glm::dvec3& eye) {
   glm::dmat3 a(plane);
-  glm::dvec3 local = glm::inverse(a) * (eye - glm::dvec3(plane[3]));
+  glm::dvec3 offset = eye - glm::dvec3(plane[3]);
+  // Only the sign counts: halved, the difference of two finite points is
+  // finite, and a unit-sized offset keeps the product from overflowing.
+  if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(offset.z)) {
+    offset = 0.5 * eye - 0.5 * glm::dvec3(plane[3]);
+  }
+  glm::dvec3 local = glm::inverse(a) * unitDirection(offset);
   return local.y < 0.0;
 }
 
@@ -118,7 +126,14 @@ void reportLosses(const Object& object, std::size_t index, Severity severity, Di
   }
 }
 
-void appendCamera(std::string& out, const Scene& scene, const PovWriteOptions& options) {
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// False, with an error, when the vectors the view gives are not finite (a
+// field of view that no finite image plane has).
+bool appendCamera(std::string& out, const Scene& scene, const PovWriteOptions& options,
+                  DiagnosticList& diagnostics) {
   const Camera& camera = scene.camera;
   out += std::string(kPovExactComment) + " camera matrix";
   appendMatrixNumbers(out, camera.matrix);
@@ -141,12 +156,25 @@ void appendCamera(std::string& out, const Scene& scene, const PovWriteOptions& o
   // look_at or angle, POV-Ray uses them as they are: no handedness rule
   // applies, and the picture is sfrender's, not its mirror image.
   glm::dvec3 eye(camera.matrix[3]);
-  glm::dvec3 forward = glm::normalize(-glm::dvec3(camera.matrix[2]));
+  // Axes of length 1e-300 or 1e300 are valid: unitDirection scales them.
+  glm::dvec3 forward = unitDirection(-glm::dvec3(camera.matrix[2]));
   glm::dvec3 up(camera.matrix[1]);
-  up = glm::normalize(up - glm::dot(up, forward) * forward);
+  if (!isModerate(up)) up = unitDirection(up);
+  up = unitDirection(up - glm::dot(up, forward) * forward);
   glm::dvec3 right = glm::cross(forward, up);
   double height = 2.0 * std::tan(options.verticalFovDegrees * std::numbers::pi / 360.0);
   double width = height * options.width / options.height;
+  if (!finite(forward) || !finite(right * width) || !finite(up * height) || !(height > 0.0) ||
+      !(width > 0.0)) {
+    diagnostics
+        .error(DiagnosticCode::ValueNotFinite, camera.span,
+               "the camera's image plane for a field of view of " +
+                   formatNumber(options.verticalFovDegrees) + " degrees at " +
+                   std::to_string(options.width) + "x" + std::to_string(options.height) +
+                   " is not finite")
+        .hint = "give a field of view between 0 and 180 degrees";
+    return false;
+  }
   out += "camera {\n  perspective\n  location ";
   appendVector(out, eye);
   out += "\n  direction ";
@@ -156,11 +184,13 @@ void appendCamera(std::string& out, const Scene& scene, const PovWriteOptions& o
   out += "\n  up ";
   appendVector(out, up * height);
   out += "\n}\n";
+  return true;
 }
 
 void appendMaterial(std::string& out, const Material& m) {
   out += "  pigment { ";
-  if (m.transparency > 0.0) {
+  // rgbt also for -0, which renders as rgb but reads back with its sign.
+  if (m.transparency > 0.0 || std::signbit(m.transparency)) {
     out += "rgbt <";
     for (int i = 0; i < 3; ++i) {
       appendNumber(out, m.colour[i]);
@@ -280,8 +310,25 @@ std::optional<std::string> writePovScene(const Scene& scene, const PovWriteOptio
   // Our ambient term is AMBIENT times each light's colour, POV-Ray's is
   // ambient times ambient_light once: the sum of the lights makes them equal.
   glm::dvec3 ambientLight(options.flat ? 1.0 : 0.0);
+  SourceSpan overflowAt;
   if (!options.flat) {
-    for (const Light& light : scene.lights) ambientLight += light.colour;
+    for (const Light& light : scene.lights) {
+      ambientLight += light.colour;
+      if (!finite(ambientLight) && !overflowAt.known()) overflowAt = light.span;
+    }
+  }
+  if (!finite(ambientLight)) {
+    // Lights near the largest double sum beyond it; the reader does not read
+    // ambient_light back, so only the picture changes.
+    constexpr double kLargest = std::numeric_limits<double>::max();
+    ambientLight = glm::min(ambientLight, glm::dvec3(kLargest));
+    out.report(options.noLoss ? Severity::Error : Severity::Warning, DiagnosticCode::LossPov,
+               overflowAt,
+               "the lights' colours sum beyond the largest double: POV-Ray's ambient_light is "
+               "clamped to " +
+                   formatNumber(kLargest))
+        .hint = "objects with AMBIENT above 0 render darker in POV-Ray than in sfrender";
+    if (options.noLoss) return std::nullopt;
   }
   text += "global_settings { assumed_gamma 1.0 max_trace_level " +
           std::to_string(options.maxDepth + 1) + " adc_bailout 0 ambient_light rgb ";
@@ -289,7 +336,7 @@ std::optional<std::string> writePovScene(const Scene& scene, const PovWriteOptio
   text += " }\nbackground { rgb 0 }\n";
   if (scene.outputFile)
     text += std::string(kPovExactComment) + " output_file " + *scene.outputFile + "\n";
-  appendCamera(text, scene, options);
+  if (!appendCamera(text, scene, options, out)) return std::nullopt;
   if (!options.flat) {
     for (const Light& light : scene.lights) {
       if (!onlyTranslation(light.matrix)) {

@@ -94,7 +94,10 @@ glm::dmat4 composeTransform(std::span<const TransformOp> ops) {
 }
 
 glm::dmat4 cameraFromLookAt(const glm::dvec3& location, const glm::dvec3& lookAt) {
-  glm::dvec3 forward = glm::normalize(lookAt - location);
+  // Points 1e-320 or 1e200 apart underflow or overflow the plain
+  // normalisation (to infinity, or to a zero vector that looks finite);
+  // unitDirection scales them by a power of two first.
+  glm::dvec3 forward = unitDirection(lookAt - location);
   glm::dvec3 upHint(0.0, 1.0, 0.0);
   if (glm::length(glm::cross(forward, upHint)) < kParallelTolerance) {
     upHint = glm::dvec3(0.0, 0.0, forward.y < 0.0 ? -1.0 : 1.0);
@@ -110,20 +113,72 @@ glm::dmat4 cameraFromLookAt(const glm::dvec3& location, const glm::dvec3& lookAt
                     glm::dvec4(location, 1.0));
 }
 
+namespace {
+
+// v scaled exactly by the power of two 2^-e that brings its largest
+// component into [1, 2), and e; v itself and 0 for a zero or non-finite v.
+glm::dvec3 powerOfTwoScaled(const glm::dvec3& v, int& e) {
+  double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  e = 0;
+  if (!(largest > 0.0) || !std::isfinite(largest)) return v;
+  std::frexp(largest, &e);
+  e -= 1;
+  return {std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+}
+
+}  // namespace
+
+bool isModerate(const glm::dvec3& v) {
+  double d = glm::dot(v, v);
+  return d >= 0x1p-960 && d <= 0x1p960;
+}
+
+glm::dvec3 unitDirection(const glm::dvec3& v) {
+  if (isModerate(v)) return glm::normalize(v);
+  int e = 0;
+  glm::dvec3 w = powerOfTwoScaled(v, e);
+  double length = glm::length(w);
+  return length > 0.0 ? w / length : glm::dvec3(0.0);
+}
+
+double vectorLength(const glm::dvec3& v) {
+  if (isModerate(v)) return glm::length(v);
+  int e = 0;
+  glm::dvec3 w = powerOfTwoScaled(v, e);
+  return std::ldexp(glm::length(w), e);
+}
+
 LookAtCamera lookAtFromCamera(const glm::dmat4& camera) {
   LookAtCamera out;
   out.location = glm::dvec3(camera[3]);
-  glm::dvec3 forward = glm::normalize(-glm::dvec3(camera[2]));
+  glm::dvec3 forward = unitDirection(-glm::dvec3(camera[2]));
   // A power of two at least as large as the eye's coordinates keeps the
-  // rounding of location + forward * distance small against the distance.
+  // rounding of location + forward * distance small against the distance;
+  // at most 2^1023, the largest power of two, and halved while the point
+  // overflows (an eye near the largest double looking further out).
   double extent = std::max({1.0, std::abs(out.location.x), std::abs(out.location.y),
                             std::abs(out.location.z)});
-  double distance = std::exp2(std::ceil(std::log2(extent)));
-  out.lookAt = out.location + forward * distance;
+  double distance = std::exp2(std::min(std::ceil(std::log2(extent)), 1023.0));
+  glm::dmat4 rebuilt;
+  out.expressible = false;
+  // Each halving costs a bit of the direction; past 40 of them the point
+  // is no better than the eye itself.
+  for (int halvings = 0; halvings < 40 && !out.expressible; ++halvings, distance /= 2) {
+    out.lookAt = out.location + forward * distance;
+    if (!std::isfinite(out.lookAt.x) || !std::isfinite(out.lookAt.y) ||
+        !std::isfinite(out.lookAt.z) || out.lookAt == out.location) {
+      continue;
+    }
+    glm::dvec3 d = out.lookAt - out.location;
+    if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)) continue;
+    rebuilt = cameraFromLookAt(out.location, out.lookAt);
+    out.expressible = vectorLength(-glm::dvec3(rebuilt[2]) - forward) <= kLookAtTolerance;
+  }
+  if (!out.expressible) return out;
   // Compare the matrix's up with the one the instruction camera would get.
-  glm::dmat4 rebuilt = cameraFromLookAt(out.location, out.lookAt);
   glm::dvec3 up = glm::dvec3(camera[1]);
-  up = glm::normalize(up - glm::dot(up, forward) * forward);
+  if (!isModerate(up)) up = unitDirection(up);
+  up = unitDirection(up - glm::dot(up, forward) * forward);
   glm::dvec3 rebuiltUp = glm::dvec3(rebuilt[1]);
   out.roll = std::atan2(glm::dot(glm::cross(rebuiltUp, up), forward), glm::dot(rebuiltUp, up));
   return out;
@@ -135,7 +190,7 @@ TransformDecomposition decomposeTransform(const glm::dmat4& m) {
   TransformDecomposition out;
   glm::dmat3 a = linearPart(m);
   out.translation = glm::dvec3(m[3]);
-  glm::dvec3 norms(glm::length(a[0]), glm::length(a[1]), glm::length(a[2]));
+  glm::dvec3 norms(vectorLength(a[0]), vectorLength(a[1]), vectorLength(a[2]));
 
   // Step 1: signs of the scale factors. Scales stay positive unless A is a
   // mirror; then one factor is negative, the one whose rotation turns least

@@ -26,12 +26,28 @@ glm::dmat4 cameraFromLookAt(const glm::dvec3& location, const glm::dvec3& lookAt
 // A LOOK_AT description of a camera matrix. `roll` is the angle in radians
 // by which the matrix's up turns away from the up an instruction camera would
 // get; only a roll of (nearly) 0 can be written exactly.
+// `expressible` is false when no LOOK_AT within the doubles gives the
+// camera's forward (within kLookAtTolerance): an eye at the largest double
+// looking further out has none.
 struct LookAtCamera {
   glm::dvec3 location{0.0};
   glm::dvec3 lookAt{0.0, 0.0, -1.0};
   double roll = 0.0;
+  bool expressible = true;
 };
 LookAtCamera lookAtFromCamera(const glm::dmat4& camera);
+
+// How far the forward that LOOK_AT gives back may turn from the camera's.
+inline constexpr double kLookAtTolerance = 1e-12;
+
+// v / |v| and |v| for any finite vector, however long or short: the plain
+// formula where v * v is a normal double (so that ordinary values keep the
+// bits they always had), else scaled by a power of two first. The
+// direction of the zero vector is zero.
+glm::dvec3 unitDirection(const glm::dvec3& v);
+double vectorLength(const glm::dvec3& v);
+// Whether v * v is such a normal double (between 2^-960 and 2^960).
+bool isModerate(const glm::dvec3& v);
 
 // Roll below this (radians) is rounding, not intent.
 inline constexpr double kRollTolerance = 1e-9;

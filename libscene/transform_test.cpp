@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -17,7 +18,9 @@ TransformOp op(TransformKind kind, double x, double y = 0.0, double z = 0.0) {
   return TransformOp{kind, glm::dvec3(x, y, z), {}};
 }
 
-glm::dvec3 apply(const glm::dmat4& m, glm::dvec3 p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
+glm::dvec3 apply(const glm::dmat4& m, glm::dvec3 p) {
+  return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
 
 // Largest difference of the 3x3 blocks, relative to each column's norm.
 double columnError(const glm::dmat4& a, const glm::dmat4& b) {
@@ -57,8 +60,7 @@ TEST(ComposeTransform, AppliesOperationsInFileOrder) {
 
 TEST(DecomposeTransform, RecoversScaleRotationTranslation) {
   std::vector<TransformOp> ops = {op(TransformKind::Scale, 2, 3, 0.5),
-                                  op(TransformKind::RotateX, 0.3),
-                                  op(TransformKind::RotateY, -1.1),
+                                  op(TransformKind::RotateX, 0.3), op(TransformKind::RotateY, -1.1),
                                   op(TransformKind::RotateZ, 2.5),
                                   op(TransformKind::Translate, 1, -2, 3)};
   glm::dmat4 m = composeTransform(ops);
@@ -77,13 +79,13 @@ TEST(DecomposeTransform, RecoversScaleRotationTranslation) {
 TEST(DecomposeTransform, StaysExactAtAndNearGimbalLock) {
   // ROTATE_Y = +-pi/2 couples the x and z angles; naive extraction from
   // asin and atan2 of tiny entries loses digits there.
-  for (double b : {kPi / 2, -kPi / 2, kPi / 2 - 1e-9, kPi / 2 + 1e-12, -kPi / 2 + 1e-14,
-                   1.57079632679}) {
+  for (double b :
+       {kPi / 2, -kPi / 2, kPi / 2 - 1e-9, kPi / 2 + 1e-12, -kPi / 2 + 1e-14, 1.57079632679}) {
     for (double a : {0.0, 0.7, -2.9}) {
       for (double c : {0.0, 1.3, -0.4}) {
-        glm::dmat4 m = composeTransform(std::vector{
-            op(TransformKind::Scale, 0.5, 2, 7), op(TransformKind::RotateX, a),
-            op(TransformKind::RotateY, b), op(TransformKind::RotateZ, c)});
+        glm::dmat4 m = composeTransform(
+            std::vector{op(TransformKind::Scale, 0.5, 2, 7), op(TransformKind::RotateX, a),
+                        op(TransformKind::RotateY, b), op(TransformKind::RotateZ, c)});
         TransformDecomposition d = decomposeTransform(m);
         EXPECT_LT(columnError(m, d.recomposed), 1e-15) << a << " " << b << " " << c;
         EXPECT_TRUE(d.exact());
@@ -95,9 +97,9 @@ TEST(DecomposeTransform, StaysExactAtAndNearGimbalLock) {
 TEST(DecomposeTransform, NaiveEulerAnglesWouldNotBeExact) {
   // The contrast that motivates the method: angles from asin(-r20) and
   // atan2 of the tiny first column at b = pi/2 - 1e-9.
-  glm::dmat4 m = composeTransform(
-      std::vector{op(TransformKind::RotateX, 0.7), op(TransformKind::RotateY, kPi / 2 - 1e-9),
-                  op(TransformKind::RotateZ, 1.3)});
+  glm::dmat4 m = composeTransform(std::vector{op(TransformKind::RotateX, 0.7),
+                                              op(TransformKind::RotateY, kPi / 2 - 1e-9),
+                                              op(TransformKind::RotateZ, 1.3)});
   double b = std::asin(-m[0][2]);
   double a = std::atan2(m[1][2], m[2][2]);
   double c = std::atan2(m[0][1], m[0][0]);
@@ -115,11 +117,13 @@ TEST(DecomposeTransform, MirrorsBecomeNegativeScales) {
   EXPECT_LT(d.scale.x * d.scale.y * d.scale.z, 0.0);
   EXPECT_LT(columnError(m, d.recomposed), 1e-15);
   // One negative factor comes back as written.
-  TransformDecomposition once = decomposeTransform(transformMatrix(op(TransformKind::Scale, 1, 1, -4)));
+  TransformDecomposition once =
+      decomposeTransform(transformMatrix(op(TransformKind::Scale, 1, 1, -4)));
   EXPECT_EQ(once.scale, glm::dvec3(1, 1, -4));
   EXPECT_EQ(once.rotation, glm::dvec3(0.0));
   // Two negative factors are no mirror but a half turn, and come back so.
-  TransformDecomposition twice = decomposeTransform(transformMatrix(op(TransformKind::Scale, 1, -1, -1)));
+  TransformDecomposition twice =
+      decomposeTransform(transformMatrix(op(TransformKind::Scale, 1, -1, -1)));
   EXPECT_EQ(twice.scale, glm::dvec3(1, 1, 1));
   EXPECT_NEAR(std::abs(twice.rotation.x), kPi, 1e-15);
   EXPECT_TRUE(twice.exact());
@@ -184,6 +188,59 @@ TEST(LookAtFromCamera, MeasuresRoll) {
   double roll = 10.0 * kPi / 180.0;
   glm::dmat4 rolled = level * transformMatrix(op(TransformKind::RotateZ, roll));
   EXPECT_NEAR(lookAtFromCamera(rolled).roll, -roll, 1e-14);
+}
+
+// The eye of issue 12, near the largest double: the distance used to be
+// 2^ceil(log2(1.8e308)) = 2^1024, an infinity.
+TEST(LookAtFromCamera, AnEyeNearTheLargestDoubleGetsAFiniteLookAt) {
+  constexpr double kLargest = std::numeric_limits<double>::max();
+  for (glm::dvec3 eye : {glm::dvec3(kLargest), glm::dvec3(-kLargest, kLargest, 0.0),
+                         glm::dvec3(kLargest / 1.01, 0.0, 0.0)}) {
+    glm::dmat4 camera = cameraFromLookAt(eye, glm::dvec3(0.0, 1.0, 0.0));
+    LookAtCamera back = lookAtFromCamera(camera);
+    ASSERT_TRUE(back.expressible);
+    for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(back.lookAt[i]));
+    glm::dmat4 rebuilt = cameraFromLookAt(back.location, back.lookAt);
+    EXPECT_LE(vectorLength(glm::dvec3(rebuilt[2] - camera[2])), kLookAtTolerance);
+    EXPECT_LT(std::abs(back.roll), kRollTolerance);
+  }
+  // Forward +x from x = the largest double: every point ahead overflows.
+  glm::dmat4 out(1.0);
+  out[0] = glm::dvec4(0, 0, 1, 0);
+  out[2] = glm::dvec4(-1, 0, 0, 0);
+  out[3] = glm::dvec4(kLargest, 0, 0, 1);
+  EXPECT_FALSE(lookAtFromCamera(out).expressible);
+}
+
+TEST(LookAtFromCamera, AxesOfAnyLengthGiveTheSameLookAt) {
+  glm::dmat4 unit = cameraFromLookAt({1, 2, 3}, {4, -1, 0});
+  LookAtCamera expected = lookAtFromCamera(unit);
+  for (int exponent : {-1000, -500, 500, 1000}) {
+    glm::dmat4 scaled = unit;
+    for (int c = 0; c < 3; ++c) scaled[c] *= std::ldexp(1.0, exponent);
+    LookAtCamera back = lookAtFromCamera(scaled);
+    ASSERT_TRUE(back.expressible) << exponent;
+    EXPECT_LE(vectorLength(back.lookAt - expected.lookAt), 1e-14) << exponent;
+    EXPECT_LT(std::abs(back.roll), kRollTolerance) << exponent;
+  }
+}
+
+TEST(UnitDirection, ScalesVectorsThePlainFormulaLoses) {
+  EXPECT_EQ(unitDirection(glm::dvec3(0, 3, 4)), glm::normalize(glm::dvec3(0, 3, 4)));
+  for (double s : {4.9e-324, 1e-300, 1e200, 1.7976931348623157e308}) {
+    glm::dvec3 d = unitDirection(glm::dvec3(s, s, 0));
+    EXPECT_NEAR(d.x, std::sqrt(0.5), 1e-15) << s;
+    EXPECT_NEAR(d.y, std::sqrt(0.5), 1e-15) << s;
+    EXPECT_NEAR(vectorLength(glm::dvec3(0, s, 0)), s, s * 1e-15) << s;
+  }
+  EXPECT_EQ(unitDirection(glm::dvec3(0.0)), glm::dvec3(0.0));
+  // Far apart or subnormally close, LOOK_AT gives a camera all the same.
+  glm::dmat4 far = cameraFromLookAt({-1e300, 0, 0}, {1e300, 0, 2e300});
+  glm::dmat4 near = cameraFromLookAt({0, 0, 0}, {1e-320, 0, 1e-320});
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(vectorLength(glm::dvec3(far[c])), 1.0, 1e-15);
+    EXPECT_LT(vectorLength(glm::dvec3(far[c] - near[c])), 1e-15);
+  }
 }
 
 }  // namespace
