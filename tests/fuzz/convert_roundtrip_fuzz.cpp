@@ -1,10 +1,16 @@
 // libFuzzer target: sfconvert's whole path. The input is read in whatever
 // format it is in, converted to every output format, and each output read
 // again. The properties are the contract of sfconvert (TOOLS.md):
-// - nothing it writes fails to read back;
+// - nothing it writes fails to read back, from the input itself, from the
+//   instruction and scene files written from it, and from the input moved
+//   out to the edge of the doubles (every position scaled by a power of two
+//   up to near the largest double); every number read back is finite;
 // - a scene file comes back bit for bit through .sf, glTF, GLB and POV-Ray;
 // - an instruction file written from a scene reads back to one that writes
 //   the same instruction file.
+#include <cmath>
+#include <limits>
+
 #include "libscene/conversion.h"
 #include "libscene/scene_reader.h"
 #include "libscene/sf_writer.h"
@@ -33,10 +39,16 @@ const char* nameFor(OutputFormat format) {
 // Converts and reads back; nothing when the conversion refuses (a loss it
 // cannot express is reported, which is allowed).
 std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, OutputFormat format,
-                                               std::string& text) {
+                                               std::string& text,
+                                               const scene::ConversionOptions& options = {}) {
   scene::DiagnosticList diagnostics;
-  std::optional<std::string> converted = scene::convertScene(scene, format, {}, diagnostics);
-  if (!converted) return std::nullopt;
+  std::optional<std::string> converted = scene::convertScene(scene, format, options, diagnostics);
+  if (!converted) {
+    if (diagnostics.errorCount() == 0) {
+      fuzz::propertyFailed("sfconvert refused without an error", nameFor(format));
+    }
+    return std::nullopt;
+  }
   text = *converted;
   scene::ReadResult back = scene::parseScene(text, nameFor(format));
   if (!back.ok()) {
@@ -50,7 +62,42 @@ std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, Output
     fuzz::propertyFailed("sfconvert wrote a file it cannot read back",
                          std::string(nameFor(format)) + ": " + first + "\n" + text);
   }
+  fuzz::requireFinite(back.scene, nameFor(format), text);
   return back;
+}
+
+constexpr OutputFormat kEveryFormat[] = {OutputFormat::SceneFile, OutputFormat::InstructionFile,
+                                         OutputFormat::Gltf, OutputFormat::Glb, OutputFormat::Pov};
+
+// The scene with every position (the eye, the lights, the objects'
+// translations) scaled by the power of two that takes the largest one to
+// [2^1022, 2^1023): the edge where LOOK_AT points, plane sides and light
+// sums overflow. Nothing when the scene has no position to scale.
+std::optional<scene::Scene> atTheEdge(const scene::Scene& in) {
+  double largest = 0.0;
+  auto grow = [&largest](const glm::dvec4& p) {
+    for (int i = 0; i < 3; ++i) largest = std::max(largest, std::abs(p[i]));
+  };
+  grow(in.camera.matrix[3]);
+  for (const scene::Light& light : in.lights) grow(light.matrix[3]);
+  for (const scene::Object& object : in.objects) grow(object.matrix[3]);
+  if (!(largest > 0.0)) return std::nullopt;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  int shift = 1023 - exponent;
+  if (shift <= 0) return std::nullopt;
+  scene::Scene out = in;
+  auto move = [shift](glm::dvec4& p) {
+    for (int i = 0; i < 3; ++i) p[i] = std::ldexp(p[i], shift);
+  };
+  move(out.camera.matrix[3]);
+  out.camera.lookAt.reset();
+  for (scene::Light& light : out.lights) move(light.matrix[3]);
+  for (scene::Object& object : out.objects) {
+    move(object.matrix[3]);
+    object.transforms.reset();
+  }
+  return out;
 }
 
 }  // namespace
@@ -60,15 +107,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   scene::ReadResult read =
       scene::parseScene(fuzz::asText(data, size), (folder / "fuzz-input").string());
   if (!read.ok()) return 0;
+  fuzz::requireFinite(read.scene, "the input");
 
-  // Step 1: as an instruction file; writing that file again is a fixed point.
+  // Step 0: the input straight into every format, and at the edge of the
+  // doubles (with --approximate, so that shear and roll are written too).
   std::string text;
+  for (OutputFormat format : kEveryFormat) throughFormat(read.scene, format, text);
+  if (std::optional<scene::Scene> edge = atTheEdge(read.scene)) {
+    scene::ConversionOptions approximate;
+    approximate.approximate = true;
+    for (OutputFormat format : kEveryFormat) throughFormat(*edge, format, text, approximate);
+  }
+
+  // Step 1: as an instruction file; writing that file again is a fixed point,
+  // and the file written from it reads back in every format.
   if (auto back = throughFormat(read.scene, OutputFormat::InstructionFile, text)) {
     std::string again;
     auto twice = throughFormat(back->scene, OutputFormat::InstructionFile, again);
     if (!twice || again != text) {
       fuzz::propertyFailed("instruction file written twice differs", text + "\n---\n" + again);
     }
+    for (OutputFormat format : kEveryFormat) throughFormat(back->scene, format, again);
   }
 
   // Step 2: as a scene file, then that scene through every format.

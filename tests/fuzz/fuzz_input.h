@@ -11,6 +11,9 @@
 #include <string_view>
 #include <system_error>
 
+#include "libscene/random_scenes.h"
+#include "libscene/scene.h"
+
 namespace fuzz {
 
 inline std::string_view asText(const std::uint8_t* data, std::size_t size) {
@@ -33,6 +36,19 @@ inline std::filesystem::path emptyFolder() {
 [[noreturn]] inline void propertyFailed(const char* what, const std::string& detail) {
   std::fprintf(stderr, "fuzz property failed: %s\n%s\n", what, detail.c_str());
   std::abort();
+}
+
+// An accepted input yields a model whose every number is finite: checked by
+// a loop of the tests' own over every double (scene::testing::forEachNumber),
+// not by the library's checkSceneFinite, so that the property does not
+// trust what it tests.
+inline void requireFinite(const scene::Scene& scene, const char* what,
+                          std::string_view input = {}) {
+  std::string found = scene::testing::firstNonFinite(scene);
+  if (!found.empty()) {
+    propertyFailed("an accepted input holds a number that is not finite",
+                   std::string(what) + ": " + found + "\n" + std::string(input));
+  }
 }
 
 }  // namespace fuzz

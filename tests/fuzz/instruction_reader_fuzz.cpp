@@ -1,6 +1,7 @@
 // libFuzzer target: the instruction file reader on any bytes. A file it
-// accepts must write back to an instruction file that reads again to the
-// same scene.
+// accepts must hold only finite numbers (a chain of operations that
+// overflows is an error), and write back to an instruction file that reads
+// again to the same scene.
 #include "libscene/instruction_reader.h"
 #include "libscene/instruction_writer.h"
 #include "tests/fuzz/fuzz_input.h"
@@ -8,6 +9,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   scene::ReadResult read = scene::parseInstructionFile(fuzz::asText(data, size), "fuzz.txt");
   if (!read.ok()) return 0;
+  fuzz::requireFinite(read.scene, "fuzz.txt");
   scene::DiagnosticList losses;
   std::optional<std::string> written = scene::writeInstructionFile(read.scene, {}, losses);
   if (!written) return 0;

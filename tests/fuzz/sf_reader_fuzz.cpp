@@ -1,5 +1,6 @@
 // libFuzzer target: the scene file reader on any bytes. A file it accepts
-// must write back to text that reads again to the same scene.
+// must hold only finite numbers, and write back to text that reads again to
+// the same scene.
 #include "libscene/sf_reader.h"
 #include "libscene/sf_writer.h"
 #include "tests/fuzz/fuzz_input.h"
@@ -7,6 +8,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   scene::ReadResult read = scene::parseSceneFile(fuzz::asText(data, size), "fuzz.sf");
   if (!read.ok()) return 0;
+  fuzz::requireFinite(read.scene, "fuzz.sf");
   std::string written = scene::writeSceneFile(read.scene);
   scene::ReadResult again = scene::parseSceneFile(written, "again.sf");
   if (!again.ok()) fuzz::propertyFailed("a scene read from a .sf cannot be read back", written);
