@@ -110,6 +110,11 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
   image.rgb.assign(static_cast<std::size_t>(settings.width) * settings.height * 3, 0.0f);
   PinholeCamera camera(scene.camera(), settings);
   Tracer tracer(scene, settings.maxDepth);
+  // Not a number, or below 0, allows no error.
+  double tolerance = std::max(0.0, settings.pruneTolerance);
+  std::uint64_t allowance = settings.maxRaysPerSample > 0
+                                ? settings.maxRaysPerSample
+                                : std::numeric_limits<std::uint64_t>::max();
   // The media the camera starts in, for a camera inside glass.
   MediumStack eyeMedia;
   if (scene.hasTransparency()) {
@@ -133,8 +138,9 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
               glm::dvec2 at = samplePosition(i, j, s, spp, settings.seed);
               if (scene.hasTransparency()) media = eyeMedia;
               ++contexts[worker].counts.primary;
+              contexts[worker].allowance = allowance;
               sum += tracer.trace(camera.rayThrough(at.x, at.y), RaySource{}, 0, media,
-                                  contexts[worker]);
+                                  contexts[worker], tolerance);
             }
             // Dividing by 1 is exact: skipped, for one division less a pixel.
             if (spp > 1) sum /= static_cast<double>(spp);

@@ -18,6 +18,17 @@ struct RenderSettings {
   double verticalFovDegrees = 60.0;
   int samplesPerPixel = 1;
   int maxDepth = 5;
+  // The most adaptive depth control may change a channel of a sample (and
+  // so of a pixel) by leaving out reflected and refracted rays: half a level
+  // of an 8-bit image, so that each level stays what full tracing gives but
+  // where the value lies that close to a rounding boundary (docs/RENDERING.md,
+  // "Cost"). 0 traces every branch to the depth limit.
+  double pruneTolerance = 0.5 / 255.0;
+  // The most reflected and refracted rays one sample traces, whatever the
+  // scene: where every hit passes on nearly all it receives to both its
+  // children, no tolerance bounds the work, and this does (docs/RENDERING.md,
+  // "Cost"). 0: no limit.
+  std::uint64_t maxRaysPerSample = 4096;
   int threads = 0;  // 0: every core
   std::uint64_t seed = 0;
 };

@@ -35,6 +35,18 @@ double specularPower(double x, double e) {
   return result;
 }
 
+// Takes a reflected or refracted ray from the sample's allowance, or counts
+// it as cut when none is left.
+bool takeRay(TraceContext& context) {
+  if (context.allowance == 0) {
+    ++context.counts.cut;
+    return false;
+  }
+  --context.allowance;
+  ++context.counts.secondary;
+  return true;
+}
+
 }  // namespace
 
 void MediumStack::remove(std::uint32_t object) {
@@ -124,9 +136,25 @@ glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
   return colour;
 }
 
+bool Tracer::worthTracing(double weight, int bounce, double tolerance,
+                          double& childTolerance) const {
+  childTolerance = tolerance;
+  double bound = bound_.at(bounce + 1);
+  // Without a bound, every branch is traced, as it always was.
+  if (!(bound < RadianceBound::kUnbounded)) return true;
+  // A child brings back at most `bound`, so leaving all of them out moves
+  // this colour by at most weight * bound (docs/RENDERING.md, "Cost").
+  if (weight * bound <= tolerance) return false;
+  // Shares in proportion to the weights: child i may make an error of
+  // tolerance / weight, which its weight w_i turns into w_i / weight of
+  // this one's tolerance, and the shares add up to it.
+  childTolerance = tolerance / weight;
+  return true;
+}
+
 template <bool kRefraction>
 glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce,
-                             MediumStack& media, TraceContext& context) const {
+                             MediumStack& media, TraceContext& context, double tolerance) const {
   if (bounce > maxDepth_) return glm::dvec3(0.0);
   std::optional<Hit> found = scene_.closestHit(ray, source);
   if (!found) return glm::dvec3(0.0);
@@ -139,42 +167,46 @@ glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce
   glm::dvec3 n = glm::dot(hit.normal, d) > 0.0 ? -hit.normal : hit.normal;
   glm::dvec3 colour = shadeSurface(hit, n, -d, context);
 
+  if constexpr (kRefraction) {
+    if (m.transparency > 0.0) {
+      return colour + reflectAndRefract(hit, d, n, bounce, media, context, tolerance);
+    }
+  }
   glm::dvec3 reflected(0.0);
+  double childTolerance = 0.0;
   if (m.reflectivity > 0.0) {
-    ++context.counts.secondary;
-    glm::dvec3 r = glm::reflect(d, n);
-    reflected = m.reflectivity * traceWith<kRefraction>(spawnFrom(hit, r), leaving(hit, r),
-                                                        bounce + 1, media, context);
+    if (!worthTracing(m.reflectivity, bounce, tolerance, childTolerance)) {
+      ++context.counts.pruned;
+    } else if (takeRay(context)) {
+      glm::dvec3 r = glm::reflect(d, n);
+      reflected =
+          m.reflectivity * traceWith<kRefraction>(spawnFrom(hit, r), leaving(hit, r), bounce + 1,
+                                                  media, context, childTolerance);
+    }
   }
-  if constexpr (!kRefraction) {
-    return colour + reflected;
-  } else {
-    if (m.transparency <= 0.0) return colour + reflected;
-    return colour + refract(hit, d, n, bounce, media, reflected, context);
-  }
+  return colour + reflected;
 }
 
-glm::dvec3 Tracer::refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3& n, int bounce,
-                           const MediumStack& media, const glm::dvec3& reflected,
-                           TraceContext& context) const {
+glm::dvec3 Tracer::reflectAndRefract(const Hit& hit, const glm::dvec3& d, const glm::dvec3& n,
+                                     int bounce, MediumStack& media, TraceContext& context,
+                                     double tolerance) const {
   const RenderObject& object = scene_.objects()[hit.object];
   const scene::Material& m = object.material;
 
-  glm::dvec3 refracted(0.0);
+  // Where the refracted ray goes, and the share of each part, come first:
+  // they are what the branches are weighed by before either is traced.
+  MediumStack after = media;
+  glm::dvec3 t = d;
+  bool passes = true;
   double reflectance = 1.0;
   if (object.kind == scene::ObjectKind::Plane) {
     // A plane is a sheet, not a solid: light passes it without bending.
-    ++context.counts.secondary;
     reflectance = 0.0;
-    MediumStack same = media;
-    refracted = m.transparency *
-                traceWith<true>(spawnFrom(hit, d), leaving(hit, d), bounce + 1, same, context);
   } else {
     // The innermost solid the ray is in gives n1; entering this one, n2 is
     // its own index, and leaving it, the index of what contains it.
     bool entering = !hit.fromInside;
     double n1 = entering ? media.refractiveIndex(scene_) : m.ri;
-    MediumStack after = media;
     if (entering) {
       after.push(hit.object);
     } else {
@@ -182,21 +214,53 @@ glm::dvec3 Tracer::refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3
     }
     double n2 = entering ? m.ri : after.refractiveIndex(scene_);
     reflectance = schlickReflectance(n1, n2, -glm::dot(d, n));
-    glm::dvec3 t;
-    if (refractDirection(d, n, n1, n2, t)) {
-      ++context.counts.secondary;
-      refracted = m.transparency *
-                  traceWith<true>(spawnFrom(hit, t), leaving(hit, t), bounce + 1, after, context);
-    }
+    passes = refractDirection(d, n, n1, n2, t);
   }
+  bool reflects = m.reflectivity > 0.0;
   // With both, Schlick's reflectance shares the light between them.
-  if (m.reflectivity > 0.0) return reflectance * reflected + (1.0 - reflectance) * refracted;
+  double reflectedWeight = reflects ? reflectance * m.reflectivity : 0.0;
+  double refractedWeight = passes ? (reflects ? 1.0 - reflectance : 1.0) * m.transparency : 0.0;
+  double childTolerance = 0.0;
+  bool worth = worthTracing(std::abs(reflectedWeight) + std::abs(refractedWeight), bounce,
+                            tolerance, childTolerance);
+  // A part of weight 0 adds exactly 0 when the bound says what it brings
+  // is finite (a plane's reflection, refraction at R = 1).
+  bool bounded = bound_.at(bounce + 1) < RadianceBound::kUnbounded;
+
+  bool traceReflected = reflects && worth && !(bounded && reflectedWeight == 0.0);
+  bool traceRefracted = passes && worth && !(bounded && refractedWeight == 0.0);
+  context.counts.pruned +=
+      (reflects && !traceReflected ? 1 : 0) + (passes && !traceRefracted ? 1 : 0);
+
+  glm::dvec3 reflected(0.0);
+  auto traceReflection = [&] {
+    if (!traceReflected || !takeRay(context)) return;
+    glm::dvec3 r = glm::reflect(d, n);
+    reflected = m.reflectivity * traceWith<true>(spawnFrom(hit, r), leaving(hit, r), bounce + 1,
+                                                 media, context, childTolerance);
+  };
+  glm::dvec3 refracted(0.0);
+  auto traceRefraction = [&] {
+    if (!traceRefracted || !takeRay(context)) return;
+    refracted = m.transparency * traceWith<true>(spawnFrom(hit, t), leaving(hit, t), bounce + 1,
+                                                 after, context, childTolerance);
+  };
+  // The heavier part first: when the sample's allowance runs out, it is the
+  // lighter that is cut. The order changes no value.
+  if (std::abs(refractedWeight) > std::abs(reflectedWeight)) {
+    traceRefraction();
+    traceReflection();
+  } else {
+    traceReflection();
+    traceRefraction();
+  }
+  if (reflects) return reflectance * reflected + (1.0 - reflectance) * refracted;
   return refracted;
 }
 
 template glm::dvec3 Tracer::traceWith<true>(const Ray&, const RaySource&, int, MediumStack&,
-                                            TraceContext&) const;
+                                            TraceContext&, double) const;
 template glm::dvec3 Tracer::traceWith<false>(const Ray&, const RaySource&, int, MediumStack&,
-                                             TraceContext&) const;
+                                             TraceContext&, double) const;
 
 }  // namespace render

@@ -4,7 +4,9 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <limits>
 
+#include "renderer/radiance_bound.h"
 #include "renderer/render_scene.h"
 
 namespace render {
@@ -32,15 +34,26 @@ struct RayCounts {
   std::uint64_t primary = 0;
   std::uint64_t secondary = 0;  // reflected and refracted
   std::uint64_t shadow = 0;
+  // Reflected and refracted rays not traced: what they could bring back
+  // fits the error allowed (Tracer::trace), or they would pass the depth
+  // limit, where they bring black.
+  std::uint64_t pruned = 0;
+  // Reflected and refracted rays not traced because their sample had spent
+  // its allowance (TraceContext::allowance): only these can move a pixel by
+  // more than the tolerance.
+  std::uint64_t cut = 0;
   RayCounts& operator+=(const RayCounts& o) {
     primary += o.primary;
     secondary += o.secondary;
     shadow += o.shadow;
+    pruned += o.pruned;
+    cut += o.cut;
     return *this;
   }
 };
 
-// What one thread carries from ray to ray: its ray counts, and per light
+// What one thread carries from ray to ray: its ray counts, the reflected
+// and refracted rays the current sample may still trace, and per light
 // (light index modulo kOccluderSlots) the object that last blocked a shadow
 // ray toward it, tried first on the next (RenderScene::anyHit). Neighbouring
 // pixels mostly lie in the same object's shadow, so the hint often ends a
@@ -50,6 +63,9 @@ struct RayCounts {
 struct alignas(64) TraceContext {
   static constexpr std::size_t kOccluderSlots = 8;
   RayCounts counts;
+  // Set before each primary ray (renderImage); once it is spent, the
+  // sample's remaining branches are cut, the heaviest having gone first.
+  std::uint64_t allowance = std::numeric_limits<std::uint64_t>::max();
   std::array<std::uint32_t, kOccluderSlots> lastOccluder = filledWithNone();
 
  private:
@@ -73,15 +89,23 @@ class Tracer {
  public:
   // maxDepth: the number of bounces traced; the ray that would make one more
   // returns black.
-  Tracer(const RenderScene& scene, int maxDepth) : scene_(scene), maxDepth_(maxDepth) {}
+  Tracer(const RenderScene& scene, int maxDepth)
+      : scene_(scene), maxDepth_(maxDepth), bound_(scene, maxDepth) {}
 
   // The colour seen along `ray`, which left `source` after `bounce` bounces
-  // and travels through `media`.
+  // and travels through `media`, to within `tolerance` in each channel:
+  // adaptive depth control (docs/RENDERING.md, "Cost") leaves out the
+  // reflected and refracted rays that cannot move it by more, all of them
+  // together. With 0 every ray is traced but those whose weight is 0 or that
+  // would pass the depth limit, which change nothing.
   glm::dvec3 trace(const Ray& ray, const RaySource& source, int bounce, MediumStack& media,
-                   TraceContext& context) const {
-    return scene_.hasTransparency() ? traceWith<true>(ray, source, bounce, media, context)
-                                    : traceWith<false>(ray, source, bounce, media, context);
+                   TraceContext& context, double tolerance = 0.0) const {
+    return scene_.hasTransparency()
+               ? traceWith<true>(ray, source, bounce, media, context, tolerance)
+               : traceWith<false>(ray, source, bounce, media, context, tolerance);
   }
+
+  const RadianceBound& bound() const { return bound_; }
 
   // The Phong surface term at a hit (ambient per light, diffuse and specular
   // for each light with a clear path), for the viewer along `toViewer`;
@@ -98,16 +122,21 @@ class Tracer {
   // A scene without transparency is traced with no refraction code at all.
   template <bool kRefraction>
   glm::dvec3 traceWith(const Ray& ray, const RaySource& source, int bounce, MediumStack& media,
-                       TraceContext& context) const;
+                       TraceContext& context, double tolerance) const;
 
-  // The refracted part of a hit on a transparent object, weighed against
-  // the reflected part by Schlick's approximation when it has both.
-  glm::dvec3 refract(const Hit& hit, const glm::dvec3& d, const glm::dvec3& n, int bounce,
-                     const MediumStack& media, const glm::dvec3& reflected,
-                     TraceContext& context) const;
+  // The reflected and refracted parts of a hit on a transparent object,
+  // weighed against each other by Schlick's approximation when it has both.
+  glm::dvec3 reflectAndRefract(const Hit& hit, const glm::dvec3& d, const glm::dvec3& n, int bounce,
+                               MediumStack& media, TraceContext& context, double tolerance) const;
+
+  // Whether the children of a hit at `bounce`, whose weights in its colour
+  // add up to `weight` in size, can move it by more than `tolerance`; if so,
+  // `childTolerance` is the error each child may make, their share of it.
+  bool worthTracing(double weight, int bounce, double tolerance, double& childTolerance) const;
 
   const RenderScene& scene_;
   int maxDepth_;
+  RadianceBound bound_;
 };
 
 }  // namespace render
