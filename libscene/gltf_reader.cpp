@@ -407,6 +407,14 @@ bool withinObjectLimit(std::size_t objects, const ReadOptions& options, Diagnost
   return false;
 }
 
+bool finite(const glm::dmat4& m) {
+  double sum = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) sum += m[c][r] * 0.0;
+  }
+  return sum == 0.0;
+}
+
 // The extras tell whether they still describe the file's own data: a
 // difference above this (relative) means the file was edited elsewhere.
 constexpr double kExtrasAgreement = 1e-9;
@@ -596,6 +604,14 @@ class Importer {
       }
       seen[node] = true;
       glm::dmat4 world = parent * localMatrix(model_.nodes[node]);
+      // Finite values can compose to infinity: the error names the node
+      // where it happens, not a record far from it.
+      if (!finite(world)) {
+        out_.error(DiagnosticCode::ValueNotFinite, {},
+                   "/nodes/" + std::to_string(node) + " (" + nodeLabel(model_, node) +
+                       "): its transform composed with its parents' is not finite");
+        return;
+      }
       visit(node, world);
       const std::vector<int>& children = model_.nodes[node].children;
       for (auto it = children.rbegin(); it != children.rend(); ++it) stack.emplace_back(*it, world);
@@ -830,6 +846,12 @@ class Importer {
       double length = glm::length(direction);
       glm::dvec3 d = length > 0.0 ? direction / length : glm::dvec3(0, -1, 0);
       glm::dvec3 position = centre - d * (100.0 * std::max(radius, 1.0));
+      if (!std::isfinite(position.x + position.y + position.z)) {
+        out_.error(DiagnosticCode::ValueNotFinite, {},
+                   "a directional light becomes a point light 100 scene sizes away, which is "
+                   "not finite for a scene this large");
+        continue;
+      }
       scene_.lights[light].matrix[3] = glm::dvec4(position, 1.0);
     }
   }
@@ -846,6 +868,12 @@ class Importer {
     glm::dvec3 centre = lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
     double radius = lo.x <= hi.x ? glm::length(hi - lo) / 2 : 0.0;
     glm::dvec3 eye = centre + glm::dvec3(0.0, 0.0, 2.0 * radius + 5.0);
+    if (!std::isfinite(eye.x + eye.y + eye.z + radius)) {
+      out_.error(DiagnosticCode::ValueNotFinite, {},
+                 "the file has no camera, and one on +Z that sees every object would stand "
+                 "beyond the largest number");
+      return;
+    }
     scene_.camera.matrix = cameraFromLookAt(eye, centre);
     out_.report(loss_, DiagnosticCode::GltfNoCamera, {},
                 "the file has no camera: CAMERA looks at the scene from +Z");
@@ -1180,6 +1208,14 @@ class Importer {
       Object object;
       object.kind = part.fit.kind;
       object.matrix = world * part.fit.shape;
+      if (!finite(object.matrix)) {
+        out_.error(DiagnosticCode::ValueNotFinite, {},
+                   "/nodes/" + std::to_string(index) + " (" + nodeLabel(model_, index) + "): its " +
+                       std::string(objectKindName(part.fit.kind)) +
+                       " has a matrix that is not finite (the node's transform times the mesh's "
+                       "size and place overflows)");
+        return;
+      }
       object.material = material(part.material, part.fit.kind);
       if (!roomForOne(index)) return;
       scene_.objects.push_back(std::move(object));

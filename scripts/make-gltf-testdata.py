@@ -387,6 +387,11 @@ def hardening():
         if name == "material-emission-above-one":
             doc = changed(doc, ["meshes", 0, "primitives", 0, "material"], 0)
         write(h + name + ".gltf", text(doc))
+    # Finite scales whose product is not.
+    doc = changed(base, ["nodes", 0, "scale"], [1e200, 1e200, 1e200])
+    doc["nodes"].append({"name": "Big", "scale": [1e200, 1e200, 1e200], "children": [0]})
+    doc["scenes"][0]["nodes"] = [3, 1, 2]
+    write(h + "node-scale-composed-overflows.gltf", text(doc))
     # Losses: valid files whose values a scene file cannot hold.
     lossy = changed(base, ["cameras", 0, "perspective", "aspectRatio"], 1.5)
     lossy = changed(lossy, light + ["range"], 20)
