@@ -1,7 +1,11 @@
 #include "libscene/gltf_document.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include <fstream>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -177,6 +181,43 @@ TEST(GltfDocument, ExtrasAreStaleWhenTheNodePointsAtAnotherKindsMesh) {
   ASSERT_EQ(read.scene.objects.size(), 2u);
   EXPECT_EQ(read.scene.objects[0].kind, ObjectKind::Cube);
   EXPECT_EQ(withCode(read.diagnostics, DiagnosticCode::GltfExtrasStale).size(), 1u);
+}
+
+// Reads `text` with the address space held to what the process holds now
+// and 200 MiB more (enough for the text and its parse, some 80 MiB, not
+// for tinygltf's nodes); exits 42 on std::bad_alloc.
+[[noreturn]] void readUnderAddressLimit(const std::string& text) {
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages = 0;
+  statm >> pages;
+  rlim_t limit = pages * static_cast<rlim_t>(sysconf(_SC_PAGESIZE)) + (rlim_t{200} << 20);
+  rlimit as{limit, limit};
+  setrlimit(RLIMIT_AS, &as);
+  try {
+    ReadResult read = parseGltf(text, "m.gltf", ".");
+    _exit(read.ok() ? 1 : 2);
+  } catch (const std::bad_alloc&) {
+    _exit(42);
+  }
+}
+
+// Under a limit on its address space, reading a file of a million nodes
+// runs out of memory inside tinygltf, which catches std::bad_alloc and
+// returns its text: the reader sends it on as std::bad_alloc, for the tools
+// to report, and never as "not a valid glTF 2.0 file".
+TEST(GltfReaderDeathTest, OutOfMemoryIsBadAllocNotADiagnostic) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
+  GTEST_SKIP() << "the sanitizer reserves more address space than the limit";
+#endif
+#endif
+  std::string text = R"({"asset": {"version": "2.0"}, "nodes": [)";
+  for (int i = 0; i < 999'998; ++i) text += "{},";
+  text += "{}]}";
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(readUnderAddressLimit(text), ::testing::ExitedWithCode(42), "");
 }
 
 }  // namespace
