@@ -387,6 +387,9 @@ def hardening():
         if name == "material-emission-above-one":
             doc = changed(doc, ["meshes", 0, "primitives", 0, "material"], 0)
         write(h + name + ".gltf", text(doc))
+    # In a GLB the JSON chunk has no lines: the pointer alone says where.
+    write(h + "glb-index-node-mesh-string.glb",
+          glb(json.dumps(changed(base, ["nodes", 0, "mesh"], "0")).encode()))
     # Finite scales whose product is not.
     doc = changed(base, ["nodes", 0, "scale"], [1e200, 1e200, 1e200])
     doc["nodes"].append({"name": "Big", "scale": [1e200, 1e200, 1e200], "children": [0]})
