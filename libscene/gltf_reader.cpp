@@ -20,6 +20,8 @@
 
 #include "libscene/glb.h"
 #include "libscene/gltf_document.h"
+#include "libscene/gltf_extras.h"
+#include "libscene/gltf_files.h"
 #include "libscene/gltf_mapping.h"
 #include "libscene/mesh.h"
 #include "libscene/mesh_fit.h"
@@ -94,107 +96,13 @@ std::string parseErrorMessage(const std::string& what) {
   return message;
 }
 
-std::optional<std::string> percentDecoded(std::string_view uri) {
-  std::string out;
-  for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] != '%') {
-      out += uri[i];
-      continue;
-    }
-    if (i + 2 >= uri.size() || !std::isxdigit(static_cast<unsigned char>(uri[i + 1])) ||
-        !std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-      return std::nullopt;
-    }
-    out += static_cast<char>(std::stoi(std::string(uri.substr(i + 1, 2)), nullptr, 16));
-    i += 2;
-  }
-  return out;
-}
-
-bool isInside(const fs::path& folder, const fs::path& path) {
-  auto f = folder.begin();
-  auto p = path.begin();
-  for (; f != folder.end(); ++f, ++p) {
-    if (p == path.end() || *f != *p) return false;
-  }
-  return p != path.end();
-}
-
-// Why a buffer's URI may not be followed, or nothing when it may: only a
-// relative path to a regular file inside the glTF's own folder is read.
-// `target` is then the file it names.
-std::optional<std::string> uriProblem(const std::string& uri, const fs::path& folder,
-                                      fs::path& target) {
-  if (uri.starts_with("data:")) return std::nullopt;
-  std::optional<std::string> decoded = percentDecoded(uri);
-  if (!decoded) return "is not a valid URI";
-  std::size_t colon = decoded->find(':');
-  std::size_t slash = decoded->find('/');
-  if (colon != std::string::npos && (slash == std::string::npos || colon < slash)) {
-    return "names a scheme ('" + decoded->substr(0, colon) +
-           ":'); only files beside the glTF are read";
-  }
-  if (decoded->find('\0') != std::string::npos) return "holds a NUL byte";
-  fs::path relative(*decoded);
-  if (relative.is_absolute()) return "is an absolute path; only files beside the glTF are read";
-  for (const fs::path& part : relative) {
-    if (part == "..") return "climbs out of the glTF's folder with '..'";
-  }
-  std::error_code ec;
-  fs::path base = fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder), ec);
-  if (ec || base.empty()) return "cannot be resolved";
-  target = fs::weakly_canonical(base / relative, ec);
-  if (ec || !isInside(base, target)) return "leads out of the glTF's folder (through a link)";
-  if (!fs::exists(target, ec)) return "names a file that does not exist";
-  if (!fs::is_regular_file(target, ec)) return "names something that is not a regular file";
-  return std::nullopt;
-}
-
-// tinygltf's file system, kept inside the folder: it can neither read
-// elsewhere, nor expand `~` or `$VAR`, nor write.
-struct Confinement {
-  fs::path folder;
-  std::uint64_t maxFileSize = kDefaultMaxFileSize;
-};
-
-bool confinedExists(const std::string& path, void* user) {
-  const auto* c = static_cast<const Confinement*>(user);
-  std::error_code ec;
-  fs::path target = fs::weakly_canonical(path, ec);
-  return !ec && isInside(c->folder, target) && fs::is_regular_file(target, ec);
-}
-
-std::string unexpandedPath(const std::string& path, void*) {
-  return path;
-}
-
-bool confinedRead(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                  void* user) {
-  if (!confinedExists(path, user)) {
-    if (err) *err += "refusing to read '" + path + "'\n";
-    return false;
-  }
-  std::error_code ec;
-  std::uintmax_t size = fs::file_size(path, ec);
-  // Checked before, and again here in case the file grew since.
-  const auto* c = static_cast<const Confinement*>(user);
-  if (ec || size > c->maxFileSize) {
-    if (err) *err += "cannot read '" + path + "'\n";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  out->resize(static_cast<std::size_t>(size));
-  if (size && !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
-    if (err) *err += "cannot read '" + path + "'\n";
-    return false;
-  }
-  return true;
-}
-
-bool noWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-  if (err) *err += "the reader writes nothing\n";
-  return false;
-}
+// Files beside the glTF (gltf_files.h).
+using gltf::confinedExists;
+using gltf::confinedRead;
+using gltf::Confinement;
+using gltf::noWrite;
+using gltf::unexpandedPath;
+using gltf::uriProblem;
 
 bool noImageDecoding(tinygltf::Image*, const int, std::string*, std::string*, int, int,
                      const unsigned char*, int, void*) {
@@ -208,138 +116,13 @@ std::string firstLine(const std::string& text) {
   return line.empty() ? "tinygltf could not read it" : line;
 }
 
-// ---------------------------------------------------------------------------
-// Our own extras.
-
-std::optional<double> number(const Json& j) {
-  if (!j.is_number()) return std::nullopt;
-  double v = j.get<double>();
-  if (!std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
-std::optional<glm::dvec3> vec3(const Json& j) {
-  if (!j.is_array() || j.size() != 3) return std::nullopt;
-  glm::dvec3 v;
-  for (int i = 0; i < 3; ++i) {
-    std::optional<double> x = number(j[i]);
-    if (!x) return std::nullopt;
-    v[i] = *x;
-  }
-  return v;
-}
-
-std::optional<glm::dmat4> rows(const Json& j) {
-  if (!j.is_array() || j.size() != 4) return std::nullopt;
-  glm::dmat4 m;
-  for (int r = 0; r < 4; ++r) {
-    if (!j[r].is_array() || j[r].size() != 4) return std::nullopt;
-    for (int c = 0; c < 4; ++c) {
-      std::optional<double> x = number(j[r][c]);
-      if (!x) return std::nullopt;
-      m[c][r] = *x;
-    }
-  }
-  return m;
-}
-
-Json parseOrNull(const std::string& text) {
-  if (text.empty()) return nullptr;
-  Json j = Json::parse(text, nullptr, false);
-  return j.is_discarded() ? Json(nullptr) : j;
-}
-
-const Json* sfExtras(const Json& extras) {
-  if (!extras.is_object()) return nullptr;
-  auto it = extras.find(gltf::kExtrasKey);
-  return it != extras.end() && it->is_object() ? &*it : nullptr;
-}
-
-struct RecordExtras {
-  std::string record;
-  glm::dvec3 colour{0.0};
-  glm::dmat4 matrix{1.0};
-  std::optional<glm::dvec3> lookAt;
-  std::optional<std::vector<TransformOp>> transforms;
-};
-
-std::optional<std::vector<TransformOp>> transformsFromJson(const Json& j) {
-  if (!j.is_array()) return std::nullopt;
-  std::vector<TransformOp> ops;
-  for (const Json& entry : j) {
-    if (!entry.is_array() || entry.empty() || !entry[0].is_string()) return std::nullopt;
-    std::string name = entry[0].get<std::string>();
-    TransformOp op;
-    bool vector = name == "SCALE" || name == "TRANSLATE";
-    if (name == "SCALE")
-      op.kind = TransformKind::Scale;
-    else if (name == "TRANSLATE")
-      op.kind = TransformKind::Translate;
-    else if (name == "ROTATE_X")
-      op.kind = TransformKind::RotateX;
-    else if (name == "ROTATE_Y")
-      op.kind = TransformKind::RotateY;
-    else if (name == "ROTATE_Z")
-      op.kind = TransformKind::RotateZ;
-    else
-      return std::nullopt;
-    if (entry.size() != (vector ? 4u : 2u)) return std::nullopt;
-    for (std::size_t i = 1; i < entry.size(); ++i) {
-      std::optional<double> v = number(entry[i]);
-      if (!v) return std::nullopt;
-      op.value[static_cast<int>(i - 1)] = *v;
-    }
-    ops.push_back(op);
-  }
-  return ops;
-}
-
-std::optional<RecordExtras> recordExtras(const std::string& extrasText) {
-  Json extras = parseOrNull(extrasText);
-  const Json* sf = sfExtras(extras);
-  if (!sf || !sf->contains("record") || !(*sf)["record"].is_string()) return std::nullopt;
-  RecordExtras out;
-  out.record = (*sf)["record"].get<std::string>();
-  std::optional<glm::dmat4> m = sf->contains("matrix") ? rows((*sf)["matrix"]) : std::nullopt;
-  if (!m) return std::nullopt;
-  out.matrix = *m;
-  if (out.record == "CAMERA" || out.record == "LIGHT") {
-    std::optional<glm::dvec3> colour =
-        sf->contains("colour") ? vec3((*sf)["colour"]) : std::nullopt;
-    if (!colour) return std::nullopt;
-    out.colour = *colour;
-  } else if (!objectKindFromName(out.record)) {
-    return std::nullopt;
-  }
-  if (out.record == "CAMERA" && sf->contains("lookAt")) {
-    out.lookAt = vec3((*sf)["lookAt"]);
-    if (!out.lookAt) return std::nullopt;
-  }
-  if (sf->contains("transforms")) {
-    out.transforms = transformsFromJson((*sf)["transforms"]);
-    // The operations are kept only while they still make the matrix.
-    if (out.transforms && composeTransform(*out.transforms) != out.matrix) out.transforms.reset();
-  }
-  return out;
-}
-
-std::optional<Material> materialExtras(const std::string& extrasText) {
-  Json extras = parseOrNull(extrasText);
-  const Json* sf = sfExtras(extras);
-  if (!sf) return std::nullopt;
-  Material m;
-  std::optional<glm::dvec3> colour = sf->contains("colour") ? vec3((*sf)["colour"]) : std::nullopt;
-  if (!colour) return std::nullopt;
-  m.colour = *colour;
-  for (MaterialProperty p : kMaterialProperties) {
-    std::string key(materialPropertyName(p));
-    for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    std::optional<double> v = sf->contains(key) ? number((*sf)[key]) : std::nullopt;
-    if (!v) return std::nullopt;
-    materialValue(m, p) = *v;
-  }
-  return m;
-}
+// Our own extras (gltf_extras.h).
+using gltf::materialExtras;
+using gltf::number;
+using gltf::parseOrNull;
+using gltf::RecordExtras;
+using gltf::recordExtras;
+using gltf::sfExtras;
 
 // ---------------------------------------------------------------------------
 // The model, once tinygltf has read it.
