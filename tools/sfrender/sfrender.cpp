@@ -163,6 +163,29 @@ std::optional<int> targetRefusal(const std::string& input, const SceneAndTarget&
   return std::nullopt;
 }
 
+// Whether the render fits in memory and its threads start: refused before
+// it starts rather than killed, or aborted, half-way.
+std::optional<int> resourceRefusal(const SceneAndTarget& job,
+                                   const render::RenderSettings& settings,
+                                   const AvailableMemoryProbe& availableMemory, Stage& stage,
+                                   std::ostream& err) {
+  RenderMemoryEstimate estimate = estimateRenderMemory(
+      job.scene.objects.size(), job.scene.lights.size(), settings.width, settings.height);
+  if (std::optional<std::string> refusal =
+          renderMemoryRefusal(estimate, availableMemory ? availableMemory() : std::nullopt)) {
+    err << "sfrender: error: " << *refusal << "\n";
+    return toInt(ExitCode::OutOfResources);
+  }
+  int threads = renderThreadCount(settings.threads);
+  stage.set("starting " + std::to_string(threads) + " threads");
+  if (std::optional<std::string> failure = threadStartFailure(threads)) {
+    err << "sfrender: error: cannot start " << threads << " threads: " << *failure
+        << "; ask for fewer with --threads\n";
+    return toInt(ExitCode::OutOfResources);
+  }
+  return std::nullopt;
+}
+
 int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
                  bool errIsTerminal, const AvailableMemoryProbe& availableMemory, Stage& stage) {
   CLI::App app{"Ray traces a scene file or an instruction file (the default scene without one)",
@@ -224,19 +247,8 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
 
   // Step 2: render, with a progress bar on a terminal, if it fits in memory
   // and its threads start.
-  RenderMemoryEstimate estimate = estimateRenderMemory(
-      job.scene.objects.size(), job.scene.lights.size(), settings.width, settings.height);
-  if (std::optional<std::string> refusal =
-          renderMemoryRefusal(estimate, availableMemory ? availableMemory() : std::nullopt)) {
-    err << "sfrender: error: " << *refusal << "\n";
-    return toInt(ExitCode::OutOfResources);
-  }
-  int threads = renderThreadCount(settings.threads);
-  stage.set("starting " + std::to_string(threads) + " threads");
-  if (std::optional<std::string> failure = threadStartFailure(threads)) {
-    err << "sfrender: error: cannot start " << threads << " threads: " << *failure
-        << "; ask for fewer with --threads\n";
-    return toInt(ExitCode::OutOfResources);
+  if (std::optional<int> refused = resourceRefusal(job, settings, availableMemory, stage, err)) {
+    return *refused;
   }
   stage.set("preparing the scene");
   render::RenderScene compiled(job.scene);
