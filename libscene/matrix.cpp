@@ -2,21 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/common.hpp>
-#include <glm/gtc/matrix_access.hpp>
-#include <glm/matrix.hpp>
 #include <limits>
 #include <utility>
 
+#include <glm/common.hpp>
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/matrix.hpp>
+
 namespace scene {
 
-glm::dmat3 linearPart(const glm::dmat4& m) {
-  return glm::dmat3(m);
-}
+glm::dmat3 linearPart(const glm::dmat4& m) { return glm::dmat3(m); }
 
-glm::dmat4 transposed(const glm::dmat4& m) {
-  return glm::transpose(m);
-}
+glm::dmat4 transposed(const glm::dmat4& m) { return glm::transpose(m); }
 
 glm::dvec3 singularValues(const glm::dmat3& a) {
   glm::dvec3 sigma = glm::abs(rotationScaleRotation(a).sigma);

@@ -116,7 +116,8 @@ class SceneFileParser {
       }
       reportUnknownKeyword(cursor_, 0, kRecordNames, kExpectedRecord, out_);
       // "sphere" is still a sphere for the rest of the checks.
-      if (auto guess = suggestKeyword(name, kRecordNames); guess && guess->size() == name.size()) {
+      if (auto guess = suggestKeyword(name, kRecordNames);
+          guess && guess->size() == name.size()) {
         kind = recordKindFromName(*guess);
       }
     }

@@ -1,9 +1,10 @@
 #include "libscene/validation.h"
 
 #include <cmath>
+#include <string>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
-#include <string>
 
 #include "libscene/matrix.h"
 #include "libscene/number.h"
@@ -43,8 +44,8 @@ void checkColour(const glm::dvec3& colour, RecordRole role, const RecordSpans& s
     // -0.0 is not below 0: it is black, like 0.
     if (colour[i] < 0.0) {
       out.error(DiagnosticCode::NegativeColour, spans.colour[i],
-                describeRole(role) + " colour has a negative " + kChannelNames[i] + " component (" +
-                    formatNumber(colour[i]) + ")");
+                describeRole(role) + " colour has a negative " + kChannelNames[i] +
+                    " component (" + formatNumber(colour[i]) + ")");
     } else if (role == RecordRole::Object && colour[i] > 1.0) {
       out.warning(DiagnosticCode::ColourAboveOne, spans.colour[i],
                   std::string("object colour ") + kChannelNames[i] + " component " +
@@ -132,8 +133,7 @@ void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticLis
   glm::dmat3 gram = glm::transpose(a) * a;
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
-    for (int r = 0; r < 3; ++r)
-      worst = std::max(worst, std::abs(gram[c][r] - (r == c ? 1.0 : 0.0)));
+    for (int r = 0; r < 3; ++r) worst = std::max(worst, std::abs(gram[c][r] - (r == c ? 1.0 : 0.0)));
   }
   if (worst > kParallelTolerance || glm::determinant(a) < 0.0) {
     out.warning(DiagnosticCode::CameraScaled, where,
@@ -236,8 +236,8 @@ bool checkSceneFinite(const Scene& scene, DiagnosticList& out) {
 
 void checkSceneLevel(const Scene& scene, DiagnosticList& out) {
   if (scene.lights.empty()) {
-    out.warning(DiagnosticCode::NoLight, scene.camera.span, "scene has no LIGHT").hint =
-        "nothing will be lit; every object shows its ambient colour at most";
+    out.warning(DiagnosticCode::NoLight, scene.camera.span, "scene has no LIGHT")
+        .hint = "nothing will be lit; every object shows its ambient colour at most";
   }
 }
 
