@@ -522,16 +522,14 @@ class InstructionParser {
                  "LOOK_AT is the camera's own LOCATION, so it looks nowhere");
       ok = false;
     } else if (ok) {
-      // The direction must survive normalisation: far apart points overflow
-      // its length, subnormal offsets underflow it to 0.
-      double length = glm::length(open.vectors[1] - open.vectors[0]);
-      if (!std::isfinite(length) || !(length > 0.0)) {
+      // Any finite non-zero difference has a direction (cameraFromLookAt
+      // scales it by a power of two first, so 1e-320 or 1e200 apart is
+      // fine); only a difference that overflows has none.
+      glm::dvec3 d = open.vectors[1] - open.vectors[0];
+      if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)) {
         out_.error(DiagnosticCode::CameraDegenerate, lookAtSpan_,
-                   std::isfinite(length)
-                       ? "LOOK_AT is too close to LOCATION: the direction's length rounds to 0"
-                       : "LOOK_AT is too far from LOCATION: the direction's length overflows a "
-                         "double")
-            .hint = "scale the scene so that its coordinates stay between 1e-150 and 1e150";
+                   "LOOK_AT is too far from LOCATION: their difference overflows a double")
+            .hint = "scale the scene so that its coordinates stay below about 1e307";
         ok = false;
       }
     }
@@ -553,8 +551,20 @@ class InstructionParser {
 
   void finishObject() {
     Object& object = *object_;
-    object.matrix = composeTransform(*object.transforms);
     std::size_t before = out_.errorCount();
+    std::optional<std::size_t> overflow;
+    object.matrix = composeTransform(*object.transforms, overflow);
+    if (overflow) {
+      // A chain of finite SCALEs or TRANSLATEs can still overflow: say
+      // which operation did it.
+      const TransformOp& op = (*object.transforms)[*overflow];
+      out_.error(DiagnosticCode::ValueNotFinite, op.span,
+                 std::string(transformKindName(op.kind)) +
+                     " makes the object's matrix overflow a double (operation " +
+                     std::to_string(*overflow + 1) + " of the TRANSFORMATION)")
+          .hint = "every entry of the composed matrix must be a finite double";
+      return;
+    }
     checkObjectMatrix(object.matrix, objectKindName(object.kind),
                       transformStart_ ? *transformStart_ : object.span, out_);
     if (out_.errorCount() == before) scene_.objects.push_back(std::move(object));

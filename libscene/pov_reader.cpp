@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "libscene/matrix.h"
 #include "libscene/number.h"
 #include "libscene/pov_lexer.h"
 #include "libscene/pov_names.h"
@@ -125,6 +126,9 @@ struct Symbol {
   Transform transform;
   std::shared_ptr<const PendingObject> object;
   std::string what;  // for Other: what was declared ("a union", "a string")
+  // The value's expression failed (0 / 0, a syntax error): that error was
+  // reported, and a use of the name fails without a second one.
+  bool failed = false;
 };
 
 std::string_view symbolKindName(SymbolKind kind) {
@@ -249,6 +253,13 @@ glm::dmat3 rotationFromY(const glm::dvec3& d) {
   r[1] = glm::dvec3(-v.z, 1.0 - k * (v.x * v.x + v.z * v.z), v.x);
   r[2] = glm::dvec3(k * v.x * v.z, -v.x, 1.0 - k * v.x * v.x);
   return r;
+}
+
+// (a + b) / 2, also where a + b overflows (corners at -1e308 and 1e308).
+glm::dvec3 halfSum(const glm::dvec3& a, const glm::dvec3& b) {
+  glm::dvec3 sum = (a + b) * 0.5;
+  if (std::isfinite(sum.x) && std::isfinite(sum.y) && std::isfinite(sum.z)) return sum;
+  return a * 0.5 + b * 0.5;
 }
 
 glm::dmat4 withTranslation(const glm::dmat3& a, const glm::dvec3& t) {
@@ -707,7 +718,13 @@ class PovParser {
       symbol.kind = SymbolKind::Other;
       symbol.what = what;
     } else {
-      symbol.value = colourModifiers(expression());
+      try {
+        symbol.value = colourModifiers(expression());
+      } catch (const ParseError&) {
+        symbol.failed = true;
+        symbols_.insert_or_assign(std::string(name.text), std::move(symbol));
+        throw;
+      }
     }
     acceptSymbol(';');
     bool inserted = symbols_.insert_or_assign(std::string(name.text), std::move(symbol)).second;
@@ -755,10 +772,11 @@ class PovParser {
   PovValue expression() {
     PovValue value = term();
     for (;;) {
+      SourceSpan where = peek().span;
       if (acceptSymbol('+')) {
-        value = applyOperator(value, term(), PovOperator::Add);
+        value = operation(value, term(), PovOperator::Add, where);
       } else if (acceptSymbol('-')) {
-        value = applyOperator(value, term(), PovOperator::Subtract);
+        value = operation(value, term(), PovOperator::Subtract, where);
       } else {
         return value;
       }
@@ -768,14 +786,68 @@ class PovParser {
   PovValue term() {
     PovValue value = unary();
     for (;;) {
+      SourceSpan where = peek().span;
       if (acceptSymbol('*')) {
-        value = applyOperator(value, unary(), PovOperator::Multiply);
+        value = operation(value, unary(), PovOperator::Multiply, where);
       } else if (acceptSymbol('/')) {
-        value = applyOperator(value, unary(), PovOperator::Divide);
+        value = operation(value, unary(), PovOperator::Divide, where);
       } else {
         return value;
       }
     }
+  }
+
+  // a op b, refused at the operator when it is not finite (0 / 0, an
+  // overflow): POV-Ray would carry the NaN on, and nothing after could tell
+  // where it came from.
+  PovValue operation(const PovValue& a, const PovValue& b, PovOperator op, SourceSpan where) {
+    PovValue value = applyOperator(a, b, op);
+    static constexpr const char* kSymbols[] = {"+", "-", "*", "/"};
+    const char* symbol = kSymbols[static_cast<int>(op)];
+    if (a.isFloat() && b.isFloat()) {
+      requireFinite(value, where, formatNumber(a.v[0]) + " " + symbol + " " + formatNumber(b.v[0]));
+    } else {
+      requireFinite(value, where,
+                    std::string("'") + symbol + "' of " + std::string(a.typeName()) + " and " +
+                        std::string(b.typeName()));
+    }
+    return value;
+  }
+
+  // Reports value-not-finite at `where` and abandons the statement when a
+  // component of `value` is NaN or infinite.
+  void requireFinite(const PovValue& value, SourceSpan where, const std::string& what) {
+    for (int i = 0; i < value.size; ++i) {
+      double x = value.v[i];
+      if (std::isnan(x)) notFinite(where, what + " gives nan");
+      if (std::isinf(x)) notFinite(where, what + " gives " + (x > 0 ? "inf" : "-inf"));
+    }
+  }
+
+  [[noreturn]] void notFinite(SourceSpan where, const std::string& what) {
+    out_.error(DiagnosticCode::ValueNotFinite, where, what + ", which is not a finite number")
+        .hint = "every number of a scene must be a finite double";
+    throw ParseError{};
+  }
+
+  // After a transformation or a shape is built from finite numbers, its
+  // matrix can still overflow (a scale by 1e200 twice).
+  void requireFinite(const glm::dmat4& m, SourceSpan where, const std::string& what) {
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) {
+        double x = m[c][r];
+        if (!std::isfinite(x)) {
+          notFinite(where, what + " makes a matrix entry " +
+                               (std::isnan(x) ? "nan"
+                                : x > 0       ? "inf"
+                                              : "-inf"));
+        }
+      }
+    }
+  }
+
+  void requireFinite(const glm::dvec3& v, SourceSpan where, const std::string& what) {
+    requireFinite(PovValue::vector(v), where, what);
   }
 
   PovValue unary() {
@@ -850,6 +922,7 @@ class PovParser {
     if (peek().isSymbol('(') && isPovFunction(w)) return functionCall(word);
     if (auto it = symbols_.find(std::string(w)); it != symbols_.end()) {
       const Symbol& s = it->second;
+      if (s.failed) throw ParseError{};
       if (s.kind != SymbolKind::Value) {
         fail(word.span,
              "'" + std::string(w) + "' is " +
@@ -951,6 +1024,13 @@ class PovParser {
     std::string error;
     std::optional<PovValue> value = callPovFunction(name.text, args, error);
     if (!value) fail(name.span, error);
+    std::string call = std::string(name.text) + "(";
+    bool floats = true;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      floats &= args[i].isFloat();
+      call += (i ? ", " : "") + (args[i].isFloat() ? formatNumber(args[i].v[0]) : "...");
+    }
+    requireFinite(*value, name.span, floats ? call + ")" : "'" + std::string(name.text) + "'");
     return *value;
   }
 
@@ -981,6 +1061,7 @@ class PovParser {
     }
     if (srgb) {
       for (int i = 0; i < 3; ++i) c.v[i] = povSrgbToLinear(c.v[i]);
+      requireFinite(c, word.span, "the " + std::string(w) + " colour");
     }
     return c;
   }
@@ -1016,6 +1097,8 @@ class PovParser {
   double greyOf(const PovValue& v, const PovToken& keyword, std::string_view what) {
     if (v.v[0] == v.v[1] && v.v[1] == v.v[2]) return v.v[0];
     double mean = (v.v[0] + v.v[1] + v.v[2]) / 3.0;
+    // Three large channels overflow their sum, not their mean.
+    if (!std::isfinite(mean)) mean = v.v[0] / 3.0 + v.v[1] / 3.0 + v.v[2] / 3.0;
     loss(keyword.span,
          "a coloured " + std::string(what) + " becomes its mean " + formatNumber(mean),
          std::string(what) + " is one number in the scene model");
@@ -1062,6 +1145,11 @@ class PovParser {
   // One of translate, rotate, scale, matrix, transform, applied to `t`.
   void transformItem(Transform& t) {
     PovToken word = take();
+    applyTransformItem(word, t);
+    requireFinite(t.m, word.span, "this " + std::string(word.text));
+  }
+
+  void applyTransformItem(const PovToken& word, Transform& t) {
     std::string_view w = word.text;
     if (w == "translate") {
       t.then(translation(vectorValue("translate")));
@@ -1116,6 +1204,7 @@ class PovParser {
   Transform declaredTransform(const PovToken& name) {
     auto it = symbols_.find(std::string(name.text));
     if (it == symbols_.end()) unknownIdentifier(name);
+    if (it->second.failed) throw ParseError{};
     if (it->second.kind != SymbolKind::Transform) {
       fail(name.span, "'" + std::string(name.text) + "' is " +
                           std::string(symbolKindName(it->second.kind)) + ", not a transform");
@@ -1124,7 +1213,7 @@ class PovParser {
   }
 
   Transform transformBlock() {
-    expectSymbol('{', "after transform");
+    PovToken open = expectSymbol('{', "after transform");
     Transform t;
     bool inverse = false;
     while (!acceptSymbol('}')) {
@@ -1135,13 +1224,18 @@ class PovParser {
         take();
         inverse = true;
       } else if (p.kind == PovTokenKind::Word && symbols_.count(std::string(p.text))) {
-        t.then(declaredTransform(take()));
+        PovToken name = take();
+        t.then(declaredTransform(name));
+        requireFinite(t.m, name.span, "the transform '" + std::string(name.text) + "'");
       } else {
         fail(p.span,
              "a transform holds translate, rotate, scale, matrix or inverse, found " + describe(p));
       }
     }
-    if (inverse && !t.identity) t.m = glm::inverse(t.m);
+    if (inverse && !t.identity) {
+      t.m = glm::inverse(t.m);
+      requireFinite(t.m, open.span, "the inverse of this transform");
+    }
     return t;
   }
 
@@ -1507,6 +1601,10 @@ class PovParser {
       c.up = linear * c.up;
       c.right = linear * c.right;
     }
+    // A tiny angle, or a transform of large vectors, can overflow them.
+    for (const glm::dvec3* v : {&c.location, &c.direction, &c.up, &c.right}) {
+      requireFinite(*v, keyword.span, "this camera statement");
+    }
     camera_ = c;
     if (cameraSpan_.known()) {
       ignored(keyword.span, "a later camera statement changes the camera, as in POV-Ray");
@@ -1565,6 +1663,7 @@ class PovParser {
     }
     light.matrix = translation(position);
     if (!transform.identity) light.matrix = transform.m * light.matrix;
+    requireFinite(light.matrix, keyword.span, "moving the light");
     countElement(light.span);
     lights_.push_back(light);
   }
@@ -1610,7 +1709,7 @@ class PovParser {
         degenerate(keyword.span, "the box has a side of length 0");
       }
       if (!(lo == glm::dvec3(-1.0) && hi == glm::dvec3(1.0))) {
-        object.transform.then(translation((lo + hi) * 0.5) * scaling((hi - lo) * 0.5));
+        object.transform.then(translation(halfSum(lo, hi)) * scaling(halfSum(hi, -lo)));
       }
     } else if (w == "cylinder") {
       object.kind = ObjectKind::Cylinder;
@@ -1620,7 +1719,10 @@ class PovParser {
       acceptSymbol(',');
       double radius = floatValue("the cylinder's radius");
       glm::dvec3 axis = b - a;
-      double length = glm::length(axis);
+      requireFinite(axis, keyword.span, "the cylinder's cap minus its base");
+      // Scaled by a power of two: an axis of length 1e-300 is short, not 0
+      // (and the same bits as glm::length wherever that does not underflow).
+      double length = scaledLength(axis);
       if (!(length > 0.0))
         degenerate(keyword.span, "the cylinder's base and cap are the same point");
       if (!(radius > 0.0)) {
@@ -1628,7 +1730,7 @@ class PovParser {
                    "a cylinder's radius must be above 0, not " + formatNumber(radius));
       }
       if (!(a == glm::dvec3(0, -1, 0) && b == glm::dvec3(0, 1, 0) && radius == 1.0)) {
-        glm::dmat4 m = withTranslation(rotationFromY(axis / length), (a + b) * 0.5) *
+        glm::dmat4 m = withTranslation(rotationFromY(scaledNormalize(axis)), halfSum(a, b)) *
                        scaling(glm::dvec3(radius, length * 0.5, radius));
         object.transform.then(m);
       }
@@ -1637,14 +1739,19 @@ class PovParser {
       glm::dvec3 normal = vectorValue("the plane's normal");
       acceptSymbol(',');
       double distance = floatValue("the plane's distance");
-      double length = glm::length(normal);
-      if (!(length >= kPovEpsilon)) degenerate(keyword.span, "the plane's normal has length 0");
+      double length = scaledLength(normal);
+      if (!(length > 0.0)) degenerate(keyword.span, "the plane's normal has length 0");
+      if (length < kPovEpsilon) {
+        // POV-Ray refuses a normal this short as degenerate too.
+        degenerate(keyword.span, "the plane's normal is too short to give a direction (length " +
+                                     formatNumber(length) + ", below POV-Ray's 1e-10)");
+      }
       // POV-Ray's plane is the surface n . p = distance for the unit normal
       // n (a half-space, whose surface is all a PLANE is). Along +y or -y
       // through the origin it is the PLANE's own y = 0.
       bool ownPlane = normal.x == 0.0 && normal.z == 0.0 && distance == 0.0;
       if (!ownPlane) {
-        glm::dvec3 n = normal / length;
+        glm::dvec3 n = scaledNormalize(normal);
         object.transform.then(withTranslation(rotationFromY(n), n * distance));
       }
     } else {  // object { Name ... }
@@ -1667,6 +1774,7 @@ class PovParser {
       object.transform = declared.transform;
       object.patch = declared.patch;
     }
+    requireFinite(object.transform.m, keyword.span, "the " + std::string(w) + "'s shape");
     objectModifiers(object, keyword);
     return object;
   }
@@ -1879,9 +1987,10 @@ class PovParser {
                    words.number(width) && words.word("height") && words.number(height);
     ok = ok && words.done();
     if (ok) {
-      glm::dvec3 f = glm::normalize(-glm::dvec3(m[2]));
-      glm::dvec3 u(m[1]);
-      u = glm::normalize(u - glm::dot(u, f) * f);
+      // Scaled normalisation: axes of length 1e-300 or 1e300 are valid.
+      glm::dvec3 f = scaledNormalize(-glm::dvec3(m[2]));
+      glm::dvec3 u = scaledNormalize(glm::dvec3(m[1]));
+      u = scaledNormalize(u - glm::dot(u, f) * f);
       ok = sameBits(m[3][0], camera.matrix[3][0]) && sameBits(m[3][1], camera.matrix[3][1]) &&
            sameBits(m[3][2], camera.matrix[3][2]) && glm::length(f - forward) < 1e-12 &&
            glm::length(u - up) < 1e-9;
@@ -1992,6 +2101,12 @@ class PovParser {
         // Blinn's (N.H)^(1/roughness) is about Phong's (R.V)^(1/(4 roughness)).
         m.specular = *p.specular;
         m.shininess = 1.0 / (4.0 * *p.roughness);
+        if (!std::isfinite(m.shininess)) {
+          out_.error(DiagnosticCode::ValueNotFinite, object.span,
+                     "roughness " + formatNumber(*p.roughness) +
+                         " gives a phong size that is not a finite number")
+              .hint = "every number of a scene must be a finite double";
+        }
         loss(object.span, "the specular highlight (Blinn) becomes a phong highlight of size " +
                               formatNumber(m.shininess));
       } else {

@@ -93,6 +93,25 @@ glm::dmat4 composeTransform(std::span<const TransformOp> ops) {
   return m;
 }
 
+glm::dmat4 composeTransform(std::span<const TransformOp> ops,
+                            std::optional<std::size_t>& overflow) {
+  glm::dmat4 m(1.0);
+  for (std::size_t i = 0; i < ops.size(); ++i) {
+    glm::dmat4 next = m;
+    applyOp(ops[i], next);
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) {
+        if (!std::isfinite(next[c][r])) {
+          overflow = i;
+          return m;
+        }
+      }
+    }
+    m = next;
+  }
+  return m;
+}
+
 glm::dmat4 cameraFromLookAt(const glm::dvec3& location, const glm::dvec3& lookAt) {
   // Points 1e-320 or 1e200 apart underflow or overflow the plain
   // normalisation (to infinity, or to a zero vector that looks finite);

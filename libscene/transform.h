@@ -2,6 +2,8 @@
 // operations into a matrix, and decomposing a matrix back into operations.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -17,6 +19,12 @@ glm::dmat4 transformMatrix(const TransformOp& op);
 
 // M = Ok * ... * O2 * O1 for operations O1..Ok in file order.
 glm::dmat4 composeTransform(std::span<const TransformOp> ops);
+
+// The same product, stopping at the first operation after which an entry of
+// the matrix is no longer finite (a chain of SCALE 1e200): its index in
+// `overflow`, and the matrix as it was before it.
+glm::dmat4 composeTransform(std::span<const TransformOp> ops,
+                            std::optional<std::size_t>& overflow);
 
 // The instruction camera: eye at `location`, forward toward `lookAt`, up from
 // world +Y (or from -Z / +Z when looking straight down / up). Columns are

@@ -1,0 +1,5 @@
+#declare Zero = 0;
+#declare Bad = Zero / Zero;
+camera { location <0, 1, -5> look_at <0, 0, 0> }
+light_source { <5, 5, -5> color rgb 1 }
+sphere { <Bad, 0, 0>, 1 }
