@@ -384,10 +384,13 @@ class Checker {
         return;
       }
     }
-    if (glows || m.contains("emissiveTexture")) {
-      std::string where = at + (glows ? "/emissiveFactor" : "/emissiveTexture");
-      problem(DiagnosticCode::GltfIgnored, where,
-              "the emission of " + at + " is dropped: a scene file's objects do not glow", loss_);
+    // The emission is the factor times the texture (black by default), so
+    // a texture alone emits nothing.
+    if (glows) {
+      problem(DiagnosticCode::GltfIgnored, at + "/emissiveFactor",
+              at + "/emissiveFactor " + factor->dump() +
+                  " is dropped: a scene file's objects do not glow",
+              loss_);
     }
   }
 
