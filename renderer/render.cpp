@@ -65,6 +65,25 @@ void forEachTile(int width, int height, int threads, PerTile&& perTile,
   for (std::thread& t : pool) t.join();
 }
 
+// The level of an 8-bit image (tools::quantizeChannel): round(clamp(v, 0, 1) * 255).
+long level8(float v) {
+  return std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
+}
+
+// Whether every colour from v to v + slack, in each channel, is stored as
+// the same 8-bit level. The margin covers the rounding by which the full
+// colour, summed in another order of terms, can stray past that range.
+bool oneLevel(const glm::dvec3& v, double slack) {
+  constexpr double kRounding = 1e-9;
+  for (int c = 0; c < 3; ++c) {
+    if (level8(toStoredChannel(v[c] - kRounding)) !=
+        level8(toStoredChannel(v[c] + slack + kRounding))) {
+      return false;
+    }
+  }
+  return true;
+}
+
 int threadCount(int requested) {
   if (requested > 0) return requested;
   return std::max(1u, std::thread::hardware_concurrency());
@@ -121,8 +140,14 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
     for (std::uint32_t object : scene.mediaContaining(camera.eye())) eyeMedia.push(object);
   }
 
+  // Retracing needs a finite bound, has nothing to mend at tolerance 0, and
+  // traces in full: without an allowance that could never end.
+  bool certifies = tolerance > 0.0 && settings.maxRaysPerSample > 0 &&
+                   tracer.bound().at(0) < RadianceBound::kUnbounded;
+
   int threads = threadCount(settings.threads);
   std::vector<TraceContext> contexts(threads);
+  std::vector<std::uint64_t> retraced(threads, 0);
   int spp = std::max(1, settings.samplesPerPixel);
   forEachTile(
       settings.width, settings.height, threads,
@@ -131,19 +156,44 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
         // where it can matter (a scene without transparency never reads or
         // changes it), as the copy cost as much as a tenth of a primary ray.
         MediumStack media = eyeMedia;
+        TraceContext& context = contexts[worker];
+        // The mean of a pixel's samples, traced to within `allowed`, and in
+        // `slack` the bound on what adaptive depth control left out of it.
+        auto tracePixel = [&](int i, int j, double allowed, double& slack) {
+          glm::dvec3 sum(0.0);
+          slack = 0.0;
+          for (int s = 0; s < spp; ++s) {
+            glm::dvec2 at = samplePosition(i, j, s, spp, settings.seed);
+            if (scene.hasTransparency()) media = eyeMedia;
+            ++context.counts.primary;
+            context.allowance = allowance;
+            context.slack = 0.0;
+            sum += tracer.trace(camera.rayThrough(at.x, at.y), RaySource{}, 0, media, context,
+                                allowed);
+            slack += context.slack;
+          }
+          // Dividing by 1 is exact: skipped, for one division less a pixel.
+          if (spp > 1) {
+            sum /= static_cast<double>(spp);
+            slack /= static_cast<double>(spp);
+          }
+          return sum;
+        };
         for (int j = y0; j < y1; ++j) {
           for (int i = x0; i < x1; ++i) {
-            glm::dvec3 sum(0.0);
-            for (int s = 0; s < spp; ++s) {
-              glm::dvec2 at = samplePosition(i, j, s, spp, settings.seed);
-              if (scene.hasTransparency()) media = eyeMedia;
-              ++contexts[worker].counts.primary;
-              contexts[worker].allowance = allowance;
-              sum += tracer.trace(camera.rayThrough(at.x, at.y), RaySource{}, 0, media,
-                                  contexts[worker], tolerance);
+            double slack = 0.0;
+            glm::dvec3 sum = tracePixel(i, j, tolerance, slack);
+            // The full colour lies in [sum, sum + slack]: where that range
+            // holds two 8-bit levels, the pixel is traced again in full, so
+            // that its level is the one full tracing gives (unless that
+            // trace too runs out of its allowance: then the first stays).
+            if (slack > 0.0 && certifies && !oneLevel(sum, slack)) {
+              std::uint64_t cutBefore = context.counts.cut;
+              double fullSlack = 0.0;
+              glm::dvec3 full = tracePixel(i, j, 0.0, fullSlack);
+              if (context.counts.cut == cutBefore) sum = full;
+              ++retraced[worker];
             }
-            // Dividing by 1 is exact: skipped, for one division less a pixel.
-            if (spp > 1) sum /= static_cast<double>(spp);
             float* p = &image.rgb[3 * (static_cast<std::size_t>(j) * settings.width + i)];
             for (int c = 0; c < 3; ++c) p[c] = toStoredChannel(sum[c]);
           }
@@ -154,6 +204,8 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
   if (statistics) {
     statistics->rays = RayCounts{};
     for (const TraceContext& c : contexts) statistics->rays += c.counts;
+    statistics->retracedPixels = 0;
+    for (std::uint64_t r : retraced) statistics->retracedPixels += r;
     statistics->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }

@@ -18,16 +18,17 @@ struct RenderSettings {
   double verticalFovDegrees = 60.0;
   int samplesPerPixel = 1;
   int maxDepth = 5;
-  // The most adaptive depth control may change a channel of a sample (and
-  // so of a pixel) by leaving out reflected and refracted rays: half a level
-  // of an 8-bit image, so that each level stays what full tracing gives but
-  // where the value lies that close to a rounding boundary (docs/RENDERING.md,
+  // The most adaptive depth control may lower a channel of a sample (and so
+  // of a pixel) by leaving out reflected and refracted rays: half a level of
+  // an 8-bit image. A pixel whose level that could change is traced again in
+  // full, so every level is what full tracing gives (docs/RENDERING.md,
   // "Cost"). 0 traces every branch to the depth limit.
   double pruneTolerance = 0.5 / 255.0;
   // The most reflected and refracted rays one sample traces, whatever the
   // scene: where every hit passes on nearly all it receives to both its
   // children, no tolerance bounds the work, and this does (docs/RENDERING.md,
-  // "Cost"). 0: no limit.
+  // "Cost"). 0: no limit, and then no pixel is retraced, so that an 8-bit
+  // level can come out one below what full tracing gives.
   std::uint64_t maxRaysPerSample = 4096;
   int threads = 0;  // 0: every core
   std::uint64_t seed = 0;
@@ -65,6 +66,9 @@ struct Image {
 struct RenderStatistics {
   double seconds = 0.0;
   RayCounts rays;
+  // Pixels traced again in full because what adaptive depth control left
+  // out could have moved their 8-bit level (their primary rays count twice).
+  std::uint64_t retracedPixels = 0;
 };
 
 // Called after each finished tile with the tiles done and the total.

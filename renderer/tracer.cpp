@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <utility>
 
 #include "renderer/float_error.h"
 
@@ -177,11 +178,16 @@ glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce
   if (m.reflectivity > 0.0) {
     if (!worthTracing(m.reflectivity, bounce, tolerance, childTolerance)) {
       ++context.counts.pruned;
+      context.slack += m.reflectivity * bound_.at(bounce + 1);
     } else if (takeRay(context)) {
+      double outer = std::exchange(context.slack, 0.0);
       glm::dvec3 r = glm::reflect(d, n);
       reflected =
           m.reflectivity * traceWith<kRefraction>(spawnFrom(hit, r), leaving(hit, r), bounce + 1,
                                                   media, context, childTolerance);
+      context.slack = outer + m.reflectivity * context.slack;
+    } else {
+      context.slack += m.reflectivity * bound_.at(bounce + 1);
     }
   }
   return colour + reflected;
@@ -232,18 +238,28 @@ glm::dvec3 Tracer::reflectAndRefract(const Hit& hit, const glm::dvec3& d, const 
   context.counts.pruned +=
       (reflects && !traceReflected ? 1 : 0) + (passes && !traceRefracted ? 1 : 0);
 
+  // A part not traced leaves out at most its weight times the bound; a part
+  // traced, its weight times what its own branches left out.
+  double childBound = bound_.at(bounce + 1);
+  auto leftOut = [&](double weight) { context.slack += std::abs(weight) * childBound; };
   glm::dvec3 reflected(0.0);
   auto traceReflection = [&] {
-    if (!traceReflected || !takeRay(context)) return;
+    if (!reflects) return;
+    if (!traceReflected || !takeRay(context)) return leftOut(reflectedWeight);
+    double outer = std::exchange(context.slack, 0.0);
     glm::dvec3 r = glm::reflect(d, n);
     reflected = m.reflectivity * traceWith<true>(spawnFrom(hit, r), leaving(hit, r), bounce + 1,
                                                  media, context, childTolerance);
+    context.slack = outer + std::abs(reflectedWeight) * context.slack;
   };
   glm::dvec3 refracted(0.0);
   auto traceRefraction = [&] {
-    if (!traceRefracted || !takeRay(context)) return;
+    if (!passes) return;
+    if (!traceRefracted || !takeRay(context)) return leftOut(refractedWeight);
+    double outer = std::exchange(context.slack, 0.0);
     refracted = m.transparency * traceWith<true>(spawnFrom(hit, t), leaving(hit, t), bounce + 1,
                                                  after, context, childTolerance);
+    context.slack = outer + std::abs(refractedWeight) * context.slack;
   };
   // The heavier part first: when the sample's allowance runs out, it is the
   // lighter that is cut. The order changes no value.

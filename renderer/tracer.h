@@ -66,6 +66,11 @@ struct alignas(64) TraceContext {
   // Set before each primary ray (renderImage); once it is spent, the
   // sample's remaining branches are cut, the heaviest having gone first.
   std::uint64_t allowance = std::numeric_limits<std::uint64_t>::max();
+  // A bound on what the branches left out of the colour last traced would
+  // have added to any channel (never negative: what is left out is not), so
+  // that the full colour lies between that colour and it plus this. Reset
+  // by the caller.
+  double slack = 0.0;
   std::array<std::uint32_t, kOccluderSlots> lastOccluder = filledWithNone();
 
  private:
