@@ -314,6 +314,28 @@ TEST(ExtremeValues, AnEyeAtTheLargestDoubleLookingOutIsRefused) {
   EXPECT_TRUE(t.written) << firstError(t.diagnostics);
 }
 
+// Camera axes of length 2^-1000 and 2^1000 are valid; every writer gives
+// finite vectors for them (the plain normalisation gives inf or 0).
+TEST(ExtremeValues, CameraAxesOfAnyLengthGiveFiniteVectors) {
+  for (int exponent : {-1000, -600, 600, 1000}) {
+    Scene scene = testing::RandomSceneGenerator(2).scene(false);
+    glm::dmat4 camera = cameraFromLookAt(glm::dvec3(1, 2, 3), glm::dvec3(0.0));
+    for (int c = 0; c < 3; ++c) camera[c] *= std::ldexp(1.0, exponent);
+    scene.camera.matrix = camera;
+    scene.camera.lookAt.reset();
+    const std::string sf = writeSceneFile(scene);
+    ASSERT_TRUE(parseScene(sf, "axes.sf").ok()) << sf;
+    for (OutputFormat format : kFormats) {
+      Through t = through(scene, format, approximate());
+      ASSERT_TRUE(t.written) << exponent << " " << nameFor(format) << ": "
+                             << firstError(t.diagnostics);
+      if (format == OutputFormat::InstructionFile) continue;
+      ASSERT_TRUE(t.back && t.back->ok());
+      EXPECT_EQ(writeSceneFile(t.back->scene), sf) << exponent << " " << nameFor(format);
+    }
+  }
+}
+
 // TRANSPARENCY -0 (and every other material value at -0) comes back through
 // POV-Ray bit for bit: written as rgbt's -0, which renders as rgb.
 TEST(ExtremeValues, NegativeZeroMaterialValuesComeBackThroughEveryFormat) {
