@@ -184,15 +184,22 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
             double slack = 0.0;
             glm::dvec3 sum = tracePixel(i, j, tolerance, slack);
             // The full colour lies in [sum, sum + slack]: where that range
-            // holds two 8-bit levels, the pixel is traced again in full, so
-            // that its level is the one full tracing gives (unless that
-            // trace too runs out of its allowance: then the first stays).
+            // holds two 8-bit levels, the pixel is traced again with a 64th
+            // of the tolerance, then in full, until the range holds one
+            // level (a trace that runs out of its allowance proves nothing,
+            // and if every one does, the first stays).
             if (slack > 0.0 && certifies && !oneLevel(sum, slack)) {
-              std::uint64_t cutBefore = context.counts.cut;
-              double fullSlack = 0.0;
-              glm::dvec3 full = tracePixel(i, j, 0.0, fullSlack);
-              if (context.counts.cut == cutBefore) sum = full;
               ++retraced[worker];
+              for (double finer : {tolerance / 64.0, 0.0}) {
+                std::uint64_t cutBefore = context.counts.cut;
+                double finerSlack = 0.0;
+                glm::dvec3 again = tracePixel(i, j, finer, finerSlack);
+                if (context.counts.cut == cutBefore &&
+                    (finer == 0.0 || oneLevel(again, finerSlack))) {
+                  sum = again;
+                  break;
+                }
+              }
             }
             float* p = &image.rgb[3 * (static_cast<std::size_t>(j) * settings.width + i)];
             for (int c = 0; c < 3; ++c) p[c] = toStoredChannel(sum[c]);

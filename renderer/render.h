@@ -20,8 +20,9 @@ struct RenderSettings {
   int maxDepth = 5;
   // The most adaptive depth control may lower a channel of a sample (and so
   // of a pixel) by leaving out reflected and refracted rays: half a level of
-  // an 8-bit image. A pixel whose level that could change is traced again in
-  // full, so every level is what full tracing gives (docs/RENDERING.md,
+  // an 8-bit image. A pixel whose level that could change is traced again
+  // (RenderStatistics::retracedPixels), so every level is what full tracing
+  // gives (docs/RENDERING.md,
   // "Cost"). 0 traces every branch to the depth limit.
   double pruneTolerance = 0.5 / 255.0;
   // The most reflected and refracted rays one sample traces, whatever the
@@ -66,8 +67,9 @@ struct Image {
 struct RenderStatistics {
   double seconds = 0.0;
   RayCounts rays;
-  // Pixels traced again in full because what adaptive depth control left
-  // out could have moved their 8-bit level (their primary rays count twice).
+  // Pixels traced again, with a 64th of the tolerance and then in full,
+  // because what adaptive depth control left out could have moved their
+  // 8-bit level (their primary rays count again).
   std::uint64_t retracedPixels = 0;
 };
 
