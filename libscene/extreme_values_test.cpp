@@ -11,6 +11,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -411,6 +412,28 @@ TEST(ExtremeValues, ThePlaneFacesAnEyeBeyondTheRangeOfItsOffset) {
   Through t = through(scene, OutputFormat::Pov);
   ASSERT_TRUE(t.written);
   EXPECT_NE(t.text.find("plane { -y, 0"), std::string::npos) << t.text;
+}
+
+// An object scaled by 1e50: its node matrix is clamped to floats (with a
+// warning), and the chain that stands for it must hold no number beyond the
+// largest float either (a column of 3.4e38 entries is 4.8e38 long), yet
+// read back bit for bit from extras.
+TEST(ExtremeValues, NoGltfNodeHoldsANumberBeyondTheLargestFloat) {
+  Scene scene = testing::RandomSceneGenerator(5).scene(false);
+  Object big;
+  big.matrix = glm::dmat4(glm::dmat3(0.6, 0.8, 0.0, -0.8, 0.6, 0.0, 0.0, 0.0, 1.0) * 1e50);
+  scene.objects = {big};
+  const std::string sf = writeSceneFile(scene);
+  Through t = through(scene, OutputFormat::Gltf);
+  ASSERT_TRUE(t.written && t.back && t.back->ok());
+  EXPECT_EQ(writeSceneFile(t.back->scene), sf);
+  nlohmann::json doc = nlohmann::json::parse(t.text);
+  double largest = 0.0;
+  for (const nlohmann::json& node : doc["nodes"]) {
+    for (const nlohmann::json& v : node["matrix"])
+      largest = std::max(largest, std::abs(v.get<double>()));
+  }
+  EXPECT_LE(largest, std::numeric_limits<float>::max());
 }
 
 }  // namespace

@@ -130,9 +130,20 @@ std::vector<glm::dmat4> nodeChain(const glm::dmat4& m) {
   std::vector<glm::dmat4> chain;
   chain.emplace_back(u);
   chain.back()[3] = m[3];
+  // A column of floats up to 3.4e38 can be longer than the largest float:
+  // the scale is split into one within floats and a uniform power of two
+  // (exact, and it commutes), so that no node holds a number that a reader
+  // of floats makes infinite.
+  constexpr double kLargestFloat = std::numeric_limits<float>::max();
+  double power = 1.0;
+  while (std::max({std::abs(sigma.x), std::abs(sigma.y), std::abs(sigma.z)}) / power >
+         kLargestFloat) {
+    power *= 2.0;
+  }
   glm::dmat4 scale(1.0);
-  for (int i = 0; i < 3; ++i) scale[i][i] = sigma[i];
+  for (int i = 0; i < 3; ++i) scale[i][i] = sigma[i] / power;
   chain.push_back(scale);
+  if (power > 1.0) chain.emplace_back(glm::dmat3(power));
   if (!trs) chain.emplace_back(glm::transpose(v));
   return chain;
 }
