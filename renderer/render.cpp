@@ -11,6 +11,8 @@
 #include <numbers>
 #include <thread>
 
+#include "libscene/matrix.h"
+
 namespace render {
 
 namespace {
@@ -65,6 +67,12 @@ void forEachTile(int width, int height, int threads, PerTile&& perTile,
   for (std::thread& t : pool) t.join();
 }
 
+// False for the NaN, infinite or zero vectors that glm::normalize gives
+// when |v|^2 underflows or overflows.
+bool isUnit(const glm::dvec3& v) {
+  return std::abs(glm::dot(v, v) - 1.0) < 1e-6;
+}
+
 // The level of an 8-bit image (tools::quantizeChannel): round(clamp(v, 0, 1) * 255).
 long level8(float v) {
   return std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
@@ -97,6 +105,13 @@ PinholeCamera::PinholeCamera(const scene::Camera& camera, const RenderSettings& 
   forward_ = glm::normalize(-glm::dvec3(camera.matrix[2]));
   glm::dvec3 up(camera.matrix[1]);
   up_ = glm::normalize(up - glm::dot(up, forward_) * forward_);
+  if (!isUnit(forward_) || !isUnit(up_)) {
+    // Axes of length 1e-300 or 1e300 are valid; the plain normalisation
+    // underflows or overflows on them, so scale by a power of two first.
+    forward_ = scene::scaledNormalize(-glm::dvec3(camera.matrix[2]));
+    glm::dvec3 unitUp = scene::scaledNormalize(up);
+    up_ = scene::scaledNormalize(unitUp - glm::dot(unitUp, forward_) * forward_);
+  }
   right_ = glm::cross(forward_, up_);
   tanHalfHeight_ = std::tan(settings.verticalFovDegrees * std::numbers::pi / 360.0);
   tanHalfWidth_ = tanHalfHeight_ * width_ / height_;

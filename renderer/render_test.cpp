@@ -5,6 +5,8 @@
 #include <cmath>
 #include <set>
 
+#include <glm/geometric.hpp>
+
 #include "renderer/default_scene.h"
 #include "renderer/test_scenes.h"
 
@@ -49,6 +51,30 @@ TEST(Render, OneSamplePassesThroughThePixelCentre) {
   EXPECT_LT(d.x, 0.0);
   EXPECT_GT(d.y, 0.0);
   EXPECT_NEAR(d.y / -d.z, std::tan(3.141592653589793 / 6) / 2, 1e-15);
+}
+
+TEST(Render, CameraAxesOfAnyFiniteLengthGiveTheSameRays) {
+  // A rotated camera whose axes are scaled by 1e-300, 1e300 and the largest
+  // double: each is valid (FORMATS.md), and the plain normalisation would
+  // underflow or overflow on every one.
+  scene::Scene s = sceneLookingAt({1, 2, 3}, {-2, 0.5, -1});
+  RenderSettings settings;
+  settings.width = 8;
+  settings.height = 6;
+  PinholeCamera unit(s.camera, settings);
+  for (double scale : {1e-300, 1e300, 1.7976931348623157e308}) {
+    SCOPED_TRACE(scale);
+    scene::Camera scaled = s.camera;
+    for (int c = 0; c < 3; ++c) scaled.matrix[c] *= scale;
+    PinholeCamera camera(scaled, settings);
+    for (double x : {0.5, 3.5, 7.5}) {
+      for (double y : {0.5, 5.5}) {
+        glm::dvec3 a = unit.rayThrough(x, y).direction;
+        glm::dvec3 b = camera.rayThrough(x, y).direction;
+        ASSERT_NEAR(glm::length(a - b), 0.0, 1e-14) << x << " " << y;
+      }
+    }
+  }
 }
 
 TEST(Render, SamplesAreStratified) {
