@@ -22,6 +22,7 @@
 #include "libscene/random_scenes.h"
 #include "libscene/scene_reader.h"
 #include "libscene/sf_writer.h"
+#include "libscene/matrix.h"
 #include "libscene/transform.h"
 
 namespace scene {
@@ -136,8 +137,8 @@ std::string instructionText(const Scene& scene) {
 double columnError(const glm::dmat4& a, const glm::dmat4& b) {
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
-    double norm = vectorLength(glm::dvec3(a[c]));
-    worst = std::max(worst, vectorLength(glm::dvec3(a[c]) - glm::dvec3(b[c])) / norm);
+    double norm = scaledLength(glm::dvec3(a[c]));
+    worst = std::max(worst, scaledLength(glm::dvec3(a[c]) - glm::dvec3(b[c])) / norm);
   }
   return worst;
 }
@@ -181,7 +182,7 @@ void checkSceneFileScene(const Scene& scene, int index, std::map<OutputFormat, T
     }
     ASSERT_EQ(back.objects.size(), scene.objects.size());
     ASSERT_EQ(back.camera.matrix[3], scene.camera.matrix[3]) << "scene " << index;
-    ASSERT_LE(vectorLength(glm::dvec3(back.camera.matrix[2]) -
+    ASSERT_LE(scaledLength(glm::dvec3(back.camera.matrix[2]) -
                            unitDirection(glm::dvec3(scene.camera.matrix[2]))),
               1e-12)
         << "scene " << index << "\n"
@@ -290,7 +291,7 @@ TEST(ExtremeValues, AnEyeNearTheLargestDoubleGetsAFiniteLookAt) {
     const Camera& back = t.back->scene.camera;
     ASSERT_TRUE(back.lookAt.has_value());
     EXPECT_EQ(back.matrix[3], scene.camera.matrix[3]);
-    EXPECT_LE(vectorLength(glm::dvec3(back.matrix[2] - scene.camera.matrix[2])), 1e-12) << t.text;
+    EXPECT_LE(scaledLength(glm::dvec3(back.matrix[2] - scene.camera.matrix[2])), 1e-12) << t.text;
   }
 }
 

@@ -137,4 +137,13 @@ glm::dvec3 scaledNormalize(const glm::dvec3& v) {
   return w / length;
 }
 
+bool isModerate(const glm::dvec3& v) {
+  double d = glm::dot(v, v);
+  return d >= 0x1p-960 && d <= 0x1p960;
+}
+
+glm::dvec3 unitDirection(const glm::dvec3& v) {
+  return isModerate(v) ? glm::normalize(v) : scaledNormalize(v);
+}
+
 }  // namespace scene

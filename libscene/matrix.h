@@ -43,6 +43,15 @@ double scaledLength(const glm::dvec3& v);
 // short or long, has a direction. Zero for the zero vector.
 glm::dvec3 scaledNormalize(const glm::dvec3& v);
 
+// Whether v * v is a normal double (between 2^-960 and 2^960), so that
+// glm::normalize neither underflows nor overflows on v.
+bool isModerate(const glm::dvec3& v);
+
+// v / |v| for any finite vector: glm::normalize where v is moderate (so that
+// ordinary values keep the bits they always had), else scaledNormalize. The
+// direction of the zero vector is zero.
+glm::dvec3 unitDirection(const glm::dvec3& v);
+
 // The transpose of a 4x4, as a file written column by column needs.
 glm::dmat4 transposed(const glm::dmat4& m);
 

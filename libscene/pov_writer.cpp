@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "libscene/number.h"
+#include "libscene/matrix.h"
 #include "libscene/transform.h"
 
 namespace scene {

@@ -132,41 +132,6 @@ glm::dmat4 cameraFromLookAt(const glm::dvec3& location, const glm::dvec3& lookAt
                     glm::dvec4(location, 1.0));
 }
 
-namespace {
-
-// v scaled exactly by the power of two 2^-e that brings its largest
-// component into [1, 2), and e; v itself and 0 for a zero or non-finite v.
-glm::dvec3 powerOfTwoScaled(const glm::dvec3& v, int& e) {
-  double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-  e = 0;
-  if (!(largest > 0.0) || !std::isfinite(largest)) return v;
-  std::frexp(largest, &e);
-  e -= 1;
-  return {std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
-}
-
-}  // namespace
-
-bool isModerate(const glm::dvec3& v) {
-  double d = glm::dot(v, v);
-  return d >= 0x1p-960 && d <= 0x1p960;
-}
-
-glm::dvec3 unitDirection(const glm::dvec3& v) {
-  if (isModerate(v)) return glm::normalize(v);
-  int e = 0;
-  glm::dvec3 w = powerOfTwoScaled(v, e);
-  double length = glm::length(w);
-  return length > 0.0 ? w / length : glm::dvec3(0.0);
-}
-
-double vectorLength(const glm::dvec3& v) {
-  if (isModerate(v)) return glm::length(v);
-  int e = 0;
-  glm::dvec3 w = powerOfTwoScaled(v, e);
-  return std::ldexp(glm::length(w), e);
-}
-
 LookAtCamera lookAtFromCamera(const glm::dmat4& camera) {
   LookAtCamera out;
   out.location = glm::dvec3(camera[3]);
@@ -191,7 +156,7 @@ LookAtCamera lookAtFromCamera(const glm::dmat4& camera) {
     glm::dvec3 d = out.lookAt - out.location;
     if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)) continue;
     rebuilt = cameraFromLookAt(out.location, out.lookAt);
-    out.expressible = vectorLength(-glm::dvec3(rebuilt[2]) - forward) <= kLookAtTolerance;
+    out.expressible = scaledLength(-glm::dvec3(rebuilt[2]) - forward) <= kLookAtTolerance;
   }
   if (!out.expressible) return out;
   // Compare the matrix's up with the one the instruction camera would get.
@@ -209,7 +174,7 @@ TransformDecomposition decomposeTransform(const glm::dmat4& m) {
   TransformDecomposition out;
   glm::dmat3 a = linearPart(m);
   out.translation = glm::dvec3(m[3]);
-  glm::dvec3 norms(vectorLength(a[0]), vectorLength(a[1]), vectorLength(a[2]));
+  glm::dvec3 norms(scaledLength(a[0]), scaledLength(a[1]), scaledLength(a[2]));
 
   // Step 1: signs of the scale factors. Scales stay positive unless A is a
   // mirror; then one factor is negative, the one whose rotation turns least

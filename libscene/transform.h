@@ -48,15 +48,6 @@ LookAtCamera lookAtFromCamera(const glm::dmat4& camera);
 // How far the forward that LOOK_AT gives back may turn from the camera's.
 inline constexpr double kLookAtTolerance = 1e-12;
 
-// v / |v| and |v| for any finite vector, however long or short: the plain
-// formula where v * v is a normal double (so that ordinary values keep the
-// bits they always had), else scaled by a power of two first. The
-// direction of the zero vector is zero.
-glm::dvec3 unitDirection(const glm::dvec3& v);
-double vectorLength(const glm::dvec3& v);
-// Whether v * v is such a normal double (between 2^-960 and 2^960).
-bool isModerate(const glm::dvec3& v);
-
 // Roll below this (radians) is rounding, not intent.
 inline constexpr double kRollTolerance = 1e-9;
 

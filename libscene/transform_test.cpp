@@ -201,7 +201,7 @@ TEST(LookAtFromCamera, AnEyeNearTheLargestDoubleGetsAFiniteLookAt) {
     ASSERT_TRUE(back.expressible);
     for (int i = 0; i < 3; ++i) EXPECT_TRUE(std::isfinite(back.lookAt[i]));
     glm::dmat4 rebuilt = cameraFromLookAt(back.location, back.lookAt);
-    EXPECT_LE(vectorLength(glm::dvec3(rebuilt[2] - camera[2])), kLookAtTolerance);
+    EXPECT_LE(scaledLength(glm::dvec3(rebuilt[2] - camera[2])), kLookAtTolerance);
     EXPECT_LT(std::abs(back.roll), kRollTolerance);
   }
   // Forward +x from x = the largest double: every point ahead overflows.
@@ -220,7 +220,7 @@ TEST(LookAtFromCamera, AxesOfAnyLengthGiveTheSameLookAt) {
     for (int c = 0; c < 3; ++c) scaled[c] *= std::ldexp(1.0, exponent);
     LookAtCamera back = lookAtFromCamera(scaled);
     ASSERT_TRUE(back.expressible) << exponent;
-    EXPECT_LE(vectorLength(back.lookAt - expected.lookAt), 1e-14) << exponent;
+    EXPECT_LE(scaledLength(back.lookAt - expected.lookAt), 1e-14) << exponent;
     EXPECT_LT(std::abs(back.roll), kRollTolerance) << exponent;
   }
 }
@@ -231,15 +231,15 @@ TEST(UnitDirection, ScalesVectorsThePlainFormulaLoses) {
     glm::dvec3 d = unitDirection(glm::dvec3(s, s, 0));
     EXPECT_NEAR(d.x, std::sqrt(0.5), 1e-15) << s;
     EXPECT_NEAR(d.y, std::sqrt(0.5), 1e-15) << s;
-    EXPECT_NEAR(vectorLength(glm::dvec3(0, s, 0)), s, s * 1e-15) << s;
+    EXPECT_NEAR(scaledLength(glm::dvec3(0, s, 0)), s, s * 1e-15) << s;
   }
   EXPECT_EQ(unitDirection(glm::dvec3(0.0)), glm::dvec3(0.0));
   // Far apart or subnormally close, LOOK_AT gives a camera all the same.
   glm::dmat4 far = cameraFromLookAt({-1e300, 0, 0}, {1e300, 0, 2e300});
   glm::dmat4 near = cameraFromLookAt({0, 0, 0}, {1e-320, 0, 1e-320});
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(vectorLength(glm::dvec3(far[c])), 1.0, 1e-15);
-    EXPECT_LT(vectorLength(glm::dvec3(far[c] - near[c])), 1e-15);
+    EXPECT_NEAR(scaledLength(glm::dvec3(far[c])), 1.0, 1e-15);
+    EXPECT_LT(scaledLength(glm::dvec3(far[c] - near[c])), 1e-15);
   }
 }
 

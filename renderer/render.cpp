@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <limits>
@@ -49,28 +50,43 @@ void forEachTile(int width, int height, int threads, PerTile&& perTile,
   std::atomic<int> next{0};
   std::atomic<int> done{0};
   std::mutex progressMutex;
+  // An exception must not leave a thread's function (that ends the
+  // program): the first one (std::bad_alloc, say) stops the handing out of
+  // tiles and is thrown again once every thread has been joined.
+  std::exception_ptr failure;
+  std::mutex failureMutex;
   auto work = [&](int worker) {
-    for (int tile = next++; tile < total; tile = next++) {
-      int x0 = (tile % tilesX) * kTileSize;
-      int y0 = (tile / tilesX) * kTileSize;
-      perTile(worker, x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height));
-      int finished = ++done;
-      if (progress) {
-        std::lock_guard<std::mutex> lock(progressMutex);
-        progress(finished, total);
+    try {
+      for (int tile = next++; tile < total; tile = next++) {
+        int x0 = (tile % tilesX) * kTileSize;
+        int y0 = (tile / tilesX) * kTileSize;
+        perTile(worker, x0, y0, std::min(x0 + kTileSize, width),
+                std::min(y0 + kTileSize, height));
+        int finished = ++done;
+        if (progress) {
+          std::lock_guard<std::mutex> lock(progressMutex);
+          progress(finished, total);
+        }
       }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failureMutex);
+      if (!failure) failure = std::current_exception();
+      next = total;
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  try {
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  } catch (...) {
+    // A thread that cannot start (std::system_error): the running ones
+    // finish their tile and are joined before the caller hears of it.
+    next = total;
+    for (std::thread& t : pool) t.join();
+    throw;
+  }
   work(0);
   for (std::thread& t : pool) t.join();
-}
-
-// False for the NaN, infinite or zero vectors that glm::normalize gives
-// when |v|^2 underflows or overflows.
-bool isUnit(const glm::dvec3& v) {
-  return std::abs(glm::dot(v, v) - 1.0) < 1e-6;
+  if (failure) std::rethrow_exception(failure);
 }
 
 // The level of an 8-bit image (tools::quantizeChannel): round(clamp(v, 0, 1) * 255).
@@ -102,16 +118,12 @@ int threadCount(int requested) {
 PinholeCamera::PinholeCamera(const scene::Camera& camera, const RenderSettings& settings)
     : width_(settings.width), height_(settings.height) {
   eye_ = glm::dvec3(camera.matrix[3]);
-  forward_ = glm::normalize(-glm::dvec3(camera.matrix[2]));
+  // Axes of any finite length are valid (1e-300, 1e300): unitDirection is
+  // glm::normalize where that neither underflows nor overflows.
+  forward_ = scene::unitDirection(-glm::dvec3(camera.matrix[2]));
   glm::dvec3 up(camera.matrix[1]);
-  up_ = glm::normalize(up - glm::dot(up, forward_) * forward_);
-  if (!isUnit(forward_) || !isUnit(up_)) {
-    // Axes of length 1e-300 or 1e300 are valid; the plain normalisation
-    // underflows or overflows on them, so scale by a power of two first.
-    forward_ = scene::scaledNormalize(-glm::dvec3(camera.matrix[2]));
-    glm::dvec3 unitUp = scene::scaledNormalize(up);
-    up_ = scene::scaledNormalize(unitUp - glm::dot(unitUp, forward_) * forward_);
-  }
+  if (!scene::isModerate(up)) up = scene::unitDirection(up);
+  up_ = scene::unitDirection(up - glm::dot(up, forward_) * forward_);
   right_ = glm::cross(forward_, up_);
   tanHalfHeight_ = std::tan(settings.verticalFovDegrees * std::numbers::pi / 360.0);
   tanHalfWidth_ = tanHalfHeight_ * width_ / height_;
