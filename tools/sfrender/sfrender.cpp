@@ -79,6 +79,10 @@ void printStatistics(const render::RenderStatistics& s, const render::RenderSett
        << " reflected or refracted, " << withThousands(s.rays.shadow) << " shadow), "
        << std::setprecision(2) << (s.seconds > 0 ? total / s.seconds / 1e6 : 0.0)
        << " million rays/s\n";
+  // What adaptive depth control (docs/RENDERING.md, "Cost") left out.
+  line << "sfrender: left out " << withThousands(s.rays.pruned)
+       << " branches (past the depth, or within their share of half an 8-bit level), traced "
+       << withThousands(s.retracedPixels) << " pixels again\n";
   err << line.str();
 }
 
@@ -271,6 +275,14 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
     return toInt(ExitCode::IoError);
   }
   if (stats) printStatistics(statistics, settings, err);
+  if (statistics.rays.cut > 0) {
+    // Only the cap on rays a sample may trace (materials that reflect and
+    // refract everything, where no branch can be left out) loses accuracy.
+    err << "sfrender: warning: " << withThousands(statistics.rays.cut)
+        << " reflected or refracted rays were not traced: their samples had traced "
+        << settings.maxRaysPerSample
+        << " already, so the picture may differ from a full trace by more than half a level\n";
+  }
   if (!quiet) {
     err << "sfrender: wrote " << target.string() << " (" << settings.width << "x" << settings.height
         << (input.empty() ? ", the default scene" : "") << ")\n";
