@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 
+#include "libscene/matrix.h"
 #include "libscene/sf_writer.h"
 #include "libscene/transform.h"
 #include "renderer/render.h"
@@ -57,9 +58,11 @@ struct Frame {
 Frame cameraFrame(const scene::Camera& camera) {
   Frame f;
   f.eye = glm::dvec3(camera.matrix[3]);
-  f.forward = glm::normalize(-glm::dvec3(camera.matrix[2]));
+  // Axes of any finite length are valid (1e-300, 1e300), as in the renderer.
+  f.forward = scene::unitDirection(-glm::dvec3(camera.matrix[2]));
   glm::dvec3 up(camera.matrix[1]);
-  f.up = glm::normalize(up - glm::dot(up, f.forward) * f.forward);
+  if (!scene::isModerate(up)) up = scene::unitDirection(up);
+  f.up = scene::unitDirection(up - glm::dot(up, f.forward) * f.forward);
   f.right = glm::cross(f.forward, f.up);
   return f;
 }
