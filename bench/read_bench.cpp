@@ -28,9 +28,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "libscene/read_result.h"
-#include "libscene/scene.h"
-#include "libscene/sf_reader.h"
+#include "scenefile/read.h"
+#include "scenefile/scene.h"
+#include "libscene/formats/sf/sf_reader.h"
 
 namespace {
 

@@ -28,8 +28,8 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
-#include "libscene/instruction_writer.h"
-#include "libscene/scene_reader.h"
+#include "libscene/formats/instruction/instruction_writer.h"
+#include "scenefile/read.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
@@ -89,8 +89,8 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
 
 int writeDefault(const std::string& out) {
   scene::DiagnosticList diagnostics;
-  scene::InstructionWriteOptions options;
-  options.approximate = true;
+  scene::ConversionOptions options;
+  options.instructions.approximate = true;
   auto text = scene::writeInstructionFile(render::defaultScene(), options, diagnostics);
   if (!text) {
     std::cerr << "render_probe: cannot write the default scene as an instruction file\n";

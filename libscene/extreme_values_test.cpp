@@ -16,14 +16,14 @@
 #include <string>
 #include <string_view>
 
-#include "libscene/conversion.h"
-#include "libscene/instruction_writer.h"
-#include "libscene/pov_writer.h"
-#include "libscene/random_scenes.h"
-#include "libscene/scene_reader.h"
-#include "libscene/sf_writer.h"
-#include "libscene/matrix.h"
-#include "libscene/transform.h"
+#include "scenefile/convert.h"
+#include "libscene/formats/instruction/instruction_writer.h"
+#include "libscene/formats/pov/pov_writer.h"
+#include "libscene/testing/random_scenes.h"
+#include "scenefile/read.h"
+#include "libscene/formats/sf/sf_writer.h"
+#include "scenefile/matrix.h"
+#include "scenefile/transform.h"
 
 namespace scene {
 namespace {
@@ -31,20 +31,20 @@ namespace {
 constexpr double kLargest = std::numeric_limits<double>::max();
 constexpr double kSmallest = std::numeric_limits<double>::denorm_min();
 
-constexpr OutputFormat kFormats[] = {OutputFormat::SceneFile, OutputFormat::InstructionFile,
-                                     OutputFormat::Gltf, OutputFormat::Glb, OutputFormat::Pov};
+constexpr Format kFormats[] = {Format::SceneFile, Format::InstructionFile,
+                                     Format::Gltf, Format::Glb, Format::Pov};
 
-const char* nameFor(OutputFormat format) {
+const char* nameFor(Format format) {
   switch (format) {
-    case OutputFormat::SceneFile:
+    case Format::SceneFile:
       return "limits.sf";
-    case OutputFormat::InstructionFile:
+    case Format::InstructionFile:
       return "limits.txt";
-    case OutputFormat::Gltf:
+    case Format::Gltf:
       return "limits.gltf";
-    case OutputFormat::Glb:
+    case Format::Glb:
       return "limits.glb";
-    case OutputFormat::Pov:
+    case Format::Pov:
       return "limits.pov";
   }
   return "limits";
@@ -66,8 +66,8 @@ bool hasError(const DiagnosticList& list, DiagnosticCode code) {
 
 // The text of a GLB's JSON chunk (its binary chunk holds floats, whose bytes
 // may spell anything); any other output as it is.
-std::string_view jsonPart(std::string_view bytes, OutputFormat format) {
-  if (format != OutputFormat::Glb || bytes.size() < 20) return bytes;
+std::string_view jsonPart(std::string_view bytes, Format format) {
+  if (format != Format::Glb || bytes.size() < 20) return bytes;
   std::uint32_t length = 0;
   std::memcpy(&length, bytes.data() + 12, sizeof length);
   return bytes.substr(20, std::min<std::size_t>(length, bytes.size() - 20));
@@ -99,7 +99,7 @@ struct Through {
   std::optional<ReadResult> back;
 };
 
-Through through(const Scene& scene, OutputFormat format, const ConversionOptions& options = {}) {
+Through through(const Scene& scene, Format format, const ConversionOptions& options = {}) {
   Through t;
   std::optional<std::string> text = convertScene(scene, format, options, t.diagnostics);
   if (!text) {
@@ -110,10 +110,10 @@ Through through(const Scene& scene, OutputFormat format, const ConversionOptions
   t.text = std::move(*text);
   std::string bad = nonFiniteToken(jsonPart(t.text, format));
   EXPECT_EQ(bad, "") << nameFor(format) << " holds '" << bad << "'\n"
-                     << (format == OutputFormat::Glb ? "" : t.text);
+                     << (format == Format::Glb ? "" : t.text);
   t.back = parseScene(t.text, nameFor(format));
   EXPECT_TRUE(t.back->ok()) << nameFor(format) << ": " << firstError(t.back->diagnostics) << "\n"
-                            << (format == OutputFormat::Glb ? "" : t.text);
+                            << (format == Format::Glb ? "" : t.text);
   if (t.back->ok()) {
     EXPECT_EQ(testing::firstNonFinite(t.back->scene), "") << nameFor(format);
   }
@@ -122,14 +122,14 @@ Through through(const Scene& scene, OutputFormat format, const ConversionOptions
 
 ConversionOptions approximate() {
   ConversionOptions options;
-  options.approximate = true;
+  options.instructions.approximate = true;
   return options;
 }
 
 std::string instructionText(const Scene& scene) {
   DiagnosticList ignored;
-  InstructionWriteOptions options;
-  options.approximate = true;
+  ConversionOptions options;
+  options.instructions.approximate = true;
   return writeInstructionFile(scene, options, ignored).value_or("(refused)");
 }
 
@@ -154,16 +154,16 @@ struct Tally {
 // instruction file (written with --approximate, since a random camera rolls
 // and a random matrix shears) reads back with the eye and every translation
 // exact, the rest within 1e-12 per column, and writes itself again.
-void checkSceneFileScene(const Scene& scene, int index, std::map<OutputFormat, Tally>& tally) {
+void checkSceneFileScene(const Scene& scene, int index, std::map<Format, Tally>& tally) {
   const std::string sf = writeSceneFile(scene);
-  for (OutputFormat format : kFormats) {
+  for (Format format : kFormats) {
     Through t = through(scene, format, approximate());
     Tally& counts = tally[format];
     if (!t.written) {
       ++counts.refused;
       // The one refusal a finite scene may get: a camera that no finite
       // LOOK_AT describes.
-      EXPECT_TRUE(format == OutputFormat::InstructionFile &&
+      EXPECT_TRUE(format == Format::InstructionFile &&
                   hasError(t.diagnostics, DiagnosticCode::ValueNotFinite))
           << "scene " << index << " " << nameFor(format) << ": " << firstError(t.diagnostics)
           << "\n"
@@ -173,7 +173,7 @@ void checkSceneFileScene(const Scene& scene, int index, std::map<OutputFormat, T
     ++counts.written;
     if (!t.back || !t.back->ok()) continue;
     const Scene& back = t.back->scene;
-    if (format != OutputFormat::InstructionFile) {
+    if (format != Format::InstructionFile) {
       ASSERT_EQ(writeSceneFile(back), sf) << "scene " << index << " " << nameFor(format);
       ASSERT_EQ(testing::numberBits(back), testing::numberBits(scene))
           << "scene " << index << " " << nameFor(format);
@@ -202,10 +202,10 @@ void checkSceneFileScene(const Scene& scene, int index, std::map<OutputFormat, T
 // A scene as an instruction file holds it (materials at their edges,
 // operations, LOOK_AT, OUTPUT_FILE) comes back through glTF, GLB and
 // POV-Ray with every bit, and through an instruction file as the same text.
-void checkInstructionScene(const Scene& scene, int index, std::map<OutputFormat, Tally>& tally) {
+void checkInstructionScene(const Scene& scene, int index, std::map<Format, Tally>& tally) {
   const std::string text = instructionText(scene);
-  for (OutputFormat format :
-       {OutputFormat::InstructionFile, OutputFormat::Gltf, OutputFormat::Glb, OutputFormat::Pov}) {
+  for (Format format :
+       {Format::InstructionFile, Format::Gltf, Format::Glb, Format::Pov}) {
     Through t = through(scene, format, approximate());
     Tally& counts = tally[format];
     ASSERT_TRUE(t.written) << "scene " << index << " " << nameFor(format) << ": "
@@ -222,8 +222,8 @@ void checkInstructionScene(const Scene& scene, int index, std::map<OutputFormat,
 
 TEST(ExtremeValues, RandomScenesAtTheLimitsOfTheDoublesSurviveEveryWriter) {
   testing::RandomSceneGenerator random(20261201);
-  std::map<OutputFormat, Tally> fromSceneFiles;
-  std::map<OutputFormat, Tally> fromInstructions;
+  std::map<Format, Tally> fromSceneFiles;
+  std::map<Format, Tally> fromInstructions;
   int checked = 0;
   int instructionScenes = 0;
   int invalid = 0;
@@ -249,7 +249,7 @@ TEST(ExtremeValues, RandomScenesAtTheLimitsOfTheDoublesSurviveEveryWriter) {
     // instruction file may hold it.
     DiagnosticList diagnostics;
     std::optional<std::string> txt =
-        convertScene(generated, OutputFormat::InstructionFile, approximate(), diagnostics);
+        convertScene(generated, Format::InstructionFile, approximate(), diagnostics);
     if (txt) {
       ReadResult instruction = parseScene(*txt, "limits.txt");
       ASSERT_TRUE(instruction.ok())
@@ -266,7 +266,7 @@ TEST(ExtremeValues, RandomScenesAtTheLimitsOfTheDoublesSurviveEveryWriter) {
             << instructionScenes << " of them also as instruction scenes\n";
   for (const auto& [what, count] : limitNumbers)
     std::cout << "  " << count << " numbers " << what << "\n";
-  for (OutputFormat format : kFormats) {
+  for (Format format : kFormats) {
     const Tally& s = fromSceneFiles[format];
     const Tally& t = fromInstructions[format];
     std::cout << "  " << nameFor(format) << ": from .sf " << s.written << " written (" << s.exact
@@ -285,7 +285,7 @@ TEST(ExtremeValues, AnEyeNearTheLargestDoubleGetsAFiniteLookAt) {
     Scene scene = testing::RandomSceneGenerator(1).scene(false);
     scene.camera.matrix = cameraFromLookAt(glm::dvec3(eye, eye / 2, -eye), glm::dvec3(0.0));
     scene.camera.lookAt.reset();
-    Through t = through(scene, OutputFormat::InstructionFile, approximate());
+    Through t = through(scene, Format::InstructionFile, approximate());
     ASSERT_TRUE(t.written) << firstError(t.diagnostics);
     ASSERT_TRUE(t.back && t.back->ok());
     const Camera& back = t.back->scene.camera;
@@ -306,13 +306,13 @@ TEST(ExtremeValues, AnEyeAtTheLargestDoubleLookingOutIsRefused) {
   scene.camera.span = {1, 1, 6};
   DiagnosticList diagnostics;
   std::optional<std::string> text =
-      convertScene(scene, OutputFormat::InstructionFile, approximate(), diagnostics);
+      convertScene(scene, Format::InstructionFile, approximate(), diagnostics);
   EXPECT_FALSE(text.has_value()) << *text;
   ASSERT_TRUE(hasError(diagnostics, DiagnosticCode::ValueNotFinite)) << firstError(diagnostics);
   EXPECT_EQ(diagnostics.items().back().span.line, 1u);
   // Slightly inside the largest double there is room ahead: written.
   scene.camera.matrix[3].x = kLargest / 1.01;
-  Through t = through(scene, OutputFormat::InstructionFile, approximate());
+  Through t = through(scene, Format::InstructionFile, approximate());
   EXPECT_TRUE(t.written) << firstError(t.diagnostics);
 }
 
@@ -327,11 +327,11 @@ TEST(ExtremeValues, CameraAxesOfAnyLengthGiveFiniteVectors) {
     scene.camera.lookAt.reset();
     const std::string sf = writeSceneFile(scene);
     ASSERT_TRUE(parseScene(sf, "axes.sf").ok()) << sf;
-    for (OutputFormat format : kFormats) {
+    for (Format format : kFormats) {
       Through t = through(scene, format, approximate());
       ASSERT_TRUE(t.written) << exponent << " " << nameFor(format) << ": "
                              << firstError(t.diagnostics);
-      if (format == OutputFormat::InstructionFile) continue;
+      if (format == Format::InstructionFile) continue;
       ASSERT_TRUE(t.back && t.back->ok());
       EXPECT_EQ(writeSceneFile(t.back->scene), sf) << exponent << " " << nameFor(format);
     }
@@ -352,8 +352,8 @@ TEST(ExtremeValues, NegativeZeroMaterialValuesComeBackThroughEveryFormat) {
   ReadResult read = parseScene(text, "negative-zero.txt");
   ASSERT_TRUE(read.ok()) << firstError(read.diagnostics);
   ASSERT_TRUE(std::signbit(read.scene.objects[0].material.transparency));
-  for (OutputFormat format :
-       {OutputFormat::InstructionFile, OutputFormat::Gltf, OutputFormat::Glb, OutputFormat::Pov}) {
+  for (Format format :
+       {Format::InstructionFile, Format::Gltf, Format::Glb, Format::Pov}) {
     Through t = through(read.scene, format);
     ASSERT_TRUE(t.written) << nameFor(format) << ": " << firstError(t.diagnostics);
     ASSERT_TRUE(t.back && t.back->ok());
@@ -371,7 +371,7 @@ TEST(ExtremeValues, LightsSummingBeyondTheLargestDoubleClampAmbientLight) {
   scene.lights.resize(2);
   for (Light& light : scene.lights) light.colour = glm::dvec3(kLargest, kSmallest, -0.0);
   scene.lights[1].span = {7, 1, 5};
-  Through t = through(scene, OutputFormat::Pov);
+  Through t = through(scene, Format::Pov);
   ASSERT_TRUE(t.written);
   EXPECT_NE(t.text.find("ambient_light rgb <1.7976931348623157e+308"), std::string::npos) << t.text;
   bool warned = false;
@@ -383,7 +383,7 @@ TEST(ExtremeValues, LightsSummingBeyondTheLargestDoubleClampAmbientLight) {
   ConversionOptions noLoss;
   noLoss.noLoss = true;
   DiagnosticList diagnostics;
-  EXPECT_FALSE(convertScene(scene, OutputFormat::Pov, noLoss, diagnostics).has_value());
+  EXPECT_FALSE(convertScene(scene, Format::Pov, noLoss, diagnostics).has_value());
   EXPECT_TRUE(hasError(diagnostics, DiagnosticCode::LossPov));
 }
 
@@ -394,7 +394,7 @@ TEST(ExtremeValues, AFieldOfViewWithNoFiniteImagePlaneIsRefused) {
   ConversionOptions options;
   options.pov.verticalFovDegrees = 360.0;
   DiagnosticList diagnostics;
-  EXPECT_FALSE(convertScene(scene, OutputFormat::Pov, options, diagnostics).has_value());
+  EXPECT_FALSE(convertScene(scene, Format::Pov, options, diagnostics).has_value());
   EXPECT_TRUE(hasError(diagnostics, DiagnosticCode::ValueNotFinite));
 }
 
@@ -410,7 +410,7 @@ TEST(ExtremeValues, ThePlaneFacesAnEyeBeyondTheRangeOfItsOffset) {
   plane.matrix[1] = glm::dvec4(0.8, 0.6, 0.0, 0.0);
   plane.matrix[3] = glm::dvec4(kLargest, -kLargest, 0.0, 1.0);
   scene.objects.push_back(plane);
-  Through t = through(scene, OutputFormat::Pov);
+  Through t = through(scene, Format::Pov);
   ASSERT_TRUE(t.written);
   EXPECT_NE(t.text.find("plane { -y, 0"), std::string::npos) << t.text;
 }
@@ -425,7 +425,7 @@ TEST(ExtremeValues, NoGltfNodeHoldsANumberBeyondTheLargestFloat) {
   big.matrix = glm::dmat4(glm::dmat3(0.6, 0.8, 0.0, -0.8, 0.6, 0.0, 0.0, 0.0, 1.0) * 1e50);
   scene.objects = {big};
   const std::string sf = writeSceneFile(scene);
-  Through t = through(scene, OutputFormat::Gltf);
+  Through t = through(scene, Format::Gltf);
   ASSERT_TRUE(t.written && t.back && t.back->ok());
   EXPECT_EQ(writeSceneFile(t.back->scene), sf);
   nlohmann::json doc = nlohmann::json::parse(t.text);

@@ -10,14 +10,14 @@
 #include <random>
 #include <string>
 
-#include "libscene/instruction_reader.h"
-#include "libscene/matrix.h"
-#include "libscene/pov_reader.h"
-#include "libscene/scene_reader.h"
-#include "libscene/sf_reader.h"
-#include "libscene/test_support.h"
-#include "libscene/transform.h"
-#include "libscene/validation.h"
+#include "libscene/formats/instruction/instruction_reader.h"
+#include "scenefile/matrix.h"
+#include "libscene/formats/pov/pov_reader.h"
+#include "scenefile/read.h"
+#include "libscene/formats/sf/sf_reader.h"
+#include "libscene/testing/test_support.h"
+#include "scenefile/transform.h"
+#include "scenefile/validation.h"
 
 namespace scene {
 namespace {

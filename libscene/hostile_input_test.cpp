@@ -6,8 +6,8 @@
 #include <random>
 #include <string>
 
-#include "libscene/scene_reader.h"
-#include "libscene/test_support.h"
+#include "scenefile/read.h"
+#include "libscene/testing/test_support.h"
 
 namespace scene {
 namespace {

@@ -8,13 +8,13 @@
 #include <random>
 #include <string>
 
-#include "libscene/conversion.h"
-#include "libscene/instruction_writer.h"
-#include "libscene/pov_reader.h"
-#include "libscene/pov_writer.h"
-#include "libscene/scene_reader.h"
-#include "libscene/sf_writer.h"
-#include "libscene/transform.h"
+#include "scenefile/convert.h"
+#include "libscene/formats/instruction/instruction_writer.h"
+#include "libscene/formats/pov/pov_reader.h"
+#include "libscene/formats/pov/pov_writer.h"
+#include "scenefile/read.h"
+#include "libscene/formats/sf/sf_writer.h"
+#include "scenefile/transform.h"
 
 namespace scene {
 namespace {
@@ -232,18 +232,18 @@ TEST(RoundTripProperty, TransformListsSurviveInstructionSceneInstructionScene) {
     ReadResult fromInstructions = parseScene(*instructions, "a.txt");
     ASSERT_TRUE(fromInstructions.ok()) << *instructions;
     std::optional<std::string> sf1 =
-        convertScene(fromInstructions.scene, OutputFormat::SceneFile, {}, diagnostics);
+        convertScene(fromInstructions.scene, Format::SceneFile, {}, diagnostics);
     ReadResult scene1 = parseScene(*sf1, "b.sf");
     ASSERT_TRUE(scene1.ok());
     // .sf -> instruction -> .sf, through decomposition.
     std::optional<std::string> instructions2 =
-        convertScene(scene1.scene, OutputFormat::InstructionFile, {}, diagnostics);
+        convertScene(scene1.scene, Format::InstructionFile, {}, diagnostics);
     ASSERT_TRUE(instructions2.has_value())
         << "scene " << i << ": " << diagnostics.items().back().message;
     ReadResult fromInstructions2 = parseScene(*instructions2, "c.txt");
     ASSERT_TRUE(fromInstructions2.ok()) << *instructions2;
     std::optional<std::string> sf2 =
-        convertScene(fromInstructions2.scene, OutputFormat::SceneFile, {}, diagnostics);
+        convertScene(fromInstructions2.scene, Format::SceneFile, {}, diagnostics);
     ReadResult scene2 = parseScene(*sf2, "d.sf");
     ASSERT_TRUE(scene2.ok());
 

@@ -2,13 +2,13 @@
 
 #include <string>
 
-#include "libscene/conversion.h"
-#include "libscene/instruction_reader.h"
-#include "libscene/instruction_writer.h"
-#include "libscene/sf_reader.h"
-#include "libscene/sf_writer.h"
-#include "libscene/test_support.h"
-#include "libscene/transform.h"
+#include "scenefile/convert.h"
+#include "libscene/formats/instruction/instruction_reader.h"
+#include "libscene/formats/instruction/instruction_writer.h"
+#include "libscene/formats/sf/sf_reader.h"
+#include "libscene/formats/sf/sf_writer.h"
+#include "libscene/testing/test_support.h"
+#include "scenefile/transform.h"
 
 namespace scene {
 namespace {
@@ -75,7 +75,7 @@ TEST(Conversion, ReportsEveryDroppedMaterialValue) {
       "a.txt");
   ASSERT_TRUE(r.ok());
   DiagnosticList out("a.txt");
-  std::optional<std::string> text = convertScene(r.scene, OutputFormat::SceneFile, {}, out);
+  std::optional<std::string> text = convertScene(r.scene, Format::SceneFile, {}, out);
   ASSERT_TRUE(text.has_value());
   std::vector<Diagnostic> lost = withCode(out, DiagnosticCode::LossMaterial);
   ASSERT_EQ(lost.size(), 2u);  // DIFFUSE 0.9 is the default: nothing lost
@@ -90,7 +90,7 @@ TEST(Conversion, ReportsEveryDroppedMaterialValue) {
   DiagnosticList strict("a.txt");
   ConversionOptions noLoss;
   noLoss.noLoss = true;
-  EXPECT_FALSE(convertScene(r.scene, OutputFormat::SceneFile, noLoss, strict).has_value());
+  EXPECT_FALSE(convertScene(r.scene, Format::SceneFile, noLoss, strict).has_value());
   EXPECT_EQ(strict.errorCount(), 2u);
 }
 
@@ -100,15 +100,15 @@ TEST(Conversion, ShearNeedsApproximate) {
                                 "s.sf");
   ASSERT_TRUE(r.ok());
   DiagnosticList out("s.sf");
-  EXPECT_FALSE(convertScene(r.scene, OutputFormat::InstructionFile, {}, out).has_value());
+  EXPECT_FALSE(convertScene(r.scene, Format::InstructionFile, {}, out).has_value());
   Diagnostic d = expectOne(out, DiagnosticCode::MatrixNotExpressible, 7, 1);
   EXPECT_EQ(d.hint, "'--approximate' writes the nearest rotation and scale");
 
   ConversionOptions approximate;
-  approximate.approximate = true;
+  approximate.instructions.approximate = true;
   DiagnosticList moved("s.sf");
   std::optional<std::string> text =
-      convertScene(r.scene, OutputFormat::InstructionFile, approximate, moved);
+      convertScene(r.scene, Format::InstructionFile, approximate, moved);
   ASSERT_TRUE(text.has_value());
   Diagnostic w = expectOne(moved, DiagnosticCode::MatrixApproximated, 7, 1, Severity::Warning);
   ASSERT_EQ(w.notes.size(), 4u);  // m00, m01, m10 and m11 move; the rest stay
@@ -119,7 +119,7 @@ TEST(Conversion, ShearNeedsApproximate) {
 
   approximate.noLoss = true;
   DiagnosticList strict("s.sf");
-  EXPECT_FALSE(convertScene(r.scene, OutputFormat::InstructionFile, approximate, strict));
+  EXPECT_FALSE(convertScene(r.scene, Format::InstructionFile, approximate, strict));
 }
 
 TEST(Conversion, RolledCameraNeedsApproximate) {
@@ -129,13 +129,13 @@ TEST(Conversion, RolledCameraNeedsApproximate) {
                                 "c.sf");
   ASSERT_TRUE(r.ok());
   DiagnosticList out("c.sf");
-  EXPECT_FALSE(convertScene(r.scene, OutputFormat::InstructionFile, {}, out).has_value());
+  EXPECT_FALSE(convertScene(r.scene, Format::InstructionFile, {}, out).has_value());
   Diagnostic d = expectOne(out, DiagnosticCode::LossCameraRoll, 1, 1);
   EXPECT_NE(d.message.find("rolled by -90 degrees"), std::string::npos) << d.message;
   ConversionOptions approximate;
-  approximate.approximate = true;
+  approximate.instructions.approximate = true;
   DiagnosticList moved("c.sf");
-  EXPECT_TRUE(convertScene(r.scene, OutputFormat::InstructionFile, approximate, moved));
+  EXPECT_TRUE(convertScene(r.scene, Format::InstructionFile, approximate, moved));
   expectOne(moved, DiagnosticCode::CameraRollApproximated, 1, 1, Severity::Warning);
 }
 
@@ -146,7 +146,7 @@ TEST(Conversion, LightMatricesKeepOnlyTheirPosition) {
   ASSERT_TRUE(r.ok());
   DiagnosticList out("l.sf");
   std::optional<std::string> text =
-      convertScene(r.scene, OutputFormat::InstructionFile, {}, out);
+      convertScene(r.scene, Format::InstructionFile, {}, out);
   ASSERT_TRUE(text.has_value());
   expectOne(out, DiagnosticCode::IgnoredLightMatrix, 7, 1, Severity::Note);
   EXPECT_NE(text->find("  LOCATION 1 1 1\n"), std::string::npos);

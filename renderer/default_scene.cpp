@@ -1,6 +1,6 @@
 #include "renderer/default_scene.h"
 
-#include "libscene/transform.h"
+#include "scenefile/transform.h"
 
 namespace render {
 

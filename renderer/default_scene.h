@@ -1,7 +1,7 @@
 // The scene sfrender draws when it is given none.
 #pragma once
 
-#include "libscene/scene.h"
+#include "scenefile/scene.h"
 
 namespace render {
 

@@ -12,7 +12,7 @@
 #include <numbers>
 #include <thread>
 
-#include "libscene/matrix.h"
+#include "scenefile/matrix.h"
 
 namespace render {
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "libscene/scene.h"
+#include "scenefile/scene.h"
 #include "renderer/bvh.h"
 #include "renderer/unit_shapes.h"
 

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "libscene/scene.h"
-#include "libscene/transform.h"
+#include "scenefile/scene.h"
+#include "scenefile/transform.h"
 
 namespace render::testing {
 

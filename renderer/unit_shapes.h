@@ -15,7 +15,7 @@
 #include <limits>
 #include <utility>
 
-#include "libscene/scene.h"
+#include "scenefile/scene.h"
 
 namespace render {
 

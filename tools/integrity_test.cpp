@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "libscene/output_location.h"
+#include "tools/common/output_location.h"
 #include "tools/common/exit_code.h"
 #include "tools/common/file_io.h"
 #include "tools/sfcheck/sfcheck.h"

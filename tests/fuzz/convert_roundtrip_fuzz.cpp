@@ -11,26 +11,26 @@
 #include <cmath>
 #include <limits>
 
-#include "libscene/conversion.h"
-#include "libscene/scene_reader.h"
-#include "libscene/sf_writer.h"
+#include "scenefile/convert.h"
+#include "scenefile/read.h"
+#include "libscene/formats/sf/sf_writer.h"
 #include "tests/fuzz/fuzz_input.h"
 
 namespace {
 
-using scene::OutputFormat;
+using scene::Format;
 
-const char* nameFor(OutputFormat format) {
+const char* nameFor(Format format) {
   switch (format) {
-    case OutputFormat::SceneFile:
+    case Format::SceneFile:
       return "out.sf";
-    case OutputFormat::InstructionFile:
+    case Format::InstructionFile:
       return "out.txt";
-    case OutputFormat::Gltf:
+    case Format::Gltf:
       return "out.gltf";
-    case OutputFormat::Glb:
+    case Format::Glb:
       return "out.glb";
-    case OutputFormat::Pov:
+    case Format::Pov:
       return "out.pov";
   }
   return "out";
@@ -38,7 +38,7 @@ const char* nameFor(OutputFormat format) {
 
 // Converts and reads back; nothing when the conversion refuses (a loss it
 // cannot express is reported, which is allowed).
-std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, OutputFormat format,
+std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, Format format,
                                                std::string& text,
                                                const scene::ConversionOptions& options = {}) {
   scene::DiagnosticList diagnostics;
@@ -66,8 +66,8 @@ std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, Output
   return back;
 }
 
-constexpr OutputFormat kEveryFormat[] = {OutputFormat::SceneFile, OutputFormat::InstructionFile,
-                                         OutputFormat::Gltf, OutputFormat::Glb, OutputFormat::Pov};
+constexpr Format kEveryFormat[] = {Format::SceneFile, Format::InstructionFile,
+                                         Format::Gltf, Format::Glb, Format::Pov};
 
 // The scene with every position (the eye, the lights, the objects'
 // translations) scaled by the power of two that takes the largest one to
@@ -112,33 +112,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Step 0: the input straight into every format, and at the edge of the
   // doubles (with --approximate, so that shear and roll are written too).
   std::string text;
-  for (OutputFormat format : kEveryFormat) throughFormat(read.scene, format, text);
+  for (Format format : kEveryFormat) throughFormat(read.scene, format, text);
   if (std::optional<scene::Scene> edge = atTheEdge(read.scene)) {
     scene::ConversionOptions approximate;
-    approximate.approximate = true;
-    for (OutputFormat format : kEveryFormat) throughFormat(*edge, format, text, approximate);
+    approximate.instructions.approximate = true;
+    for (Format format : kEveryFormat) throughFormat(*edge, format, text, approximate);
   }
 
   // Step 1: as an instruction file; writing that file again is a fixed point,
   // and the file written from it reads back in every format.
-  if (auto back = throughFormat(read.scene, OutputFormat::InstructionFile, text)) {
+  if (auto back = throughFormat(read.scene, Format::InstructionFile, text)) {
     std::string again;
-    auto twice = throughFormat(back->scene, OutputFormat::InstructionFile, again);
+    auto twice = throughFormat(back->scene, Format::InstructionFile, again);
     if (!twice || again != text) {
       fuzz::propertyFailed("instruction file written twice differs", text + "\n---\n" + again);
     }
-    for (OutputFormat format : kEveryFormat) throughFormat(back->scene, format, again);
+    for (Format format : kEveryFormat) throughFormat(back->scene, format, again);
   }
 
   // Step 2: as a scene file, then that scene through every format.
-  auto sfBack = throughFormat(read.scene, OutputFormat::SceneFile, text);
+  auto sfBack = throughFormat(read.scene, Format::SceneFile, text);
   if (!sfBack) return 0;
   const std::string sf = text;
   if (scene::writeSceneFile(sfBack->scene) != sf) {
     fuzz::propertyFailed("a scene file read and written again differs", sf);
   }
-  for (OutputFormat format :
-       {OutputFormat::SceneFile, OutputFormat::Gltf, OutputFormat::Glb, OutputFormat::Pov}) {
+  for (Format format :
+       {Format::SceneFile, Format::Gltf, Format::Glb, Format::Pov}) {
     auto back = throughFormat(sfBack->scene, format, text);
     if (!back) fuzz::propertyFailed("a valid scene file could not be converted", sf);
     if (scene::writeSceneFile(back->scene) != sf) {

@@ -11,8 +11,8 @@
 #include <string_view>
 #include <system_error>
 
-#include "libscene/random_scenes.h"
-#include "libscene/scene.h"
+#include "libscene/testing/random_scenes.h"
+#include "scenefile/scene.h"
 
 namespace fuzz {
 

@@ -1,7 +1,7 @@
 // libFuzzer target: the glTF reader (JSON and GLB) on any bytes, with
 // external buffers looked for in an empty folder (fuzz::emptyFolder). A
 // file it accepts must hold only finite numbers.
-#include "libscene/gltf_reader.h"
+#include "libscene/formats/gltf/gltf_reader.h"
 #include "tests/fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

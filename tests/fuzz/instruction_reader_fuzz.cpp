@@ -2,8 +2,8 @@
 // accepts must hold only finite numbers (a chain of operations that
 // overflows is an error), and write back to an instruction file that reads
 // again to the same scene.
-#include "libscene/instruction_reader.h"
-#include "libscene/instruction_writer.h"
+#include "libscene/formats/instruction/instruction_reader.h"
+#include "libscene/formats/instruction/instruction_writer.h"
 #include "tests/fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,7 +1,7 @@
 // libFuzzer target: the POV-Ray reader on any bytes. It must stop on every
 // input, in bounded time and memory, whatever it accepts or refuses; what it
 // accepts holds only finite numbers (0/0, sqrt(-1), exp(1000) are errors).
-#include "libscene/pov_reader.h"
+#include "libscene/formats/pov/pov_reader.h"
 #include "tests/fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

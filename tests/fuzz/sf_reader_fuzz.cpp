@@ -1,8 +1,8 @@
 // libFuzzer target: the scene file reader on any bytes. A file it accepts
 // must hold only finite numbers, and write back to text that reads again to
 // the same scene.
-#include "libscene/sf_reader.h"
-#include "libscene/sf_writer.h"
+#include "libscene/formats/sf/sf_reader.h"
+#include "libscene/formats/sf/sf_writer.h"
 #include "tests/fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

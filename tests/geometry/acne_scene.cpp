@@ -5,7 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "libscene/transform.h"
+#include "scenefile/transform.h"
 #include "tests/geometry/reference_caster.h"
 
 namespace acne {

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "libscene/transform.h"
+#include "scenefile/transform.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "tests/geometry/reference_caster.h"

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "libscene/scene.h"
+#include "scenefile/scene.h"
 
 namespace geomref {
 

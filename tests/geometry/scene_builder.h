@@ -8,8 +8,8 @@
 #include <numbers>
 #include <random>
 
-#include "libscene/scene.h"
-#include "libscene/transform.h"
+#include "scenefile/scene.h"
+#include "scenefile/transform.h"
 
 namespace testscenes {
 

@@ -9,9 +9,9 @@
 #include <iostream>
 #include <string>
 
-#include "libscene/random_scenes.h"
-#include "libscene/scene_reader.h"
-#include "libscene/sf_writer.h"
+#include "libscene/testing/random_scenes.h"
+#include "scenefile/read.h"
+#include "libscene/formats/sf/sf_writer.h"
 
 int main(int argc, char** argv) {
   if (argc != 4 && argc != 5) {

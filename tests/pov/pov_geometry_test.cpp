@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "libscene/pov_writer.h"
-#include "libscene/transform.h"
+#include "libscene/formats/pov/pov_writer.h"
+#include "scenefile/transform.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "tests/geometry/reference_caster.h"
@@ -167,8 +167,10 @@ TEST_P(PovGeometry, PovRayAndSfrenderShowTheSameObjectInEachPixel) {
   options.width = c.width;
   options.height = c.height;
   options.flat = true;
+  scene::ConversionOptions conversion;
+  conversion.pov = options;
   scene::DiagnosticList diagnostics;
-  std::optional<std::string> pov = scene::writePovScene(c.scene, options, diagnostics);
+  std::optional<std::string> pov = scene::writePovScene(c.scene, conversion, diagnostics);
   ASSERT_TRUE(pov.has_value());
   std::string log;
   std::string fileName = c.name;

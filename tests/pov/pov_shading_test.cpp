@@ -13,9 +13,9 @@
 #include <random>
 #include <sstream>
 
-#include "libscene/pov_writer.h"
-#include "libscene/scene_reader.h"
-#include "libscene/transform.h"
+#include "libscene/formats/pov/pov_writer.h"
+#include "scenefile/read.h"
+#include "scenefile/transform.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
@@ -166,8 +166,10 @@ TEST_P(PovShading, PovRayAndSfrenderImagesDifferLittle) {
   scene::PovWriteOptions options;
   options.width = kWidth;
   options.height = kHeight;
+  scene::ConversionOptions conversion;
+  conversion.pov = options;
   scene::DiagnosticList diagnostics;
-  std::optional<std::string> pov = scene::writePovScene(c.scene, options, diagnostics);
+  std::optional<std::string> pov = scene::writePovScene(c.scene, conversion, diagnostics);
   ASSERT_TRUE(pov.has_value());
   std::string name = "shaded-" + std::to_string(std::hash<std::string>{}(c.name) % 100000);
   std::string log;

@@ -16,9 +16,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "libscene/number.h"
-#include "libscene/pov_reader.h"
-#include "libscene/pov_writer.h"
+#include "libscene/text/number.h"
+#include "libscene/formats/pov/pov_reader.h"
+#include "libscene/formats/pov/pov_writer.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "tests/pov/povray_runner.h"
@@ -72,9 +72,9 @@ TEST_P(PovTutorial, SfrenderDrawsTheObjectsWherePovRayDoes) {
   if (!povtest::povrayProgram()) GTEST_SKIP() << "povray is not installed";
   std::string text = readText(GetParam());
   std::string name = GetParam().stem().string();
-  scene::PovReadOptions options;
-  options.imageWidth = kWidth;
-  options.imageHeight = kWidth * 3 / 4;
+  scene::ReadOptions options;
+  options.pov.imageWidth = kWidth;
+  options.pov.imageHeight = kWidth * 3 / 4;
   scene::PovImport imported = scene::importPov(text, name + ".pov", options);
   ASSERT_TRUE(imported.read.ok()) << imported.read.diagnostics.items().front().message;
   const scene::Scene& scene = imported.read.scene;

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "libscene/pov_writer.h"
+#include "libscene/formats/pov/pov_writer.h"
 
 namespace povtest {
 

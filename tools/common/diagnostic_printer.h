@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "libscene/diagnostic.h"
+#include "scenefile/diagnostic.h"
 
 namespace tools {
 

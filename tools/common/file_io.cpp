@@ -12,7 +12,7 @@
 #include <system_error>
 #include <vector>
 
-#include "libscene/output_location.h"
+#include "tools/common/output_location.h"
 
 namespace tools {
 

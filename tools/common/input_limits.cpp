@@ -2,7 +2,7 @@
 
 #include <sys/stat.h>
 
-#include "libscene/scene_reader.h"
+#include "scenefile/read.h"
 #include "tools/common/file_io.h"
 
 namespace tools {
@@ -25,11 +25,11 @@ void addReadLimitOptions(CLI::App& app, scene::ReadOptions& options) {
                  "stop reading at the first object or light past this many")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app.add_option("--max-vertices", options.maxGltfVertices,
+  app.add_option("--max-vertices", options.gltf.maxVertices,
                  "glTF: refuse a file with more mesh vertices than this")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  app.add_option("--max-nodes", options.maxGltfNodes,
+  app.add_option("--max-nodes", options.gltf.maxNodes,
                  "glTF: refuse a file with more nodes and other objects than this (a material "
                  "counts 5, a camera or a light 2)")
       ->check(CLI::PositiveNumber)

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "libscene/read_result.h"
+#include "scenefile/read.h"
 
 namespace tools {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
-#include "libscene/diagnostic.h"
-#include "libscene/scene.h"
+#include "scenefile/diagnostic.h"
+#include "scenefile/scene.h"
 
 namespace tools {
 

@@ -6,9 +6,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 
-#include "libscene/matrix.h"
-#include "libscene/sf_writer.h"
-#include "libscene/transform.h"
+#include "scenefile/matrix.h"
+#include "scenefile/convert.h"
+#include "scenefile/transform.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 
@@ -394,8 +394,18 @@ std::optional<std::string> saveScene(BuilderState& state, const FileSystem& file
     name = "Scene" + std::to_string(n) + ".sf";
     if (!files.exists(name)) break;
   }
+  // The scene file's own writer, through the registry: what a scene file
+  // cannot hold (an instruction file's materials) is dropped, as it always
+  // was; only a scene with a number that is not finite cannot be written.
+  scene::DiagnosticList losses;
+  std::optional<std::string> text =
+      scene::convertScene(state.scene, scene::Format::SceneFile, {}, losses);
+  if (!text) {
+    state.lastSave = "could not save " + name + ": the scene holds a value that is not finite";
+    return {};
+  }
   std::string error;
-  if (!files.write(name, scene::writeSceneFile(state.scene), error)) {
+  if (!files.write(name, *text, error)) {
     state.lastSave = "could not save " + name + ": " + error;
     return {};
   }

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "libscene/scene.h"
+#include "scenefile/scene.h"
 
 namespace sfbuild {
 

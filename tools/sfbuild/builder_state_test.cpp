@@ -7,8 +7,8 @@
 #include <map>
 #include <string_view>
 
-#include "libscene/scene_reader.h"
-#include "libscene/sf_writer.h"
+#include "scenefile/read.h"
+#include "libscene/formats/sf/sf_writer.h"
 #include "renderer/render.h"
 
 namespace sfbuild {

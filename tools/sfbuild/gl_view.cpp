@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "libscene/mesh.h"
+#include "scenefile/mesh.h"
 
 namespace sfbuild {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <array>
 
-#include "libscene/mesh.h"
+#include "scenefile/mesh.h"
 #include "tools/sfbuild/builder_state.h"
 
 namespace sfbuild {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "libscene/scene_reader.h"
+#include "scenefile/read.h"
 #include "renderer/render.h"
 #include "tools/common/file_io.h"
 #include "tools/sfbuild/builder_state.h"

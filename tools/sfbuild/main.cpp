@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "libscene/scene_reader.h"
+#include "scenefile/read.h"
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "libscene/output_location.h"
-#include "libscene/scene_reader.h"
+#include "tools/common/output_location.h"
+#include "scenefile/read.h"
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/input_limits.h"
@@ -17,20 +17,22 @@ namespace tools {
 
 namespace {
 
-std::string formatName(scene::SceneFormat format) {
+// The names of sfcheck's JSON report, which predate the registry's --to
+// names and are kept, since scripts read them.
+std::string formatName(std::optional<scene::Format> detected) {
+  if (!detected) return "unknown";
+  scene::Format format = *detected;
   switch (format) {
-    case scene::SceneFormat::SceneFile:
+    case scene::Format::SceneFile:
       return "scene-file";
-    case scene::SceneFormat::InstructionFile:
+    case scene::Format::InstructionFile:
       return "instruction-file";
-    case scene::SceneFormat::Gltf:
+    case scene::Format::Gltf:
       return "gltf";
-    case scene::SceneFormat::Glb:
+    case scene::Format::Glb:
       return "glb";
-    case scene::SceneFormat::Pov:
+    case scene::Format::Pov:
       return "pov";
-    case scene::SceneFormat::Unknown:
-      break;
   }
   return "unknown";
 }
@@ -41,10 +43,7 @@ std::string count(std::size_t n, const char* word) {
 
 int checkFiles(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
                Stage& stage) {
-  CLI::App app{
-      "Checks scene files, instruction files and POV-Ray scenes (the subset sfconvert reads) and "
-      "reports every problem",
-      "sfcheck"};
+  CLI::App app{"Checks " + scene::describeFormats() + " and reports every problem", "sfcheck"};
   app.set_version_flag("--version", SCENEFILE_VERSION);
   std::vector<std::string> files;
   bool werror = false;
@@ -93,9 +92,9 @@ int checkFiles(int argc, const char* const* argv, std::ostream& out, std::ostrea
     }
     const std::string& text = *input.text;
     stage.set("checking " + printableText(file));
-    scene::SceneFormat detected = scene::detectFormat(text, file);
+    std::optional<scene::Format> detected = scene::detectFormat(text, file);
     scene::ReadResult result = scene::parseScene(text, file, readOptions);
-    if (detected == scene::SceneFormat::InstructionFile) {
+    if (detected == scene::Format::InstructionFile) {
       scene::checkOutputLocation(result.scene, std::filesystem::path(file).parent_path(),
                                  scene::Severity::Warning, result.diagnostics);
     }

@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "libscene/conversion.h"
-#include "libscene/output_location.h"
-#include "libscene/scene_reader.h"
+#include "scenefile/convert.h"
+#include "scenefile/mesh.h"
+#include "scenefile/read.h"
+#include "tools/common/output_location.h"
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
@@ -20,24 +21,25 @@ namespace tools {
 
 namespace {
 
-const std::map<std::string, scene::OutputFormat> kFormatNames = {
-    {"sf", scene::OutputFormat::SceneFile},
-    {"instructions", scene::OutputFormat::InstructionFile},
-    {"gltf", scene::OutputFormat::Gltf},
-    {"glb", scene::OutputFormat::Glb},
-    {"pov", scene::OutputFormat::Pov},
-};
+// The --to names of the format registry, for CLI11's check.
+std::vector<std::string> formatNameList() {
+  std::vector<std::string> names;
+  for (const scene::FormatInfo& row : scene::formats()) names.emplace_back(row.name);
+  return names;
+}
 
-// The output format from the file's extension: .sf, or .txt for an
-// instruction file (the manual's own example is instructions.txt).
-std::optional<scene::OutputFormat> formatFromExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  if (ext == ".sf") return scene::OutputFormat::SceneFile;
-  if (ext == ".txt") return scene::OutputFormat::InstructionFile;
-  if (ext == ".gltf") return scene::OutputFormat::Gltf;
-  if (ext == ".glb") return scene::OutputFormat::Glb;
-  if (ext == ".pov") return scene::OutputFormat::Pov;
-  return std::nullopt;
+// Every extension the registry knows, for the usage error: ".sf, .txt, ...".
+std::string extensionList() {
+  std::vector<std::string_view> all;
+  for (const scene::FormatInfo& row : scene::formats()) {
+    all.insert(all.end(), row.extensions.begin(), row.extensions.end());
+  }
+  std::string text;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    text += i == 0 ? "" : i + 1 == all.size() ? " or " : ", ";
+    text += all[i];
+  }
+  return text;
 }
 
 void printAll(const scene::DiagnosticList& list, bool json, std::ostream& err) {
@@ -55,10 +57,7 @@ bool namesStandardOutput(const std::string& path) {
 }
 
 int convert(int argc, const char* const* argv, std::ostream& out, std::ostream& err, Stage& stage) {
-  CLI::App app{
-      "Converts between scene files (.sf), instruction files, glTF 2.0 (.gltf, .glb) and "
-      "POV-Ray (.pov)",
-      "sfconvert"};
+  CLI::App app{"Converts between " + scene::describeFormats(), "sfconvert"};
   app.set_version_flag("--version", SCENEFILE_VERSION);
   std::string input;
   std::string output;
@@ -71,21 +70,21 @@ int convert(int argc, const char* const* argv, std::ostream& out, std::ostream& 
       ->required();
   app.add_option("output", output, "the file to write, or - for standard output")->required();
   app.add_option("--to", to, "output format, instead of the output's extension")
-      ->check(CLI::IsMember({"sf", "instructions", "gltf", "glb", "pov"}));
+      ->check(CLI::IsMember(formatNameList()));
   app.add_flag("--no-loss", noLoss, "fail instead of dropping anything the output cannot hold");
   app.add_flag("--approximate", approximate,
                "write the nearest expressible matrix or camera and report how far it moved");
   app.add_flag("--transpose-matrices", transpose,
                "read each scene-file matrix column by column (repairs files written transposed)");
-  double fov = scene::gltf::kDefaultYfovDegrees;
+  std::optional<double> fov;
   int width = 0;
   int height = 0;
   bool externalBuffers = false;
   int tessellation = scene::kDefaultSegments;
   app.add_option("--fov", fov,
-                 "glTF and POV-Ray: the camera's vertical field of view in degrees (sfrender's)")
-      ->check(CLI::Range(0.0, 180.0))
-      ->capture_default_str();
+                 "glTF and POV-Ray: the camera's vertical field of view in degrees (sfrender's; "
+                 "default: the input's, else 60)")
+      ->check(CLI::Range(0.0, 180.0));
   app.add_option("--width", width,
                  "glTF and POV-Ray: the image width, for the camera's aspect ratio (POV-Ray "
                  "input: image_width)")
@@ -115,27 +114,28 @@ int convert(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
   bool json = format == "json";
   bool toStdout = output == "-";
-  if (!(fov > 0.0 && fov < 180.0)) {
+  if (fov && !(*fov > 0.0 && *fov < 180.0)) {
     err << "sfconvert: --fov must lie between 0 and 180 degrees\n";
     return toInt(ExitCode::Usage);
   }
 
   // Work out the output format before reading anything.
-  std::optional<scene::OutputFormat> outputFormat;
+  std::optional<scene::Format> outputFormat;
   if (!to.empty()) {
-    outputFormat = kFormatNames.at(to);
+    outputFormat = scene::findFormatByName(to)->format;
   } else if (!toStdout) {
-    outputFormat = formatFromExtension(output);
+    if (const scene::FormatInfo* row = scene::findFormatByExtension(output)) {
+      outputFormat = row->format;
+    }
   }
   if (!outputFormat) {
     err << "sfconvert: cannot tell the output format of '" << output
-        << "': use .sf, .txt (instruction file), .gltf, .glb or .pov, or --to "
-           "sf|instructions|gltf|glb|pov\n";
+        << "': use " << extensionList() << ", or --to " << scene::formatNames() << "\n";
     return toInt(ExitCode::Usage);
   }
   std::string bufferFile;
   if (externalBuffers) {
-    if (*outputFormat != scene::OutputFormat::Gltf || toStdout) {
+    if (*outputFormat != scene::Format::Gltf || toStdout) {
       err << "sfconvert: --external-buffers needs a .gltf output file\n";
       return toInt(ExitCode::Usage);
     }
@@ -181,11 +181,13 @@ int convert(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         << printableText(text.readError) << "\n";
     return toInt(ExitCode::IoError);
   }
-  readOptions.transposedMatrices = transpose;
+  readOptions.sceneFile.transposedMatrices = transpose;
   readOptions.noLoss = noLoss;
-  readOptions.skipUnsupported = skipUnsupported;
-  readOptions.imageWidth = width;
-  readOptions.imageHeight = height;
+  readOptions.pov.skipUnsupported = skipUnsupported;
+  if (width > 0 && height > 0) {
+    readOptions.pov.imageWidth = width;
+    readOptions.pov.imageHeight = height;
+  }
   scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
   if (!result.ok()) {
     printAll(result.diagnostics, json, err);
@@ -196,9 +198,9 @@ int convert(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   stage.set("converting");
   scene::ConversionOptions options;
   options.noLoss = noLoss;
-  options.approximate = approximate;
+  options.instructions.approximate = approximate;
   if (!toStdout) {
-    options.outputFile = std::filesystem::path(output).stem().string() + ".ppm";
+    options.instructions.outputFile = std::filesystem::path(output).stem().string() + ".ppm";
   }
   options.gltf.yfovDegrees = fov;
   options.gltf.width = width;

@@ -1,5 +1,7 @@
 #include "tools/sfrender/sfrender.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -9,8 +11,8 @@
 #include <string>
 #include <variant>
 
-#include "libscene/output_location.h"
-#include "libscene/scene_reader.h"
+#include "tools/common/output_location.h"
+#include "scenefile/read.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "tools/common/command_line.h"
@@ -190,9 +192,39 @@ std::optional<int> resourceRefusal(const SceneAndTarget& job,
   return std::nullopt;
 }
 
+// Which of the view's flags the command line gave.
+struct ViewFlags {
+  CLI::Option* width = nullptr;
+  CLI::Option* height = nullptr;
+  CLI::Option* fov = nullptr;
+};
+
+// The scene's own view (a POV-Ray or glTF camera's) where the command line
+// does not say otherwise: its field of view unless --fov, and at its aspect
+// ratio the side that --width and --height leave open (the height, when
+// neither is given).
+void applySceneView(const scene::Scene& scene, const ViewFlags& given,
+                    render::RenderSettings& settings) {
+  if (!scene.view) return;
+  if (given.fov->count() == 0) {
+    settings.verticalFovDegrees = std::clamp(scene.view->verticalFovDegrees, 0.001, 179.999);
+  }
+  if (!scene.view->aspectRatio || (given.height->count() > 0 && given.width->count() > 0)) return;
+  double aspect = *scene.view->aspectRatio;
+  auto side = [](double pixels) {
+    return static_cast<int>(std::clamp(std::round(pixels), 1.0, 32768.0));
+  };
+  if (given.height->count() > 0) {
+    settings.width = side(settings.height * aspect);
+  } else {
+    settings.height = side(settings.width / aspect);
+  }
+}
+
 int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
                  bool errIsTerminal, const AvailableMemoryProbe& availableMemory, Stage& stage) {
-  CLI::App app{"Ray traces a scene file or an instruction file (the default scene without one)",
+  CLI::App app{"Ray traces a scene, in any of " + scene::describeFormats() +
+                   " (the default scene without one)",
                "sfrender"};
   app.set_version_flag("--version", SCENEFILE_VERSION);
   std::string input;
@@ -200,16 +232,19 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
   render::RenderSettings settings;
   bool quiet = false;
   bool stats = false;
-  app.add_option("scene", input, "a scene file (.sf) or an instruction file");
+  app.add_option("scene", input, "the scene to render, its format recognised from its content");
   app.add_option(
       "-o,--output", output,
       "the image to write; its extension picks the format (.ppm, .png, .exr, .tif, ...)");
   // 32768 a side keeps width * height within an int whatever --max-pixels.
-  app.add_option("--width", settings.width, "image width in pixels")->check(CLI::Range(1, 32768));
-  app.add_option("--height", settings.height, "image height in pixels")
-      ->check(CLI::Range(1, 32768));
-  app.add_option("--fov", settings.verticalFovDegrees, "vertical field of view in degrees")
-      ->check(CLI::Range(0.001, 179.999));
+  ViewFlags given;
+  given.width = app.add_option("--width", settings.width, "image width in pixels")
+                    ->check(CLI::Range(1, 32768));
+  given.height = app.add_option("--height", settings.height, "image height in pixels")
+                     ->check(CLI::Range(1, 32768));
+  given.fov = app.add_option("--fov", settings.verticalFovDegrees,
+                             "vertical field of view in degrees (default: the scene's, else 60)")
+                  ->check(CLI::Range(0.001, 179.999));
   // --spp and --depth are held to the --max- flags below, checked after
   // parsing so that the message can name the flag that raises them.
   app.add_option("--spp", settings.samplesPerPixel, "samples per pixel, stratified")
@@ -246,6 +281,11 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
       readSceneAndTarget(input, output, readOptions, quiet, err);
   if (const int* status = std::get_if<int>(&read)) return *status;
   SceneAndTarget& job = std::get<SceneAndTarget>(read);
+  applySceneView(job.scene, given, settings);
+  if (std::optional<std::string> overLimit = settingOverLimit(settings, limits)) {
+    err << "sfrender: " << *overLimit << " (at the scene's aspect ratio)\n";
+    return toInt(ExitCode::Usage);
+  }
   const fs::path& target = job.target;
   if (std::optional<int> refused = targetRefusal(input, job, settings, err)) return *refused;
 

@@ -1,0 +1,595 @@
+#include "libscene/formats/gltf/gltf_writer.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <glm/matrix.hpp>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <set>
+#include <vector>
+
+#include "libscene/formats/gltf/glb.h"
+#include "libscene/text/number.h"
+
+namespace scene {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian");
+
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+constexpr int kFloat = 5126;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+
+Json vec3Json(const glm::dvec3& v) {
+  return Json::array({v.x, v.y, v.z});
+}
+
+// Row by row, as a scene file writes it: the form a person reads in extras.
+Json rowsJson(const glm::dmat4& m) {
+  Json rows = Json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back(Json::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
+  return rows;
+}
+
+// Column by column, as glTF's `matrix` wants it; GLM holds m[column][row].
+Json columnsJson(const glm::dmat4& m) {
+  Json out = Json::array();
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) out.push_back(m[c][r]);
+  }
+  return out;
+}
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 3 <= bytes.size(); i += 3) {
+    std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16 |
+                      static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8 |
+                      static_cast<unsigned char>(bytes[i + 2]);
+    for (int s = 18; s >= 0; s -= 6) out += kAlphabet[(v >> s) & 63];
+  }
+  std::size_t left = bytes.size() - i;
+  if (left > 0) {
+    std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
+    if (left == 2) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += left == 2 ? kAlphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+// A file name as a URI: every byte but the unreserved ones percent-encoded.
+std::string uriFromFileName(std::string_view name) {
+  std::string out;
+  for (char ch : name) {
+    unsigned char c = static_cast<unsigned char>(ch);
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') {
+      out += ch;
+    } else {
+      static constexpr char kHex[] = "0123456789ABCDEF";
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
+// JSON text indented by two spaces, but with arrays of numbers and strings
+// on one line: a matrix reads as one line, not sixteen.
+void appendPretty(std::string& out, const Json& j, int depth) {
+  auto newline = [&out](int level) {
+    out += '\n';
+    out.append(static_cast<std::size_t>(2 * level), ' ');
+  };
+  if (j.is_object() && !j.empty()) {
+    out += '{';
+    bool first = true;
+    for (const auto& [key, value] : j.items()) {
+      if (!first) out += ',';
+      first = false;
+      newline(depth + 1);
+      out += Json(key).dump();
+      out += ": ";
+      appendPretty(out, value, depth + 1);
+    }
+    newline(depth);
+    out += '}';
+  } else if (j.is_array() && !j.empty() &&
+             std::any_of(j.begin(), j.end(), [](const Json& e) { return e.is_structured(); })) {
+    out += '[';
+    bool first = true;
+    for (const Json& value : j) {
+      if (!first) out += ',';
+      first = false;
+      newline(depth + 1);
+      appendPretty(out, value, depth + 1);
+    }
+    newline(depth);
+    out += ']';
+  } else {
+    std::string flat = j.dump();
+    // nlohmann writes arrays without spaces; one after each comma reads better.
+    if (j.is_array()) {
+      std::string spaced;
+      for (char ch : flat) {
+        spaced += ch;
+        if (ch == ',') spaced += ' ';
+      }
+      flat = std::move(spaced);
+    }
+    out += flat;
+  }
+}
+
+// The binary buffer and the views and accessors that point into it.
+class BufferBuilder {
+ public:
+  template <typename T>
+  int addView(const std::vector<T>& items, int target) {
+    data_.append((4 - data_.size() % 4) % 4, '\0');
+    std::size_t offset = data_.size();
+    std::size_t length = items.size() * sizeof(T);
+    data_.resize(offset + length);
+    if (length) std::memcpy(data_.data() + offset, items.data(), length);
+    views_.push_back(
+        {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}, {"target", target}});
+    return static_cast<int>(views_.size() - 1);
+  }
+  int addAccessor(Json accessor) {
+    accessors_.push_back(std::move(accessor));
+    return static_cast<int>(accessors_.size() - 1);
+  }
+  std::string& data() {
+    data_.append((4 - data_.size() % 4) % 4, '\0');
+    return data_;
+  }
+  Json& views() { return views_; }
+  Json& accessors() { return accessors_; }
+
+ private:
+  std::string data_;
+  Json views_ = Json::array();
+  Json accessors_ = Json::array();
+};
+
+struct MeshAccessors {
+  int position = -1;
+  int normal = -1;
+  int indices = -1;
+};
+
+MeshAccessors addMesh(BufferBuilder& buffer, const TriangleMesh& mesh) {
+  MeshAccessors out;
+  glm::vec3 lo(std::numeric_limits<float>::max());
+  glm::vec3 hi(std::numeric_limits<float>::lowest());
+  for (const glm::vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  auto floats = [](const glm::vec3& v) {
+    return Json::array(
+        {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)});
+  };
+  out.position = buffer.addAccessor({{"bufferView", buffer.addView(mesh.positions, kArrayBuffer)},
+                                     {"componentType", kFloat},
+                                     {"count", mesh.positions.size()},
+                                     {"type", "VEC3"},
+                                     {"min", floats(lo)},
+                                     {"max", floats(hi)}});
+  out.normal = buffer.addAccessor({{"bufferView", buffer.addView(mesh.normals, kArrayBuffer)},
+                                   {"componentType", kFloat},
+                                   {"count", mesh.normals.size()},
+                                   {"type", "VEC3"}});
+  int view;
+  int componentType;
+  if (mesh.positions.size() <= 65535) {
+    std::vector<std::uint16_t> small(mesh.indices.begin(), mesh.indices.end());
+    view = buffer.addView(small, kElementArrayBuffer);
+    componentType = kUnsignedShort;
+  } else {
+    view = buffer.addView(mesh.indices, kElementArrayBuffer);
+    componentType = kUnsignedInt;
+  }
+  out.indices = buffer.addAccessor({{"bufferView", view},
+                                    {"componentType", componentType},
+                                    {"count", mesh.indices.size()},
+                                    {"type", "SCALAR"}});
+  return out;
+}
+
+struct Bounds {
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
+  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+  void add(const glm::dvec3& p) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return;
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  bool empty() const { return lo.x > hi.x; }
+};
+
+// Everything the scene holds but its planes: the camera's eye, the lights,
+// the corners of each object's box, and each plane's origin.
+Bounds sceneBounds(const Scene& scene) {
+  Bounds b;
+  b.add(glm::dvec3(scene.camera.matrix[3]));
+  for (const Light& light : scene.lights) b.add(light.position());
+  for (const Object& object : scene.objects) {
+    if (object.kind == ObjectKind::Plane) {
+      b.add(glm::dvec3(object.matrix[3]));
+      continue;
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+      glm::dvec4 p((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, (corner & 4) ? 1.0 : -1.0,
+                   1.0);
+      b.add(glm::dvec3(object.matrix * p));
+    }
+  }
+  return b;
+}
+
+// The half-size of the square that stands for every plane: twice the
+// farthest corner of the scene's bounds from each plane's origin, in the
+// plane's own x and z, rounded up to a power of two (at least 1).
+float planeHalfSize(const Scene& scene) {
+  Bounds b = sceneBounds(scene);
+  double reach = 1.0;
+  for (const Object& object : scene.objects) {
+    if (object.kind != ObjectKind::Plane || b.empty()) continue;
+    glm::dmat4 inverse = glm::inverse(object.matrix);
+    for (int corner = 0; corner < 8; ++corner) {
+      glm::dvec4 p((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
+                   (corner & 4) ? b.hi.z : b.lo.z, 1.0);
+      glm::dvec4 local = inverse * p;
+      double r = std::max(std::abs(local.x), std::abs(local.z));
+      if (std::isfinite(r)) reach = std::max(reach, r);
+    }
+  }
+  constexpr double kLargest = 1e30;
+  double size = std::exp2(std::ceil(std::log2(2.0 * reach)));
+  if (!std::isfinite(size) || size > kLargest) size = kLargest;
+  return static_cast<float>(size);
+}
+
+// A material's identity for sharing: the exact bits of every value.
+std::vector<std::uint64_t> materialKey(const Material& m, bool doubleSided) {
+  std::vector<std::uint64_t> key;
+  for (int i = 0; i < 3; ++i) key.push_back(std::bit_cast<std::uint64_t>(m.colour[i]));
+  for (MaterialProperty p : kMaterialProperties) {
+    key.push_back(std::bit_cast<std::uint64_t>(materialValue(m, p)));
+  }
+  key.push_back(doubleSided);
+  return key;
+}
+
+std::string lowerCase(std::string_view name) {
+  std::string out(name);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+Json materialJson(const Material& material, ObjectKind kind, std::set<std::string>& extensions,
+                  int number) {
+  gltf::PbrMaterial pbr = gltf::pbrFromMaterial(material, kind);
+  Json out = {{"name", "material " + std::to_string(number)}};
+  out["pbrMetallicRoughness"] = {
+      {"baseColorFactor", Json::array({pbr.baseColor.r, pbr.baseColor.g, pbr.baseColor.b, 1.0})},
+      {"metallicFactor", pbr.metallic},
+      {"roughnessFactor", pbr.roughness}};
+  if (pbr.doubleSided) out["doubleSided"] = true;
+  Json ext = Json::object();
+  if (pbr.ior) ext["KHR_materials_ior"] = {{"ior", *pbr.ior}};
+  if (pbr.transmission)
+    ext["KHR_materials_transmission"] = {{"transmissionFactor", *pbr.transmission}};
+  if (pbr.specular) ext["KHR_materials_specular"] = {{"specularFactor", *pbr.specular}};
+  for (const auto& [name, value] : ext.items()) extensions.insert(name);
+  if (!ext.empty()) out["extensions"] = std::move(ext);
+  Json sf = {{"colour", vec3Json(material.colour)}};
+  for (MaterialProperty p : kMaterialProperties) {
+    sf[lowerCase(materialPropertyName(p))] = materialValue(material, p);
+  }
+  out["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+  return out;
+}
+
+Json transformsJson(const std::vector<TransformOp>& ops) {
+  Json out = Json::array();
+  for (const TransformOp& op : ops) {
+    Json entry = Json::array({std::string(transformKindName(op.kind))});
+    if (op.kind == TransformKind::Scale || op.kind == TransformKind::Translate) {
+      entry.insert(entry.end(), {op.value.x, op.value.y, op.value.z});
+    } else {
+      entry.push_back(op.value.x);
+    }
+    out.push_back(std::move(entry));
+  }
+  return out;
+}
+
+// The nodes of one record: one, or a chain (gltf::nodeChain) whose last
+// node carries the content and the record's name. The first goes into the
+// scene's roots; the last is returned.
+std::size_t addRecordNodes(Json& nodes, Json& roots, const glm::dmat4& m, const std::string& name) {
+  std::vector<glm::dmat4> chain = gltf::nodeChain(gltf::withinFloatRange(m));
+  roots.push_back(nodes.size());
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    std::string part = i + 1 == chain.size() ? name
+                       : i == 0              ? name + " translation and rotation"
+                                             : name + " scale";
+    Json node = {{"name", part}, {"matrix", columnsJson(chain[i])}};
+    if (i + 1 < chain.size()) node["children"] = Json::array({nodes.size() + 1});
+    nodes.push_back(std::move(node));
+  }
+  return nodes.size() - 1;
+}
+
+std::string objectLabel(const Object& object, std::size_t index) {
+  return std::string(objectKindName(object.kind)) + " object " + std::to_string(index + 1);
+}
+
+std::string colourText(const glm::dvec3& c) {
+  return formatNumber(c.x) + " " + formatNumber(c.y) + " " + formatNumber(c.z);
+}
+
+// Every value glTF cannot hold as it is, reported at its record.
+void reportBeyondFloat(const glm::dmat4& m, const std::string& label, SourceSpan span,
+                       Severity severity, DiagnosticList& out) {
+  if (gltf::withinFloatRange(m) == m) return;
+  out.report(severity, DiagnosticCode::GltfValueClamped, span,
+             "the matrix of " + label +
+                 " holds a value beyond single precision (3.4e38), where glTF readers hold node "
+                 "matrices: the node gets the nearest float")
+      .hint = "the exact matrix rides in extras";
+}
+
+void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize, DiagnosticList& out) {
+  reportBeyondFloat(gltf::cameraNodeMatrix(scene.camera.matrix), "the CAMERA", scene.camera.span,
+                    lossSeverity, out);
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    reportBeyondFloat(gltf::lightNodeMatrix(scene.lights[i].matrix),
+                      "LIGHT " + std::to_string(i + 1), scene.lights[i].span, lossSeverity, out);
+  }
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    out.note(DiagnosticCode::LightFalloff, scene.lights[i].span,
+             "LIGHT " + std::to_string(i + 1) +
+                 " becomes a KHR_lights_punctual point light, whose light falls off with the "
+                 "square of the distance; a scene file's light does not fall off");
+  }
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& object = scene.objects[i];
+    const Material& m = object.material;
+    std::string label = objectLabel(object, i);
+    reportBeyondFloat(object.matrix, label, object.span, lossSeverity, out);
+    if (object.kind == ObjectKind::Plane) {
+      out.report(lossSeverity, DiagnosticCode::PlaneMadeFinite, object.span,
+                 label + " is infinite; glTF gets a square of half-size " +
+                     formatNumber(planeSize) + " in the plane's own space")
+          .hint = "the kind rides in extras, so sfconvert reads it back as an infinite PLANE";
+    }
+    if (m.colour.x > 1.0 || m.colour.y > 1.0 || m.colour.z > 1.0) {
+      out.report(lossSeverity, DiagnosticCode::GltfValueClamped, object.span,
+                 "COLOUR " + colourText(m.colour) + " of " + label +
+                     " is clamped to 1 in baseColorFactor")
+          .hint = "the exact colour rides in extras";
+    }
+    if (m.ri < 1.0) {
+      out.report(lossSeverity, DiagnosticCode::GltfValueClamped, object.span,
+                 "RI " + formatNumber(m.ri) + " of " + label + " is written as KHR_materials_ior 1")
+          .hint = "the exact value rides in extras";
+    }
+    for (MaterialProperty p :
+         {MaterialProperty::Ambient, MaterialProperty::Diffuse, MaterialProperty::Reflectivity}) {
+      double value = materialValue(m, p);
+      if (value == defaultMaterialValue(p)) continue;
+      out.note(DiagnosticCode::GltfExtrasOnly, object.span,
+               std::string(materialPropertyName(p)) + " " + formatNumber(value) + " of " + label +
+                   " has no glTF counterpart and rides in extras alone");
+    }
+    if (!gltf::isTrsMatrix(object.matrix)) {
+      out.note(DiagnosticCode::GltfMatrixSplit, object.span,
+               "the matrix of " + label +
+                   " has shear, which one glTF node cannot hold: it is written as a chain of "
+                   "three nodes (translation and rotation, scale, rotation)");
+    }
+  }
+}
+
+// The JSON pointer of the first number in `j` that is not finite, which
+// nlohmann would write as null: a last check over every derived value (a
+// node of a chain, a light's intensity, the plane's square).
+std::optional<std::string> firstNonFinite(const Json& j, const std::string& at) {
+  if (j.is_number_float()) {
+    if (std::isfinite(j.get<double>())) return std::nullopt;
+    return at.empty() ? "/" : at;
+  }
+  if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      if (auto found = firstNonFinite(j[i], at + "/" + std::to_string(i))) return found;
+    }
+  } else if (j.is_object()) {
+    for (const auto& [key, value] : j.items()) {
+      if (auto found = firstNonFinite(value, at + "/" + key)) return found;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& conversion,
+                                   bool binary, DiagnosticList& out) {
+  const GltfWriteOptions& options = conversion.gltf;
+  std::size_t errorsBefore = out.errorCount();
+  float planeSize = planeHalfSize(scene);
+  reportLosses(scene, conversion.noLoss ? Severity::Error : Severity::Warning, planeSize, out);
+  if (out.errorCount() != errorsBefore) return std::nullopt;
+
+  Json doc;
+  Json asset = {{"version", "2.0"}, {"generator", options.generator}};
+  if (scene.outputFile) asset["extras"] = {{gltf::kExtrasKey, {{"outputFile", *scene.outputFile}}}};
+  doc["asset"] = std::move(asset);
+  std::set<std::string> extensions;
+  Json nodes = Json::array();
+  Json roots = Json::array();
+
+  // The camera.
+  {
+    // The options' field of view and aspect ratio where they give one, else
+    // the scene's View's.
+    double yfov = options.yfovDegrees.value_or(
+        scene.view ? scene.view->verticalFovDegrees : gltf::kDefaultYfovDegrees);
+    Json perspective = {{"yfov", yfov * std::numbers::pi / 180.0}, {"znear", gltf::kZnear}};
+    if (options.width > 0 && options.height > 0) {
+      perspective["aspectRatio"] = static_cast<double>(options.width) / options.height;
+    } else if (scene.view && scene.view->aspectRatio) {
+      perspective["aspectRatio"] = *scene.view->aspectRatio;
+    }
+    bool defaultView = !scene.view && !options.yfovDegrees && !perspective.contains("aspectRatio");
+    doc["cameras"] = Json::array(
+        {{{"name", "CAMERA"}, {"type", "perspective"}, {"perspective", std::move(perspective)}}});
+    std::size_t node =
+        addRecordNodes(nodes, roots, gltf::cameraNodeMatrix(scene.camera.matrix), "CAMERA");
+    nodes[node]["camera"] = 0;
+    Json sf = {{"record", "CAMERA"},
+               {"colour", vec3Json(scene.camera.colour)},
+               {"matrix", rowsJson(scene.camera.matrix)}};
+    if (scene.camera.lookAt) sf["lookAt"] = vec3Json(*scene.camera.lookAt);
+    // A scene without a View, written with the default field of view, reads
+    // back without one: the yfov is then the writer's, not the scene's.
+    if (defaultView) sf["view"] = false;
+    nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+  }
+
+  // The lights.
+  if (!scene.lights.empty()) {
+    Json lights = Json::array();
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+      const Light& light = scene.lights[i];
+      std::string name = "LIGHT " + std::to_string(i + 1);
+      gltf::PointLight point = gltf::pointLightFromColour(light.colour);
+      lights.push_back({{"name", name},
+                        {"type", "point"},
+                        {"color", vec3Json(point.color)},
+                        {"intensity", point.intensity}});
+      std::size_t node = addRecordNodes(nodes, roots, gltf::lightNodeMatrix(light.matrix), name);
+      nodes[node]["extensions"] = {{"KHR_lights_punctual", {{"light", i}}}};
+      nodes[node]["extras"] = {{gltf::kExtrasKey,
+                                {{"record", "LIGHT"},
+                                 {"colour", vec3Json(light.colour)},
+                                 {"matrix", rowsJson(light.matrix)}}}};
+    }
+    extensions.insert("KHR_lights_punctual");
+    doc["extensions"] = {{"KHR_lights_punctual", {{"lights", std::move(lights)}}}};
+  }
+
+  // The objects: one vertex set per kind, one material per distinct value,
+  // one mesh per kind and material.
+  BufferBuilder buffer;
+  std::map<ObjectKind, MeshAccessors> kindAccessors;
+  std::map<std::vector<std::uint64_t>, std::size_t> materialIndex;
+  std::map<std::pair<ObjectKind, std::size_t>, std::size_t> meshIndex;
+  Json materials = Json::array();
+  Json meshes = Json::array();
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& object = scene.objects[i];
+    auto accessors = kindAccessors.find(object.kind);
+    if (accessors == kindAccessors.end()) {
+      accessors =
+          kindAccessors
+              .emplace(object.kind,
+                       addMesh(buffer, primitiveMesh(object.kind, options.segments, planeSize)))
+              .first;
+    }
+    bool doubleSided = object.kind == ObjectKind::Plane;
+    auto [material, newMaterial] =
+        materialIndex.emplace(materialKey(object.material, doubleSided), materials.size());
+    if (newMaterial) {
+      materials.push_back(materialJson(object.material, object.kind, extensions,
+                                       static_cast<int>(materials.size()) + 1));
+    }
+    auto [mesh, newMesh] =
+        meshIndex.emplace(std::pair{object.kind, material->second}, meshes.size());
+    if (newMesh) {
+      const MeshAccessors& a = accessors->second;
+      meshes.push_back(
+          {{"name", std::string(objectKindName(object.kind))},
+           {"primitives",
+            Json::array({{{"attributes", {{"POSITION", a.position}, {"NORMAL", a.normal}}},
+                          {"indices", a.indices},
+                          {"material", material->second}}})}});
+    }
+    std::string name = std::string(objectKindName(object.kind)) + " " + std::to_string(i + 1);
+    std::size_t node = addRecordNodes(nodes, roots, object.matrix, name);
+    nodes[node]["mesh"] = mesh->second;
+    Json sf = {{"record", std::string(objectKindName(object.kind))},
+               {"matrix", rowsJson(object.matrix)}};
+    if (object.transforms) sf["transforms"] = transformsJson(*object.transforms);
+    nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+  }
+
+  if (!extensions.empty()) {
+    Json used = Json::array();
+    for (const std::string& name : extensions) used.push_back(name);
+    // extensionsUsed comes first among the top-level keys, after asset.
+    Json reordered;
+    for (auto& [key, value] : doc.items()) {
+      reordered[key] = value;
+      if (key == "asset") reordered["extensionsUsed"] = used;
+    }
+    doc = std::move(reordered);
+  }
+  doc["scene"] = 0;
+  doc["scenes"] = Json::array({{{"name", "scene"}, {"nodes", std::move(roots)}}});
+  doc["nodes"] = std::move(nodes);
+  if (!materials.empty()) doc["materials"] = std::move(materials);
+  if (!meshes.empty()) doc["meshes"] = std::move(meshes);
+
+  if (std::optional<std::string> where = firstNonFinite(doc, "")) {
+    out.error(DiagnosticCode::ValueNotFinite, scene.camera.span,
+              "the glTF's number at " + *where + " is not finite, so nothing is written")
+        .hint = "scale the scene so that its numbers stay within about 1e300";
+    return std::nullopt;
+  }
+  GltfFiles files;
+  std::string& bin = buffer.data();
+  if (!bin.empty()) {
+    doc["accessors"] = std::move(buffer.accessors());
+    doc["bufferViews"] = std::move(buffer.views());
+    Json b = {{"byteLength", bin.size()}};
+    if (!binary) {
+      if (options.externalBuffer.empty()) {
+        b["uri"] = "data:application/octet-stream;base64," + base64(bin);
+      } else {
+        b["uri"] = uriFromFileName(options.externalBuffer);
+        files.buffer = bin;
+      }
+    }
+    doc["buffers"] = Json::array({std::move(b)});
+  }
+  if (binary) {
+    files.main = encodeGlb(doc.dump(), bin);
+  } else {
+    appendPretty(files.main, doc, 0);
+    files.main += '\n';
+  }
+  return files;
+}
+
+}  // namespace scene

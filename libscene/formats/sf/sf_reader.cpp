@@ -1,0 +1,323 @@
+#include "libscene/formats/sf/sf_reader.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "libscene/text/reader_support.h"
+#include "libscene/text/text_lines.h"
+#include "scenefile/validation.h"
+
+namespace scene {
+
+namespace {
+
+constexpr std::array<std::string_view, 6> kRecordNames = {"CAMERA", "LIGHT",    "PLANE",
+                                                          "SPHERE", "CYLINDER", "CUBE"};
+constexpr std::string_view kExpectedRecord =
+    "a record name (CAMERA, LIGHT, PLANE, SPHERE, CYLINDER or CUBE)";
+
+enum class RecordKind { Camera, Light, Plane, Sphere, Cylinder, Cube, Unknown };
+
+RecordKind recordKindFromName(std::string_view name) {
+  for (std::size_t i = 0; i < kRecordNames.size(); ++i) {
+    if (kRecordNames[i] == name) return static_cast<RecordKind>(i);
+  }
+  return RecordKind::Unknown;
+}
+
+ObjectKind objectKindOf(RecordKind kind) {
+  switch (kind) {
+    case RecordKind::Plane:
+      return ObjectKind::Plane;
+    case RecordKind::Sphere:
+      return ObjectKind::Sphere;
+    case RecordKind::Cylinder:
+      return ObjectKind::Cylinder;
+    default:
+      return ObjectKind::Cube;
+  }
+}
+
+bool startsLikeNumber(std::string_view token) {
+  char c = token.front();
+  return (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-';
+}
+
+// Upper bound on the records a text can hold, for one allocation up front:
+// every record starts with a line that starts with a letter. Capped so that
+// a hostile count costs no more than a growing vector would.
+std::size_t estimateRecords(std::string_view text) {
+  if (text.empty()) return 0;
+  const unsigned char* bytes = reinterpret_cast<const unsigned char*>(text.data());
+  std::size_t count = static_cast<unsigned char>(bytes[0] - 'A') < 26u;
+  // Branch-free over pairs of bytes, in blocks whose 32-bit sums the
+  // compiler vectorises: a loop that branched on every byte took near a
+  // tenth of the whole parse.
+  constexpr std::size_t kBlock = 4096;
+  for (std::size_t i = 1; i < text.size();) {
+    std::size_t stop = std::min(text.size(), i + kBlock);
+    std::uint32_t inBlock = 0;
+    for (; i < stop; ++i) {
+      inBlock += (bytes[i - 1] == '\n') & (static_cast<unsigned char>(bytes[i] - 'A') < 26u);
+    }
+    count += inBlock;
+  }
+  return std::min<std::size_t>(count, std::size_t{1} << 22);
+}
+
+class SceneFileParser {
+ public:
+  SceneFileParser(std::string_view text, const ReadOptions& options, ReadResult& result)
+      : cursor_(text), options_(options), scene_(result.scene), out_(result.diagnostics) {
+    scene_.objects.reserve(std::min(estimateRecords(text), options.maxObjects));
+  }
+
+  void run() {
+    while (!out_.full() && !stopped_ && pull()) {
+      if (cursor_.blank() || reportComment(cursor_, out_)) continue;
+      if (reportInvalidByte(cursor_, out_)) {
+        // Most likely a damaged record name: its body follows, and reading
+        // it as a record of no kind keeps its lines from being misread.
+        resyncing_ = false;
+        readBody(RecordKind::Unknown, "damaged", cursor_.lineSpan(), true);
+        continue;
+      }
+      parseRecord();
+    }
+    finish();
+  }
+
+ private:
+  // The next line, or the one a truncated record left for the next record.
+  bool pull() {
+    if (pending_) {
+      pending_ = false;
+      return true;
+    }
+    return cursor_.next();
+  }
+
+  void parseRecord() {
+    std::string_view name = cursor_.token(0).text;
+    SourceSpan nameSpan = cursor_.tokenSpan(0);
+    RecordKind kind = recordKindFromName(name);
+    if (kind == RecordKind::Unknown) {
+      if (startsLikeNumber(name)) {
+        // Stray numbers: report once, then skip to the next named line.
+        if (!resyncing_) {
+          out_.error(DiagnosticCode::ExpectedRecordName, nameSpan,
+                     "expected " + std::string(kExpectedRecord) + ", found a number")
+              .hint = "each record is a name line, a colour line and four matrix rows";
+        }
+        resyncing_ = true;
+        return;
+      }
+      reportUnknownKeyword(cursor_, 0, kRecordNames, kExpectedRecord, out_);
+      // "sphere" is still a sphere for the rest of the checks.
+      if (auto guess = suggestKeyword(name, kRecordNames);
+          guess && guess->size() == name.size()) {
+        kind = recordKindFromName(*guess);
+      }
+    }
+    resyncing_ = false;
+    if (kind != RecordKind::Camera && kind != RecordKind::Unknown &&
+        ++objectsSeen_ > options_.maxObjects) {
+      reportTooManyObjects(nameSpan, options_.maxObjects, out_);
+      stopped_ = true;
+      return;
+    }
+    if (cursor_.tokenCount() > 1) {
+      out_.error(DiagnosticCode::TokenCount, cursor_.tokenSpan(1),
+                 "a record name stands alone on its line");
+    }
+    noteRecordOrder(kind, nameSpan);
+    // A CAMERA with a bad number or a missing line is still the file's
+    // camera: its own error says what is wrong, "no CAMERA record" would not.
+    if (kind == RecordKind::Camera) cameraNamed_ = true;
+    readBody(kind, name, nameSpan, false);
+  }
+
+  // The colour line and the four matrix rows of a record whose name line is
+  // the cursor's; `damaged` when that line was unreadable, and then a record
+  // cut short goes unreported (the damage is the error).
+  void readBody(RecordKind kind, std::string_view name, SourceSpan nameSpan, bool damaged) {
+    // Every value and span is written before it is used: a record lacking
+    // any of them is not added. Hence no clearing, which costs more per
+    // record than the writing.
+    std::array<double, 3> colour;
+    std::array<double, 16> rows;
+    spans_.record = nameSpan;
+    bool valuesOk = true;
+    bool blankReported = false;
+    int linesRead = 0;
+    while (linesRead < 5) {
+      if (!cursor_.nextLine()) {
+        if (!damaged) reportTruncated(name, nameSpan, linesRead, "the file ends");
+        return;
+      }
+      // The colour line, then the four matrix rows, their spans as written.
+      std::size_t count = linesRead == 0 ? 3 : 4;
+      double* values = linesRead == 0 ? colour.data() : rows.data() + 4 * (linesRead - 1);
+      SourceSpan* where =
+          linesRead == 0 ? spans_.colour.data() : spans_.matrix.data() + 4 * (linesRead - 1);
+      // Nearly every line is just its numbers, read in one pass; any other
+      // line is split into tokens and looked at with care.
+      if (readPlainNumbers(cursor_.line(), cursor_.readableFromLine(), cursor_.lineNumber(), count,
+                           values, where)) {
+        ++linesRead;
+        continue;
+      }
+      cursor_.tokenize();
+      if (cursor_.blank()) {
+        if (!blankReported) {
+          out_.error(DiagnosticCode::BlankLineInRecord, cursor_.endOfLine(),
+                     "blank line inside a " + std::string(name) + " record")
+              .notes.push_back({nameSpan, "the record starts here"});
+          blankReported = true;
+        }
+        continue;
+      }
+      if (reportComment(cursor_, out_)) continue;
+      if (recordKindFromName(cursor_.token(0).text) != RecordKind::Unknown) {
+        if (!damaged) reportTruncated(name, nameSpan, linesRead, "the next record starts");
+        pending_ = true;
+        return;
+      }
+      ++linesRead;
+      if (reportInvalidByte(cursor_, out_)) {
+        valuesOk = false;
+        continue;
+      }
+      static constexpr std::string_view kLineNames[] = {
+          "the colour line", "matrix row 1", "matrix row 2", "matrix row 3", "matrix row 4"};
+      if (readNumbers(cursor_, 0, count, values, kLineNames[linesRead - 1], out_)) {
+        for (std::size_t i = 0; i < count; ++i) where[i] = cursor_.tokenSpan(i);
+      } else {
+        valuesOk = false;
+      }
+    }
+    if (!valuesOk || kind == RecordKind::Unknown) return;
+
+    glm::dmat4 matrix;
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        // GLM is column-major (matrix[c][r]); the file is row by row.
+        double value = rows[r * 4 + c];
+        if (options_.sceneFile.transposedMatrices) {
+          matrix[r][c] = value;
+        } else {
+          matrix[c][r] = value;
+        }
+      }
+    }
+    // Spans are kept by matrix position, which a transposed file swaps.
+    if (options_.sceneFile.transposedMatrices) {
+      for (int r = 0; r < 4; ++r) {
+        for (int c = r + 1; c < 4; ++c) {
+          std::swap(spans_.matrix[r * 4 + c], spans_.matrix[c * 4 + r]);
+        }
+      }
+    }
+    glm::dvec3 rgb(colour[0], colour[1], colour[2]);
+    addRecord(kind, rgb, matrix, spans_);
+  }
+
+  void addRecord(RecordKind kind, const glm::dvec3& colour, const glm::dmat4& matrix,
+                 const RecordSpans& spans) {
+    switch (kind) {
+      case RecordKind::Camera:
+        checkMatrixLastRow(matrix, spans, out_);
+        checkCameraMatrix(matrix, spans.record, out_);
+        if (cameraSpan_) {
+          out_.error(DiagnosticCode::DuplicateCamera, spans.record,
+                     "a scene has exactly one CAMERA")
+              .notes.push_back({*cameraSpan_, "the first CAMERA is here"});
+          return;
+        }
+        cameraSpan_ = spans.record;
+        scene_.camera = Camera{matrix, colour, std::nullopt, spans.record};
+        return;
+      case RecordKind::Light:
+        checkColour(colour, RecordRole::Light, spans, out_);
+        checkMatrixLastRow(matrix, spans, out_);
+        scene_.lights.push_back(Light{matrix, colour, spans.record});
+        return;
+      default: {
+        ObjectKind objectKind = objectKindOf(kind);
+        checkColour(colour, RecordRole::Object, spans, out_);
+        checkMatrixLastRow(matrix, spans, out_);
+        checkObjectMatrix(matrix, objectKindName(objectKind), spans.record, out_);
+        Object object;
+        object.kind = objectKind;
+        object.material.colour = colour;
+        object.matrix = matrix;
+        object.span = spans.record;
+        scene_.objects.push_back(std::move(object));
+        return;
+      }
+    }
+  }
+
+  void noteRecordOrder(RecordKind kind, SourceSpan span) {
+    if (firstRecord_) return;
+    firstRecord_ = span;
+    firstIsCamera_ = kind == RecordKind::Camera;
+    firstName_ = std::string(cursor_.token(0).text.substr(0, 40));
+  }
+
+  void reportTruncated(std::string_view name, SourceSpan nameSpan, int linesRead,
+                       std::string_view why) {
+    out_.error(DiagnosticCode::TruncatedRecord, nameSpan,
+               std::string(name) + " record has " + std::to_string(linesRead + 1) +
+                   " of its 6 lines: " + std::string(why))
+        .hint = "a record is its name, a colour line and four matrix rows";
+  }
+
+  void finish() {
+    if (out_.full() || stopped_) return;
+    if (!firstRecord_) {
+      out_.error(DiagnosticCode::MissingCamera, SourceSpan{1, 1, 0},
+                 out_.hasErrors() ? "scene has no CAMERA record" : "file holds no records")
+          .hint = "a scene file starts with a CAMERA record, an instruction file with OUTPUT_FILE";
+      return;
+    }
+    if (!cameraSpan_ && !cameraNamed_) {
+      out_.error(DiagnosticCode::MissingCamera, *firstRecord_, "scene has no CAMERA record").hint =
+          "the first record of a scene file must be the CAMERA";
+    } else if (!firstIsCamera_ && cameraSpan_) {
+      out_.error(DiagnosticCode::CameraNotFirst, *firstRecord_,
+                 "the first record must be the CAMERA, not " + firstName_)
+          .notes.push_back({*cameraSpan_, "the CAMERA is here"});
+    }
+    if (!out_.hasErrors()) checkSceneLevel(scene_, out_);
+  }
+
+  LineCursor cursor_;
+  const ReadOptions& options_;
+  Scene& scene_;
+  DiagnosticList& out_;
+  bool pending_ = false;
+  bool resyncing_ = false;
+  // Objects and lights named so far, read or not, against maxObjects.
+  std::size_t objectsSeen_ = 0;
+  bool stopped_ = false;  // past maxObjects: nothing more is read
+  std::optional<SourceSpan> firstRecord_;
+  bool firstIsCamera_ = false;
+  std::string firstName_;
+  std::optional<SourceSpan> cameraSpan_;
+  bool cameraNamed_ = false;  // a CAMERA record was named, read cleanly or not
+  // Where the values of the record being read stand, for its diagnostics.
+  RecordSpans spans_;
+};
+
+}  // namespace
+
+ReadResult parseSceneFile(std::string_view text, std::string fileName, const ReadOptions& options) {
+  ReadResult result{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
+  SceneFileParser(text, options, result).run();
+  return result;
+}
+
+}  // namespace scene

@@ -1,0 +1,183 @@
+#include "libscene/text/reader_support.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+#include <vector>
+
+#include "libscene/text/number.h"
+
+namespace scene {
+
+namespace {
+
+std::string plural(std::size_t n, std::string_view word) {
+  return std::to_string(n) + " " + std::string(word) + (n == 1 ? "" : "s");
+}
+
+bool equalsIgnoringCase(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::toupper(static_cast<unsigned char>(x)) ==
+                  std::toupper(static_cast<unsigned char>(y));
+         });
+}
+
+// Optimal string alignment distance, case-insensitive, capped: words longer
+// than any keyword are not worth comparing.
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  if (a.size() > 64 || b.size() > 64) return 64;
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  auto up = [](char c) { return std::toupper(static_cast<unsigned char>(c)); };
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t cost = up(a[i - 1]) == up(b[j - 1]) ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && up(a[i - 1]) == up(b[j - 2]) && up(a[i - 2]) == up(b[j - 1])) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+}  // namespace
+
+bool reportInvalidByte(const LineCursor& cursor, DiagnosticList& out) {
+  auto column = cursor.invalidByteColumn();
+  if (!column) return false;
+  out.error(DiagnosticCode::InvalidByte, SourceSpan{cursor.lineNumber(), *column, 1},
+            "line contains a " + describeInvalidByte(cursor.invalidByte()))
+      .hint = "scene and instruction files are plain ASCII text";
+  return true;
+}
+
+bool reportComment(const LineCursor& cursor, DiagnosticList& out) {
+  if (!cursor.blank()) {
+    std::string_view first = cursor.token(0).text;
+    if (first.starts_with("#") || first.starts_with("//")) {
+      out.error(DiagnosticCode::CommentNotAllowed, cursor.tokenSpan(0),
+                "comments are not allowed: neither format has them")
+          .hint = "remove the line";
+      return true;
+    }
+  }
+  return false;
+}
+
+bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count, double* values,
+                 std::string_view what, DiagnosticList& out) {
+  std::size_t found = cursor.tokenCount() - first;
+  if (found != count) {
+    SourceSpan where = found < count ? cursor.endOfLine() : cursor.tokenSpan(first + count);
+    out.error(DiagnosticCode::TokenCount, where,
+              std::string(what) + " takes " + plural(count, "number") + ", found " +
+                  std::to_string(found));
+    return false;
+  }
+  bool ok = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Token& token = cursor.token(first + i);
+    ParsedNumber parsed = parseNumber(token.text);
+    SourceSpan span = token.span(cursor.lineNumber());
+    switch (parsed.status) {
+      case NumberStatus::Ok:
+        values[i] = parsed.value;
+        break;
+      case NumberStatus::Syntax: {
+        // Long tokens are cut in the message; the span still covers them.
+        std::string shown(token.text.substr(0, 40));
+        if (token.text.size() > 40) shown += "...";
+        Diagnostic& d =
+            out.error(DiagnosticCode::InvalidNumber, span, "'" + shown + "' is not a number");
+        d.hint = numberSyntaxReason(token.text);
+        ok = false;
+        break;
+      }
+      case NumberStatus::Overflow:
+        out.error(DiagnosticCode::NumberOutOfRange, span,
+                  "number is too large for a 64-bit double");
+        ok = false;
+        break;
+      case NumberStatus::Underflow:
+        out.error(DiagnosticCode::NumberOutOfRange, span,
+                  "number is too small for a 64-bit double: it would round to 0");
+        ok = false;
+        break;
+    }
+  }
+  return ok;
+}
+
+bool readPlainNumbers(std::string_view line, std::size_t readable, std::uint32_t lineNumber,
+                      std::size_t count, double* values, SourceSpan* spans) {
+  auto isBlank = [](char c) { return c == ' ' || c == '\t'; };
+  std::size_t i = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    while (i < line.size() && isBlank(line[i])) ++i;
+    if (i == line.size()) return false;
+    // Every byte must belong to a number or a blank, so a line read here
+    // holds no invalid byte, comment or keyword either.
+    std::size_t length = 0;
+    ParsedNumber parsed = parseLeadingNumber(line.substr(i), readable - i, length);
+    if (parsed.status != NumberStatus::Ok) return false;
+    values[k] = parsed.value;
+    spans[k] = SourceSpan{lineNumber, static_cast<std::uint32_t>(i + 1),
+                          static_cast<std::uint32_t>(length)};
+    i += length;
+  }
+  while (i < line.size() && isBlank(line[i])) ++i;
+  return i == line.size();
+}
+
+std::optional<std::string_view> keywordInOtherCase(std::string_view word,
+                                                   std::span<const std::string_view> candidates) {
+  for (std::string_view c : candidates) {
+    if (equalsIgnoringCase(word, c)) return c;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string_view> suggestKeyword(std::string_view word,
+                                               std::span<const std::string_view> candidates) {
+  if (auto same = keywordInOtherCase(word, candidates)) return same;
+  std::optional<std::string_view> best;
+  std::size_t bestDistance = std::max<std::size_t>(1, word.size() / 3) + 1;
+  for (std::string_view c : candidates) {
+    std::size_t d = editDistance(word, c);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+void reportUnknownKeyword(const LineCursor& cursor, std::size_t tokenIndex,
+                          std::span<const std::string_view> candidates, std::string_view expected,
+                          DiagnosticList& out) {
+  const Token& token = cursor.token(tokenIndex);
+  std::string shown(token.text.substr(0, 40));
+  if (token.text.size() > 40) shown += "...";
+  SourceSpan span = token.span(cursor.lineNumber());
+  Diagnostic& d = out.error(DiagnosticCode::UnknownKeyword, span,
+                            "unknown keyword '" + shown + "', expected " + std::string(expected));
+  if (auto suggestion = suggestKeyword(token.text, candidates)) {
+    d.hint = "did you mean '" + std::string(*suggestion) + "'?";
+    if (equalsIgnoringCase(token.text, *suggestion)) {
+      d.hint = "keywords are upper case: did you mean '" + std::string(*suggestion) + "'?";
+    }
+    d.fixIt = FixIt{span, std::string(*suggestion)};
+  }
+}
+
+Diagnostic& reportTooManyObjects(SourceSpan span, std::size_t maxObjects, DiagnosticList& out) {
+  Diagnostic& d = out.error(DiagnosticCode::TooManyObjects, span,
+                            "the file has more than " + std::to_string(maxObjects) +
+                                " objects and lights: reading stops here");
+  d.hint = "raise the limit with --max-objects if the scene is meant to be this large";
+  return d;
+}
+
+}  // namespace scene
