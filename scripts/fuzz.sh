@@ -22,15 +22,20 @@ shift || true
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 out=${FUZZ_OUT:-$build}
 jobs=${FUZZ_JOBS:-1}
-all_targets=(sf_reader instruction_reader gltf_reader pov_reader convert_roundtrip)
-targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=("${all_targets[@]}")
-
-declare -A dictionary=([sf_reader]=sf [instruction_reader]=instructions [gltf_reader]=gltf
-                       [pov_reader]=pov [convert_roundtrip]=instructions)
-
 if [[ ${FUZZ_SKIP_BUILD:-0} != 1 ]]; then
   CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSCENEFILE_FUZZ=ON >/dev/null
+fi
+# The targets and their dictionaries, as tests/fuzz/CMakeLists.txt made them
+# from the format registry: "TARGET DICTIONARY SEED..." per line.
+declare -A dictionary
+all_targets=()
+while read -r target dict _; do
+  all_targets+=("$target")
+  dictionary[$target]=$dict
+done <"$build/fuzz-seeds.txt"
+targets=("$@")
+[[ ${#targets[@]} -gt 0 ]] || targets=("${all_targets[@]}")
+if [[ ${FUZZ_SKIP_BUILD:-0} != 1 ]]; then
   cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
 fi
 
@@ -44,7 +49,7 @@ for target in "${targets[@]}"; do
   logs=$out/fuzz-logs/$target
   mkdir -p "$corpus" "$findings" "$logs"
   rm -f "$logs"/*.log
-  read -r -a seeds < <(grep "^$target " "$build/fuzz-seeds.txt" | cut -d' ' -f2-)
+  read -r -a seeds < <(grep "^$target " "$build/fuzz-seeds.txt" | cut -d' ' -f3-)
   existing=()
   for dir in "${seeds[@]}"; do [[ -d $root/$dir ]] && existing+=("$root/$dir"); done
   echo "fuzz $target: $jobs x ${seconds}s"

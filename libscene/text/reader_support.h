@@ -1,5 +1,6 @@
-// What the two readers share beyond tokens: numbers on a line, comments,
-// invalid bytes and unknown keywords, each reported the same way.
+// What the line-based readers (scene files and instruction files) share
+// beyond tokens: numbers on a line, comments, invalid bytes and unknown
+// keywords, each reported the same way.
 #pragma once
 
 #include <cstdint>
