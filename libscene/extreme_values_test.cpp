@@ -31,23 +31,9 @@ namespace {
 constexpr double kLargest = std::numeric_limits<double>::max();
 constexpr double kSmallest = std::numeric_limits<double>::denorm_min();
 
-constexpr Format kFormats[] = {Format::SceneFile, Format::InstructionFile,
-                                     Format::Gltf, Format::Glb, Format::Pov};
-
-const char* nameFor(Format format) {
-  switch (format) {
-    case Format::SceneFile:
-      return "limits.sf";
-    case Format::InstructionFile:
-      return "limits.txt";
-    case Format::Gltf:
-      return "limits.gltf";
-    case Format::Glb:
-      return "limits.glb";
-    case Format::Pov:
-      return "limits.pov";
-  }
-  return "limits";
+// A file name in the format's first extension: "limits.gltf".
+std::string nameFor(Format format) {
+  return "limits" + std::string(formatInfo(format).extensions[0]);
 }
 
 std::string firstError(const DiagnosticList& list) {
@@ -156,7 +142,8 @@ struct Tally {
 // exact, the rest within 1e-12 per column, and writes itself again.
 void checkSceneFileScene(const Scene& scene, int index, std::map<Format, Tally>& tally) {
   const std::string sf = writeSceneFile(scene);
-  for (Format format : kFormats) {
+  for (const FormatInfo& row : formats()) {
+    Format format = row.format;
     Through t = through(scene, format, approximate());
     Tally& counts = tally[format];
     if (!t.written) {
@@ -266,7 +253,8 @@ TEST(ExtremeValues, RandomScenesAtTheLimitsOfTheDoublesSurviveEveryWriter) {
             << instructionScenes << " of them also as instruction scenes\n";
   for (const auto& [what, count] : limitNumbers)
     std::cout << "  " << count << " numbers " << what << "\n";
-  for (Format format : kFormats) {
+  for (const FormatInfo& row : formats()) {
+    Format format = row.format;
     const Tally& s = fromSceneFiles[format];
     const Tally& t = fromInstructions[format];
     std::cout << "  " << nameFor(format) << ": from .sf " << s.written << " written (" << s.exact
@@ -327,7 +315,8 @@ TEST(ExtremeValues, CameraAxesOfAnyLengthGiveFiniteVectors) {
     scene.camera.lookAt.reset();
     const std::string sf = writeSceneFile(scene);
     ASSERT_TRUE(parseScene(sf, "axes.sf").ok()) << sf;
-    for (Format format : kFormats) {
+    for (const FormatInfo& row : formats()) {
+      Format format = row.format;
       Through t = through(scene, format, approximate());
       ASSERT_TRUE(t.written) << exponent << " " << nameFor(format) << ": "
                              << firstError(t.diagnostics);

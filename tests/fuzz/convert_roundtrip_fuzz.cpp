@@ -20,20 +20,9 @@ namespace {
 
 using scene::Format;
 
-const char* nameFor(Format format) {
-  switch (format) {
-    case Format::SceneFile:
-      return "out.sf";
-    case Format::InstructionFile:
-      return "out.txt";
-    case Format::Gltf:
-      return "out.gltf";
-    case Format::Glb:
-      return "out.glb";
-    case Format::Pov:
-      return "out.pov";
-  }
-  return "out";
+// A file name in the format's first extension: "out.gltf".
+std::string nameFor(Format format) {
+  return "out" + std::string(scene::formatInfo(format).extensions[0]);
 }
 
 // Converts and reads back; nothing when the conversion refuses (a loss it
@@ -66,8 +55,6 @@ std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, Format
   return back;
 }
 
-constexpr Format kEveryFormat[] = {Format::SceneFile, Format::InstructionFile,
-                                         Format::Gltf, Format::Glb, Format::Pov};
 
 // The scene with every position (the eye, the lights, the objects'
 // translations) scaled by the power of two that takes the largest one to
@@ -112,11 +99,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Step 0: the input straight into every format, and at the edge of the
   // doubles (with --approximate, so that shear and roll are written too).
   std::string text;
-  for (Format format : kEveryFormat) throughFormat(read.scene, format, text);
+  for (const scene::FormatInfo& row : scene::formats()) {
+    throughFormat(read.scene, row.format, text);
+  }
   if (std::optional<scene::Scene> edge = atTheEdge(read.scene)) {
     scene::ConversionOptions approximate;
     approximate.instructions.approximate = true;
-    for (Format format : kEveryFormat) throughFormat(*edge, format, text, approximate);
+    for (const scene::FormatInfo& row : scene::formats()) {
+      throughFormat(*edge, row.format, text, approximate);
+    }
   }
 
   // Step 1: as an instruction file; writing that file again is a fixed point,
@@ -127,7 +118,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!twice || again != text) {
       fuzz::propertyFailed("instruction file written twice differs", text + "\n---\n" + again);
     }
-    for (Format format : kEveryFormat) throughFormat(back->scene, format, again);
+    for (const scene::FormatInfo& row : scene::formats()) {
+      throughFormat(back->scene, row.format, again);
+    }
   }
 
   // Step 2: as a scene file, then that scene through every format.
