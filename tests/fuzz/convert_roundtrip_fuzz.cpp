@@ -51,7 +51,7 @@ std::optional<scene::ReadResult> throughFormat(const scene::Scene& scene, Format
     fuzz::propertyFailed("sfconvert wrote a file it cannot read back",
                          std::string(nameFor(format)) + ": " + first + "\n" + text);
   }
-  fuzz::requireFinite(back.scene, nameFor(format), text);
+  fuzz::requireFinite(back.scene, nameFor(format).c_str(), text);
   return back;
 }
 
