@@ -28,110 +28,27 @@ struct SourceSpan {
   friend bool operator==(const SourceSpan&, const SourceSpan&) = default;
 };
 
-// Stable codes: the names in docs/DIAGNOSTICS.md. Append new codes; never
-// rename or reuse one, since users filter on them.
+/// A stable code for each kind of problem, printed by its name (codeName).
+/// The codes are listed once, in diagnostic_codes.def, and documented in
+/// docs/DIAGNOSTICS.md; new ones are appended there, so that no value
+/// changes, and a renamed one keeps its old name as an alias.
 enum class DiagnosticCode : std::uint16_t {
-  // Text and numbers.
-  InvalidByte,
-  InvalidNumber,
-  NumberOutOfRange,
-  CommentNotAllowed,
-  UnknownKeyword,
-  TokenCount,
-  UnknownFormat,
-  // Scene file structure.
-  MissingCamera,
-  CameraNotFirst,
-  DuplicateCamera,
-  TruncatedRecord,
-  BlankLineInRecord,
-  ExpectedRecordName,
-  // Values.
-  MatrixLastRow,
-  MatrixSingular,
-  MatrixIllConditioned,
-  NegativeColour,
-  ColourAboveOne,
-  CameraDegenerate,
-  CameraScaled,
-  NoLight,
-  ValueOutOfRange,
-  RiBelowOne,
-  ZeroScale,
-  // Instruction file structure.
-  MissingOutputFile,
-  OutputFileName,
-  OutputFileEscapes,
-  UnexpectedLine,
-  UnclosedBlock,
-  MismatchedEnd,
-  UnexpectedEnd,
-  DuplicateProperty,
-  MissingProperty,
-  DuplicateSection,
-  UnknownObjectKind,
-  CameraLookAtLocation,
-  // Conversion.
-  LossMaterial,
-  LossCameraRoll,
-  MatrixNotExpressible,
-  MatrixApproximated,
-  CameraRollApproximated,
-  DroppedOutputFile,
-  IgnoredLightMatrix,
-  TooManyErrors,
-  // glTF: writing.
-  PlaneMadeFinite,
-  LightFalloff,
-  GltfValueClamped,
-  GltfExtrasOnly,
-  GltfMatrixSplit,
-  // glTF: reading.
-  GltfInvalidJson,
-  GltfInvalidGlb,
-  GltfInvalid,
-  GltfIndexOutOfRange,
-  GltfBadAccessor,
-  GltfExternalFile,
-  GltfNodeCycle,
-  GltfUnsupportedExtension,
-  GltfTooLarge,
-  GltfMeshNotPrimitive,
-  GltfMeshFit,
-  GltfLightApproximated,
-  GltfExtraCamera,
-  GltfNoCamera,
-  CameraFov,
-  GltfIgnored,
-  GltfExtrasStale,
-  // POV-Ray: writing.
-  LossPov,
-  // POV-Ray: reading.
-  PovSyntax,
-  PovUnsupported,
-  PovRefused,
-  PovLimit,
-  PovUnknownIdentifier,
-  PovIgnored,
-  PovLoss,
-  PovDegenerate,
-  // Limits on what one input may cost (ReadOptions).
-  FileTooLarge,
-  TooManyObjects,
-  // Numbers: a value that is not finite once evaluated, composed or converted.
-  ValueNotFinite,
-  // glTF: more objects than ReadOptions::maxGltfNodes.
-  GltfTooManyNodes,
-  // OUTPUT_FILE: no image format sfrender writes; a loop of symbolic links.
-  OutputFileFormat,
-  OutputFileLinkLoop,
+#define SCENEFILE_DIAGNOSTIC(enumerator, name) enumerator,
+#include "scenefile/diagnostic_codes.def"
 };
 
-// Every code, in declaration order: for documentation and coverage tests.
+/// Every code, in declaration order: for documentation and coverage tests.
 const std::vector<DiagnosticCode>& allDiagnosticCodes();
 
-// The stable kebab-case name of a code, as printed in brackets.
+/// The stable kebab-case name of a code, as printed in brackets; "unknown"
+/// for a value that is no code.
 std::string_view codeName(DiagnosticCode code);
+
+/// The code with the name `name` as codeName prints it, or as it was before
+/// a rename (docs/DIAGNOSTICS.md, "Renamed codes"), so that a filter written
+/// for an older version still finds it; nothing for any other text. Exact
+/// and case-sensitive.
+std::optional<DiagnosticCode> diagnosticCodeFromName(std::string_view name);
 
 // A replacement the user (or an editor) can apply to fix the problem.
 struct FixIt {

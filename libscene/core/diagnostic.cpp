@@ -24,88 +24,19 @@ struct CodeEntry {
   std::string_view name;
 };
 
+// In the enum's order, so that a code's entry is at its value.
 constexpr std::array kCodes = {
-    CodeEntry{DiagnosticCode::InvalidByte, "invalid-byte"},
-    CodeEntry{DiagnosticCode::InvalidNumber, "invalid-number"},
-    CodeEntry{DiagnosticCode::NumberOutOfRange, "number-out-of-range"},
-    CodeEntry{DiagnosticCode::CommentNotAllowed, "comment-not-allowed"},
-    CodeEntry{DiagnosticCode::UnknownKeyword, "unknown-keyword"},
-    CodeEntry{DiagnosticCode::TokenCount, "token-count"},
-    CodeEntry{DiagnosticCode::UnknownFormat, "unknown-format"},
-    CodeEntry{DiagnosticCode::MissingCamera, "missing-camera"},
-    CodeEntry{DiagnosticCode::CameraNotFirst, "camera-not-first"},
-    CodeEntry{DiagnosticCode::DuplicateCamera, "duplicate-camera"},
-    CodeEntry{DiagnosticCode::TruncatedRecord, "truncated-record"},
-    CodeEntry{DiagnosticCode::BlankLineInRecord, "blank-line-in-record"},
-    CodeEntry{DiagnosticCode::ExpectedRecordName, "expected-record-name"},
-    CodeEntry{DiagnosticCode::MatrixLastRow, "matrix-last-row"},
-    CodeEntry{DiagnosticCode::MatrixSingular, "matrix-singular"},
-    CodeEntry{DiagnosticCode::MatrixIllConditioned, "matrix-ill-conditioned"},
-    CodeEntry{DiagnosticCode::NegativeColour, "negative-colour"},
-    CodeEntry{DiagnosticCode::ColourAboveOne, "colour-above-one"},
-    CodeEntry{DiagnosticCode::CameraDegenerate, "camera-degenerate"},
-    CodeEntry{DiagnosticCode::CameraScaled, "camera-scaled"},
-    CodeEntry{DiagnosticCode::NoLight, "no-light"},
-    CodeEntry{DiagnosticCode::ValueOutOfRange, "value-out-of-range"},
-    CodeEntry{DiagnosticCode::RiBelowOne, "ri-below-one"},
-    CodeEntry{DiagnosticCode::ZeroScale, "zero-scale"},
-    CodeEntry{DiagnosticCode::MissingOutputFile, "missing-output-file"},
-    CodeEntry{DiagnosticCode::OutputFileName, "output-file-name"},
-    CodeEntry{DiagnosticCode::OutputFileEscapes, "output-file-escapes"},
-    CodeEntry{DiagnosticCode::UnexpectedLine, "unexpected-line"},
-    CodeEntry{DiagnosticCode::UnclosedBlock, "unclosed-block"},
-    CodeEntry{DiagnosticCode::MismatchedEnd, "mismatched-end"},
-    CodeEntry{DiagnosticCode::UnexpectedEnd, "unexpected-end"},
-    CodeEntry{DiagnosticCode::DuplicateProperty, "duplicate-property"},
-    CodeEntry{DiagnosticCode::MissingProperty, "missing-property"},
-    CodeEntry{DiagnosticCode::DuplicateSection, "duplicate-section"},
-    CodeEntry{DiagnosticCode::UnknownObjectKind, "unknown-object-kind"},
-    CodeEntry{DiagnosticCode::CameraLookAtLocation, "camera-look-at-location"},
-    CodeEntry{DiagnosticCode::LossMaterial, "loss-material"},
-    CodeEntry{DiagnosticCode::LossCameraRoll, "loss-camera-roll"},
-    CodeEntry{DiagnosticCode::MatrixNotExpressible, "matrix-not-expressible"},
-    CodeEntry{DiagnosticCode::MatrixApproximated, "matrix-approximated"},
-    CodeEntry{DiagnosticCode::CameraRollApproximated, "camera-roll-approximated"},
-    CodeEntry{DiagnosticCode::DroppedOutputFile, "dropped-output-file"},
-    CodeEntry{DiagnosticCode::IgnoredLightMatrix, "ignored-light-matrix"},
-    CodeEntry{DiagnosticCode::TooManyErrors, "too-many-errors"},
-    CodeEntry{DiagnosticCode::PlaneMadeFinite, "plane-made-finite"},
-    CodeEntry{DiagnosticCode::LightFalloff, "light-falloff"},
-    CodeEntry{DiagnosticCode::GltfValueClamped, "gltf-value-clamped"},
-    CodeEntry{DiagnosticCode::GltfExtrasOnly, "gltf-extras-only"},
-    CodeEntry{DiagnosticCode::GltfMatrixSplit, "gltf-matrix-split"},
-    CodeEntry{DiagnosticCode::GltfInvalidJson, "gltf-invalid-json"},
-    CodeEntry{DiagnosticCode::GltfInvalidGlb, "gltf-invalid-glb"},
-    CodeEntry{DiagnosticCode::GltfInvalid, "gltf-invalid"},
-    CodeEntry{DiagnosticCode::GltfIndexOutOfRange, "gltf-index-out-of-range"},
-    CodeEntry{DiagnosticCode::GltfBadAccessor, "gltf-bad-accessor"},
-    CodeEntry{DiagnosticCode::GltfExternalFile, "gltf-external-file"},
-    CodeEntry{DiagnosticCode::GltfNodeCycle, "gltf-node-cycle"},
-    CodeEntry{DiagnosticCode::GltfUnsupportedExtension, "gltf-unsupported-extension"},
-    CodeEntry{DiagnosticCode::GltfTooLarge, "gltf-too-large"},
-    CodeEntry{DiagnosticCode::GltfMeshNotPrimitive, "gltf-mesh-not-primitive"},
-    CodeEntry{DiagnosticCode::GltfMeshFit, "gltf-mesh-fit"},
-    CodeEntry{DiagnosticCode::GltfLightApproximated, "gltf-light-approximated"},
-    CodeEntry{DiagnosticCode::GltfExtraCamera, "gltf-extra-camera"},
-    CodeEntry{DiagnosticCode::GltfNoCamera, "gltf-no-camera"},
-    CodeEntry{DiagnosticCode::CameraFov, "camera-fov"},
-    CodeEntry{DiagnosticCode::GltfIgnored, "gltf-ignored"},
-    CodeEntry{DiagnosticCode::GltfExtrasStale, "gltf-extras-stale"},
-    CodeEntry{DiagnosticCode::LossPov, "loss-pov"},
-    CodeEntry{DiagnosticCode::PovSyntax, "pov-syntax"},
-    CodeEntry{DiagnosticCode::PovUnsupported, "pov-unsupported"},
-    CodeEntry{DiagnosticCode::PovRefused, "pov-refused"},
-    CodeEntry{DiagnosticCode::PovLimit, "pov-limit"},
-    CodeEntry{DiagnosticCode::PovUnknownIdentifier, "pov-unknown-identifier"},
-    CodeEntry{DiagnosticCode::PovIgnored, "pov-ignored"},
-    CodeEntry{DiagnosticCode::PovLoss, "pov-loss"},
-    CodeEntry{DiagnosticCode::PovDegenerate, "pov-degenerate"},
-    CodeEntry{DiagnosticCode::FileTooLarge, "file-too-large"},
-    CodeEntry{DiagnosticCode::TooManyObjects, "too-many-objects"},
-    CodeEntry{DiagnosticCode::ValueNotFinite, "value-not-finite"},
-    CodeEntry{DiagnosticCode::GltfTooManyNodes, "gltf-too-many-nodes"},
-    CodeEntry{DiagnosticCode::OutputFileFormat, "output-file-format"},
-    CodeEntry{DiagnosticCode::OutputFileLinkLoop, "output-file-link-loop"},
+#define SCENEFILE_DIAGNOSTIC(enumerator, name) CodeEntry{DiagnosticCode::enumerator, name},
+#include "scenefile/diagnostic_codes.def"
+};
+
+// The names codes had before they were renamed; diagnosticCodeFromName
+// reads them, codeName never prints them.
+constexpr CodeEntry kAliases[] = {
+#define SCENEFILE_DIAGNOSTIC(enumerator, name)
+#define SCENEFILE_DIAGNOSTIC_ALIAS(enumerator, oldName) \
+  CodeEntry{DiagnosticCode::enumerator, oldName},
+#include "scenefile/diagnostic_codes.def"
 };
 
 }  // namespace
@@ -120,10 +51,20 @@ const std::vector<DiagnosticCode>& allDiagnosticCodes() {
 }
 
 std::string_view codeName(DiagnosticCode code) {
+  auto index = static_cast<std::size_t>(code);
+  // A value cast from an integer may be no code at all.
+  if (index >= kCodes.size()) return "unknown";
+  return kCodes[index].name;
+}
+
+std::optional<DiagnosticCode> diagnosticCodeFromName(std::string_view name) {
   for (const CodeEntry& entry : kCodes) {
-    if (entry.code == code) return entry.name;
+    if (entry.name == name) return entry.code;
   }
-  return "unknown";
+  for (const CodeEntry& entry : kAliases) {
+    if (entry.name == name) return entry.code;
+  }
+  return std::nullopt;
 }
 
 Diagnostic& DiagnosticList::report(Severity severity, DiagnosticCode code, SourceSpan span,

@@ -4,9 +4,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace scene {
 namespace {
@@ -24,15 +27,158 @@ TEST(DiagnosticCodes, NamesAreUniqueKebabCase) {
     std::string_view name = codeName(code);
     EXPECT_TRUE(names.insert(name).second) << name;
     EXPECT_NE(name, "unknown");
+    EXPECT_FALSE(name.empty());
     for (char c : name) EXPECT_TRUE((c >= 'a' && c <= 'z') || c == '-') << name;
   }
 }
 
-TEST(DiagnosticCodes, EveryCodeIsDocumented) {
-  std::string table = readText(std::filesystem::path(SCENE_DOCS_DIR) / "DIAGNOSTICS.md");
+// The values are what the enum declares, in order, with nothing left out:
+// codeName finds each code at its value.
+TEST(DiagnosticCodes, AllCodesAreTheEnumInOrder) {
+  const std::vector<DiagnosticCode>& codes = allDiagnosticCodes();
+  for (std::size_t i = 0; i < codes.size(); ++i) {
+    EXPECT_EQ(static_cast<std::size_t>(codes[i]), i) << codeName(codes[i]);
+  }
+  EXPECT_EQ(codes.back(), DiagnosticCode::OutputFileLinkLoop);
+  EXPECT_EQ(codeName(static_cast<DiagnosticCode>(codes.size())), "unknown");
+}
+
+TEST(DiagnosticCodes, FromNameReadsEveryNameAndNothingElse) {
   for (DiagnosticCode code : allDiagnosticCodes()) {
-    std::string row = "| `" + std::string(codeName(code)) + "` |";
-    EXPECT_NE(table.find(row), std::string::npos) << codeName(code) << " is not in the table";
+    EXPECT_EQ(diagnosticCodeFromName(codeName(code)), code) << codeName(code);
+  }
+  EXPECT_EQ(diagnosticCodeFromName("unknown"), std::nullopt);
+  EXPECT_EQ(diagnosticCodeFromName(""), std::nullopt);
+  EXPECT_EQ(diagnosticCodeFromName("Invalid-Number"), std::nullopt);
+  EXPECT_EQ(diagnosticCodeFromName("invalid-number "), std::nullopt);
+}
+
+// The names codes had before they were renamed, from the same list.
+struct Alias {
+  DiagnosticCode code;
+  std::string_view oldName;
+};
+const std::vector<Alias>& aliases() {
+  static const std::vector<Alias> list = {
+#define SCENEFILE_DIAGNOSTIC(enumerator, name)
+#define SCENEFILE_DIAGNOSTIC_ALIAS(enumerator, oldName) Alias{DiagnosticCode::enumerator, oldName},
+#include "scenefile/diagnostic_codes.def"
+  };
+  return list;
+}
+
+TEST(DiagnosticCodes, OldNamesStillFindTheirCode) {
+  EXPECT_EQ(diagnosticCodeFromName("loss-pov"), DiagnosticCode::LossPov);
+  EXPECT_EQ(codeName(DiagnosticCode::LossPov), "pov-write-loss");
+  EXPECT_EQ(diagnosticCodeFromName("pov-loss"), DiagnosticCode::PovLoss);
+  std::set<std::string_view> oldNames;
+  for (const Alias& alias : aliases()) {
+    EXPECT_EQ(diagnosticCodeFromName(alias.oldName), alias.code) << alias.oldName;
+    EXPECT_NE(codeName(alias.code), alias.oldName);
+    EXPECT_TRUE(oldNames.insert(alias.oldName).second) << alias.oldName;
+    // An old name that is some code's name now would find that code instead.
+    for (DiagnosticCode code : allDiagnosticCodes()) {
+      EXPECT_NE(codeName(code), alias.oldName) << alias.oldName << " is in use again";
+    }
+  }
+}
+
+// The rows of the table under `## heading` in a Markdown text: the cells of
+// each line that starts with '|', header and rule left out.
+std::vector<std::vector<std::string>> tableRows(const std::string& text,
+                                                const std::string& heading) {
+  std::vector<std::vector<std::string>> rows;
+  std::size_t at = text.find("\n## " + heading + "\n");
+  if (at == std::string::npos) return rows;
+  std::istringstream lines(text.substr(at + 1));
+  std::string line;
+  std::getline(lines, line);  // the heading itself
+  bool header = true;
+  while (std::getline(lines, line) && !line.starts_with("## ")) {
+    if (!line.starts_with("|")) continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    if (line.starts_with("|---")) continue;
+    std::vector<std::string> cells;
+    std::size_t start = 1;
+    for (std::size_t bar; (bar = line.find('|', start)) != std::string::npos; start = bar + 1) {
+      std::string cell = line.substr(start, bar - start);
+      cell.erase(0, cell.find_first_not_of(' '));
+      cell.erase(cell.find_last_not_of(' ') + 1);
+      cells.push_back(cell);
+    }
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// `name` in backquotes, as the tables write a code, or "" for another cell.
+std::string quotedCode(const std::string& cell) {
+  if (cell.size() < 3 || cell.front() != '`' || cell.back() != '`') return "";
+  return cell.substr(1, cell.size() - 2);
+}
+
+std::string diagnosticsDoc() {
+  return readText(std::filesystem::path(SCENE_DOCS_DIR) / "DIAGNOSTICS.md");
+}
+
+// The table in docs/DIAGNOSTICS.md and the list in diagnostic_codes.def
+// name the same codes, each once.
+TEST(DiagnosticCodes, TheTableListsEveryCodeOnceAndNothingElse) {
+  std::vector<std::vector<std::string>> rows = tableRows(diagnosticsDoc(), "Codes");
+  ASSERT_FALSE(rows.empty()) << "no table under '## Codes' in DIAGNOSTICS.md";
+  std::map<std::string, int> rowsOf;
+  for (const std::vector<std::string>& row : rows) {
+    ASSERT_FALSE(row.empty());
+    std::string name = quotedCode(row[0]);
+    EXPECT_FALSE(name.empty()) << "a row of the table names no code: " << row[0];
+    ++rowsOf[name];
+    EXPECT_TRUE(diagnosticCodeFromName(name).has_value())
+        << "the table documents '" << name << "', which is no code";
+    if (std::optional<DiagnosticCode> code = diagnosticCodeFromName(name)) {
+      EXPECT_EQ(codeName(*code), name) << "the table documents the old name '" << name << "'";
+    }
+  }
+  for (DiagnosticCode code : allDiagnosticCodes()) {
+    std::string name(codeName(code));
+    EXPECT_EQ(rowsOf[name], 1) << name << " has " << rowsOf[name] << " rows in the table";
+  }
+}
+
+// Each old name has its row in "Renamed codes", pointing at the code's name.
+TEST(DiagnosticCodes, TheRenamedTableListsEveryOldName) {
+  std::map<std::string, std::string> renamed;
+  for (const std::vector<std::string>& row : tableRows(diagnosticsDoc(), "Renamed codes")) {
+    ASSERT_GE(row.size(), 3u);
+    std::string oldName = quotedCode(row[0]);
+    EXPECT_TRUE(renamed.emplace(oldName, quotedCode(row[1])).second) << oldName << " twice";
+    EXPECT_EQ(row[2], "0.1.0") << oldName;
+  }
+  EXPECT_EQ(renamed.size(), aliases().size());
+  for (const Alias& alias : aliases()) {
+    auto row = renamed.find(std::string(alias.oldName));
+    ASSERT_NE(row, renamed.end()) << alias.oldName << " is not in the renamed codes table";
+    EXPECT_EQ(row->second, codeName(alias.code)) << alias.oldName;
+  }
+}
+
+// Every [`name`] the documents cite is a code's name now, not an old one.
+TEST(DiagnosticCodes, TheDocsCiteOnlyCurrentNames) {
+  for (const auto& entry : std::filesystem::directory_iterator(SCENE_DOCS_DIR)) {
+    if (entry.path().extension() != ".md") continue;
+    std::string text = readText(entry.path());
+    for (std::size_t at = text.find("[`"); at != std::string::npos; at = text.find("[`", at + 2)) {
+      // [`x`](link) is a link with code for its text, not a citation.
+      std::size_t end = text.find('`', at + 2);
+      if (end == std::string::npos) break;
+      if (text.compare(end, 2, "`]") != 0 || text.compare(end, 3, "`](") == 0) continue;
+      std::string name = text.substr(at + 2, end - at - 2);
+      std::optional<DiagnosticCode> code = diagnosticCodeFromName(name);
+      EXPECT_TRUE(code && codeName(*code) == name)
+          << entry.path().filename().string() << " cites [`" << name << "`], no current code";
+    }
   }
 }
 

@@ -148,7 +148,7 @@ std::vector<ShadedCase> cases() {
       {"mirrors", mirrors()},
       {"thirty objects with shear and shadows", crowd()},
       // Glass: POV-Ray's transmit is not our transparency (reported as
-      // loss-pov); shown for information.
+      // pov-write-loss); shown for information.
       {"the default scene (glass and a mirror)", render::defaultScene(), -1.0, -1.0},
   };
 }
