@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "renderer/saturating.h"
+
 namespace render {
 
 namespace {
@@ -32,6 +34,13 @@ float roundUp(double v) {
 
 }  // namespace
 
+std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
+  // The vectors of the constructor below, each sized or reserved once.
+  std::uint64_t perBox =
+      kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(glm::dvec3);
+  return saturatingProduct(boxes, perBox);
+}
+
 Bvh::Bvh(const std::vector<Bounds>& boxes) {
   if (boxes.empty()) return;
   items_.resize(boxes.size());
@@ -40,7 +49,7 @@ Bvh::Bvh(const std::vector<Bounds>& boxes) {
     items_[i] = i;
     centres[i] = boxes[i].centre();
   }
-  nodes_.reserve(2 * boxes.size());
+  nodes_.reserve(kNodesPerBox * boxes.size());
   build(boxes, centres, 0, static_cast<std::uint32_t>(boxes.size()), 0);
 }
 

@@ -32,10 +32,20 @@ struct BvhNode {
 class Bvh {
  public:
   static constexpr int kStackSize = 128;
+  /// Nodes the build reserves for each box, so that the node array never
+  /// grows (and never holds twice its size while it moves): a binary tree
+  /// whose leaves hold at least one box each has at most 2n - 1 nodes.
+  static constexpr std::uint64_t kNodesPerBox = 2;
 
   Bvh() = default;
   // Builds over the boxes; items are indices into `boxes`.
   explicit Bvh(const std::vector<Bounds>& boxes);
+
+  /// The most bytes the build over `boxes` boxes holds at once: the nodes
+  /// as reserved (kNodesPerBox), the items, and the centres it splits by,
+  /// which it frees when done. The boxes themselves are the caller's.
+  /// Saturates: a hostile count gives UINT64_MAX, never a wrapped figure.
+  static std::uint64_t bytesFor(std::uint64_t boxes);
 
   bool empty() const { return nodes_.empty(); }
   const std::vector<BvhNode>& nodes() const { return nodes_; }

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <thread>
 
+#include "renderer/saturating.h"
 #include "scenefile/matrix.h"
 
 namespace render {
@@ -147,13 +148,20 @@ glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed
   return {i + ((index % columns) + u) / columns, j + ((index / columns) + v) / rows};
 }
 
+std::uint64_t Image::bytesFor(int width, int height) {
+  std::uint64_t pixels = saturatingProduct(static_cast<std::uint64_t>(width > 0 ? width : 0),
+                                           static_cast<std::uint64_t>(height > 0 ? height : 0));
+  return saturatingProduct(pixels, kChannels * sizeof(float));
+}
+
 Image renderImage(const RenderScene& scene, const RenderSettings& settings,
                   RenderStatistics* statistics, const ProgressCallback& progress) {
   auto start = std::chrono::steady_clock::now();
   Image image;
   image.width = settings.width;
   image.height = settings.height;
-  image.rgb.assign(static_cast<std::size_t>(settings.width) * settings.height * 3, 0.0f);
+  image.rgb.assign(static_cast<std::size_t>(settings.width) * settings.height * Image::kChannels,
+                   0.0f);
   PinholeCamera camera(scene.camera(), settings);
   Tracer tracer(scene, settings.maxDepth);
   // Not a number, or below 0, allows no error.

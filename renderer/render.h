@@ -55,13 +55,20 @@ class PinholeCamera {
 
 // Linear RGB, row by row from the top, three floats a pixel.
 struct Image {
+  /// Floats a pixel in `rgb`: red, green, blue.
+  static constexpr std::size_t kChannels = 3;
+
   int width = 0;
   int height = 0;
   std::vector<float> rgb;
   glm::vec3 pixel(int x, int y) const {
-    const float* p = &rgb[3 * (static_cast<std::size_t>(y) * width + x)];
+    const float* p = &rgb[kChannels * (static_cast<std::size_t>(y) * width + x)];
     return {p[0], p[1], p[2]};
   }
+
+  /// The bytes of `rgb` for an image of `width` x `height` pixels, as
+  /// renderImage allocates it; a side below 1 counts as 0. Saturates.
+  static std::uint64_t bytesFor(int width, int height);
 };
 
 struct RenderStatistics {

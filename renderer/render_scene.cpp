@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 
 #include "renderer/float_error.h"
+#include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
 
 namespace render {
@@ -48,6 +49,20 @@ std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
   return Bounds{centre - extent - slack, centre + extent + slack};
 }
 
+RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t lights) {
+  // The vectors of the constructor below. objects_ and lights_ are
+  // reserved. bounded_ and planes_ hold one index an object between them,
+  // and the boxes one box a bounded object; both grow by doubling, so the
+  // boxes are counted twice over, and the indices (4 bytes beside some 550
+  // an object) once.
+  Bytes bytes;
+  bytes.scene =
+      saturatingSum(saturatingProduct(objects, sizeof(RenderObject) + sizeof(std::uint32_t)),
+                    saturatingProduct(lights, sizeof(RenderLight)));
+  bytes.bvh = saturatingSum(saturatingProduct(objects, 2 * sizeof(Bounds)), Bvh::bytesFor(objects));
+  return bytes;
+}
+
 RenderScene::RenderScene(const scene::Scene& scene) : camera_(scene.camera) {
   objects_.reserve(scene.objects.size());
   std::vector<Bounds> boxes;
@@ -69,6 +84,7 @@ RenderScene::RenderScene(const scene::Scene& scene) : camera_(scene.camera) {
     }
   }
   bvh_ = Bvh(boxes);
+  lights_.reserve(scene.lights.size());
   for (const scene::Light& light : scene.lights) {
     lights_.push_back(RenderLight{light.position(), light.colour});
   }

@@ -64,6 +64,22 @@ class RenderScene {
  public:
   explicit RenderScene(const scene::Scene& scene);
 
+  /// What the constructor allocates for a scene of `objects` objects and
+  /// `lights` lights, in bytes, as two parts.
+  struct Bytes {
+    /// Kept while the scene lives: the compiled objects and lights, and each
+    /// object's index in the bounded or the plane list.
+    std::uint64_t scene = 0;
+    /// The BVH, with its build's temporaries and the boxes it is built over.
+    std::uint64_t bvh = 0;
+  };
+  /// The most the constructor holds for such a scene, from the sizes and
+  /// capacities it allocates (Bvh::bytesFor for the hierarchy), so that a
+  /// caller can refuse a scene that cannot fit before compiling it; the
+  /// scene::Scene itself is not counted. Saturates: a hostile count gives
+  /// UINT64_MAX, never a wrapped figure.
+  static Bytes bytesFor(std::uint64_t objects, std::uint64_t lights);
+
   const std::vector<RenderObject>& objects() const { return objects_; }
   const std::vector<RenderLight>& lights() const { return lights_; }
   const scene::Camera& camera() const { return camera_; }

@@ -175,10 +175,10 @@ std::optional<int> resourceRefusal(const SceneAndTarget& job,
                                    const render::RenderSettings& settings,
                                    const AvailableMemoryProbe& availableMemory, Stage& stage,
                                    std::ostream& err) {
-  RenderMemoryEstimate estimate = estimateRenderMemory(
+  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
       job.scene.objects.size(), job.scene.lights.size(), settings.width, settings.height);
-  if (std::optional<std::string> refusal =
-          renderMemoryRefusal(estimate, availableMemory ? availableMemory() : std::nullopt)) {
+  if (std::optional<std::string> refusal = render::renderMemoryRefusal(
+          estimate, availableMemory ? availableMemory() : std::nullopt)) {
     err << "sfrender: error: " << *refusal << "\n";
     return toInt(ExitCode::OutOfResources);
   }

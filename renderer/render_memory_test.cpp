@@ -1,12 +1,18 @@
-#include "tools/sfrender/render_memory.h"
+#include "renderer/render_memory.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
-namespace tools {
+#include "renderer/bvh.h"
+#include "renderer/render.h"
+#include "renderer/render_scene.h"
+#include "renderer/test_scenes.h"
+
+namespace render {
 namespace {
 
 TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
@@ -32,12 +38,62 @@ TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
   EXPECT_EQ(wide.image, 4 * small.image);
 }
 
+// The figures of each part, as sfrender has always printed them: the
+// estimate moved beside the allocating code, its numbers did not.
+TEST(RenderMemory, ThePartsAreTheTypesSizes) {
+  RenderMemoryEstimate e = estimateRenderMemory(1000, 7, 640, 480);
+  EXPECT_EQ(e.image, 640u * 480 * (3 * sizeof(float) + 3 * sizeof(float)));
+  EXPECT_EQ(e.scene,
+            1000 * (sizeof(RenderObject) + sizeof(std::uint32_t)) + 7 * sizeof(RenderLight));
+  EXPECT_EQ(e.bvh, 1000 * (2 * sizeof(Bounds) + sizeof(glm::dvec3) + 2 * sizeof(BvhNode) +
+                           sizeof(std::uint32_t)));
+  EXPECT_EQ(estimateRenderMemory(5, 0, 0, -3).image, 0u);  // no pixels
+}
+
+// What the constructors actually hold stays within what bytesFor says: the
+// nodes as reserved (never grown past it), the items, the objects, the
+// lights.
+TEST(RenderMemory, TheEstimateBoundsWhatIsAllocated) {
+  scene::Scene s = testing::sceneLookingAt({0, 0, 10}, {0, 0, 0});
+  for (int i = 0; i < 300; ++i) {
+    s.objects.push_back(
+        testing::object(i % 3 == 0 ? scene::ObjectKind::Cube : scene::ObjectKind::Sphere,
+                        {testing::scale(0.1), testing::translate(i, i % 7, 0)}));
+  }
+  s.objects.push_back(testing::object(scene::ObjectKind::Plane));
+  for (int i = 0; i < 3; ++i) s.lights.push_back(testing::light({i, 5, 5}));
+  RenderScene compiled(s);
+
+  const Bvh& bvh = compiled.bvh();
+  std::uint64_t boxes = s.objects.size() - 1;  // the plane is not in the BVH
+  EXPECT_EQ(bvh.nodes().capacity(), Bvh::kNodesPerBox * boxes);
+  EXPECT_LE(bvh.nodes().size(), 2 * boxes - 1);
+  EXPECT_LE(
+      bvh.nodes().capacity() * sizeof(BvhNode) + bvh.items().capacity() * sizeof(std::uint32_t),
+      Bvh::bytesFor(boxes));
+
+  RenderScene::Bytes bytes = RenderScene::bytesFor(s.objects.size(), s.lights.size());
+  EXPECT_LE(compiled.objects().capacity() * sizeof(RenderObject) +
+                compiled.lights().capacity() * sizeof(RenderLight),
+            bytes.scene);
+  EXPECT_GE(bytes.bvh, Bvh::bytesFor(s.objects.size()));
+
+  RenderSettings settings;
+  settings.width = 17;
+  settings.height = 5;
+  settings.threads = 1;
+  Image image = renderImage(compiled, settings);
+  EXPECT_EQ(image.rgb.capacity() * sizeof(float), Image::bytesFor(17, 5));
+}
+
 TEST(RenderMemory, HugeCountsSaturateInsteadOfWrapping) {
   RenderMemoryEstimate e = estimateRenderMemory(UINT64_MAX / 2, UINT64_MAX / 2, 32768, 32768);
   EXPECT_EQ(e.scene, UINT64_MAX);
   EXPECT_EQ(e.bvh, UINT64_MAX);
   EXPECT_EQ(e.total(), UINT64_MAX);
   EXPECT_TRUE(renderMemoryRefusal(e, std::uint64_t{1} << 40).has_value());
+  EXPECT_EQ(Bvh::bytesFor(UINT64_MAX / 4), UINT64_MAX);
+  EXPECT_EQ(Image::bytesFor(32768, 32768), std::uint64_t{32768} * 32768 * 12);
 }
 
 TEST(RenderMemory, ReadsMemAvailableInKibibytes) {
@@ -97,4 +153,4 @@ TEST(RenderMemory, TheLeastKnownLimitCounts) {
 }
 
 }  // namespace
-}  // namespace tools
+}  // namespace render

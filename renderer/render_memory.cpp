@@ -1,4 +1,4 @@
-#include "tools/sfrender/render_memory.h"
+#include "renderer/render_memory.h"
 
 #include <sys/resource.h>
 
@@ -7,24 +7,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "renderer/bounds.h"
-#include "renderer/bvh.h"
+#include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "renderer/saturating.h"
 
-namespace tools {
+namespace render {
 
 namespace {
-
-// Saturating arithmetic: a hostile size must give a huge estimate, never a
-// wrapped small one.
-std::uint64_t times(std::uint64_t a, std::uint64_t b) {
-  if (a != 0 && b > UINT64_MAX / a) return UINT64_MAX;
-  return a * b;
-}
-
-std::uint64_t plus(std::uint64_t a, std::uint64_t b) {
-  return a > UINT64_MAX - b ? UINT64_MAX : a + b;
-}
 
 // Bytes in words a reader takes in at a glance: MiB from 1 MiB up.
 std::string amount(std::uint64_t bytes) {
@@ -37,24 +26,18 @@ std::string amount(std::uint64_t bytes) {
 }  // namespace
 
 std::uint64_t RenderMemoryEstimate::total() const {
-  return plus(plus(image, scene), bvh);
+  return saturatingSum(saturatingSum(image, scene), bvh);
 }
 
 RenderMemoryEstimate estimateRenderMemory(std::uint64_t objects, std::uint64_t lights, int width,
                                           int height) {
   RenderMemoryEstimate e;
-  std::uint64_t pixels = times(static_cast<std::uint64_t>(width > 0 ? width : 0),
-                               static_cast<std::uint64_t>(height > 0 ? height : 0));
-  // Three floats a pixel, and for the file one byte a channel (PPM, PNG),
-  // or the floats again where OpenImageIO copies them (EXR, TIFF): the larger.
-  e.image = times(pixels, 3 * sizeof(float) + 3 * sizeof(float));
-  // Each object once compiled, and its index in the bounded or plane list.
-  e.scene = plus(times(objects, sizeof(render::RenderObject) + sizeof(std::uint32_t)),
-                 times(lights, sizeof(render::RenderLight)));
-  // The build: a box per object (in a vector that grows by doubling), its
-  // centre, then up to two nodes and one item per object.
-  e.bvh = times(objects, 2 * sizeof(render::Bounds) + sizeof(glm::dvec3) +
-                             2 * sizeof(render::BvhNode) + sizeof(std::uint32_t));
+  // The float image, and for the file one byte a channel (PPM, PNG), or the
+  // floats again where OpenImageIO copies them (EXR, TIFF): the larger.
+  e.image = saturatingProduct(Image::bytesFor(width, height), 2);
+  RenderScene::Bytes compiled = RenderScene::bytesFor(objects, lights);
+  e.scene = compiled.scene;
+  e.bvh = compiled.bvh;
   return e;
 }
 
@@ -97,7 +80,7 @@ std::optional<std::uint64_t> parseKibibyteField(std::string_view text, std::stri
   // The kernel writes "kB" and means KiB.
   std::string_view unit = rest.substr(static_cast<std::size_t>(end - rest.data()));
   if (!unit.starts_with(" kB")) return std::nullopt;
-  return times(kib, 1024);
+  return saturatingProduct(kib, 1024);
 }
 
 std::optional<std::uint64_t> addressSpaceLeft(std::optional<std::uint64_t> limit,
@@ -171,4 +154,4 @@ std::optional<std::string> renderMemoryRefusal(const RenderMemoryEstimate& estim
          "limit leaves and what the cgroup's memory.max leaves)";
 }
 
-}  // namespace tools
+}  // namespace render

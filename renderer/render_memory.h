@@ -1,0 +1,74 @@
+// What a render will allocate, against the memory the machine has free: a
+// render that cannot fit is refused before it starts rather than killed
+// (or swapping) half-way. The estimate is made here, beside the code that
+// allocates, from that code's own sizes (Image::bytesFor,
+// RenderScene::bytesFor, Bvh::bytesFor), so that it follows the renderer
+// when its types change.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace render {
+
+/// Bytes still to be allocated once the scene has been read: the compiled
+/// scene (objects, lights), the BVH with its build temporaries, the image and
+/// its copy for the file. An estimate from the types' sizes, not a measure.
+struct RenderMemoryEstimate {
+  std::uint64_t image = 0;  ///< the float image and the file's copy of it
+  std::uint64_t scene = 0;  ///< RenderScene::Bytes::scene
+  std::uint64_t bvh = 0;    ///< RenderScene::Bytes::bvh
+
+  /// The sum. Saturates: a hostile size gives a huge total, never a wrapped
+  /// small one.
+  std::uint64_t total() const;
+};
+
+/// The estimate for rendering `objects` objects and `lights` lights into a
+/// `width` x `height` image and writing it to a file.
+RenderMemoryEstimate estimateRenderMemory(std::uint64_t objects, std::uint64_t lights, int width,
+                                          int height);
+
+/// MemAvailable of /proc/meminfo's text, in bytes, or nothing when absent.
+std::optional<std::uint64_t> parseMemAvailable(std::string_view meminfo);
+
+/// The kB figure of a /proc line such as /proc/self/status's "VmSize:", in
+/// bytes, or nothing when absent.
+std::optional<std::uint64_t> parseKibibyteField(std::string_view text, std::string_view key);
+
+/// What RLIMIT_AS leaves to allocate: the limit less the address space in use
+/// (VmSize of /proc/self/status), or nothing when there is no limit.
+std::optional<std::uint64_t> addressSpaceLeft(std::optional<std::uint64_t> limit,
+                                              std::string_view status);
+
+/// What a cgroup v2 leaves: memory.max less memory.current (their texts), or
+/// nothing for "max" or what cannot be read.
+std::optional<std::uint64_t> cgroupMemoryLeft(std::string_view max, std::string_view current);
+
+/// The cgroup v2 folder of the process, from /proc/self/cgroup's text
+/// ("0::/PATH"): /sys/fs/cgroup/PATH, or nothing without a v2 line.
+std::optional<std::string> cgroupFolder(std::string_view procSelfCgroup);
+
+/// The least of those that are known; nothing when none is.
+std::optional<std::uint64_t> leastOf(std::initializer_list<std::optional<std::uint64_t>> limits);
+
+/// Where the free memory comes from: readAvailableMemory on the machine,
+/// anything a test likes in a test.
+using AvailableMemoryProbe = std::function<std::optional<std::uint64_t>()>;
+
+/// The least of MemAvailable (/proc/meminfo), what RLIMIT_AS leaves
+/// (getrlimit, ulimit -v, prlimit --as) and what the cgroup's memory.max
+/// leaves (cgroup v2, the process's own cgroup, else
+/// /sys/fs/cgroup/memory.max); nothing when none can be read.
+std::optional<std::uint64_t> readAvailableMemory();
+
+/// Why the render does not fit, with the estimate and the free memory in
+/// the words, or nothing when it fits or the free memory is unknown.
+std::optional<std::string> renderMemoryRefusal(const RenderMemoryEstimate& estimate,
+                                               std::optional<std::uint64_t> available);
+
+}  // namespace render
