@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 
+#include "libscene/formats/gltf/gltf_json_scan.h"
 #include "libscene/formats/gltf/gltf_mapping.h"
 
 namespace scene::gltf {
@@ -523,42 +524,6 @@ class Locator {
 };
 
 }  // namespace
-
-std::size_t objectWeight(std::string_view topLevelArray) {
-  if (topLevelArray == "materials") return 5;
-  if (topLevelArray == "cameras" || topLevelArray == "lights") return 2;
-  return 1;
-}
-
-std::size_t countTopLevelObjects(std::string_view json) {
-  std::size_t count = 0;
-  std::size_t weight = 0;  // of the top-level array being read
-  std::vector<char> open;  // the containers around the byte
-  std::size_t keyStart = 0;
-  std::string_view lastKey;
-  bool inString = false;
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    char c = json[i];
-    if (inString) {
-      if (c == '\\') {
-        ++i;
-      } else if (c == '"') {
-        inString = false;
-        if (open.size() == 1) lastKey = json.substr(keyStart, i - keyStart);
-      }
-    } else if (c == '"') {
-      inString = true;
-      keyStart = i + 1;
-    } else if (c == '[' || c == '{') {
-      if (c == '[' && open.size() == 1) weight = objectWeight(lastKey);
-      if (c == '{' && open.size() == 2 && open.back() == '[') count += weight;
-      open.push_back(c);
-    } else if ((c == ']' || c == '}') && !open.empty()) {
-      open.pop_back();
-    }
-  }
-  return count;
-}
 
 std::size_t countObjects(const Json& doc) {
   std::size_t count = 0;

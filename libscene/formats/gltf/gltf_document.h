@@ -14,19 +14,9 @@
 
 namespace scene::gltf {
 
-// What one glTF object costs against ReadOptions::maxGltfNodes: a node, a
-// scene, a mesh, a primitive, an accessor... counts 1; a camera or a light
-// 2, a material 5, as tinygltf's structs for them are that many times a
-// node's (456 bytes; a material's is 2,144).
-std::size_t objectWeight(std::string_view topLevelArray);
-
-// The weighted count of the objects in the top-level arrays of the JSON
-// text (`{"nodes": [{}, {}]}` holds 2), read from the bytes alone, so that
-// a file of millions of objects is refused before anything is parsed.
-std::size_t countTopLevelObjects(std::string_view json);
-
-// The same count over the parsed document, with the primitives of every
-// mesh and KHR_lights_punctual's lights included.
+// The weighted count of scanJson (gltf_json_scan.h, which counts from the
+// bytes before anything is parsed) over the parsed document, with the
+// primitives of every mesh and KHR_lights_punctual's lights included.
 std::size_t countObjects(const nlohmann::json& doc);
 
 // A problem found in the document, at the JSON pointer of the value.

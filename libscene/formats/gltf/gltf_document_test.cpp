@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "libscene/formats/gltf/gltf_json_scan.h"
 #include "libscene/formats/gltf/gltf_reader.h"
 #include "libscene/formats/gltf/gltf_writer.h"
 #include "scenefile/read.h"
@@ -119,9 +120,11 @@ TEST(GltfDocument, LightsAndEmission) {
 }
 
 TEST(GltfDocument, ObjectsAreCountedFromTheBytesAndAgainstMaxGltfNodes) {
-  EXPECT_EQ(gltf::countTopLevelObjects(
+  EXPECT_EQ(gltf::scanJson(
                 R"({"asset": {"a": [{}]}, "nodes": [{}, {"children": [{}]}], "materials": [{}],)"
-                R"( "x": "nodes", "cameras": [{}, {}]})"),
+                R"( "x": "nodes", "cameras": [{}, {}]})",
+                kMaxJsonDepth)
+                .objects,
             2u + 5u + 4u);
   std::string text = R"({"asset": {"version": "2.0"}, "nodes": [{}, {}, {}, {}]})";
   ReadOptions options;

@@ -1,9 +1,12 @@
 #include "libscene/formats/gltf/gltf_extras.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 #include "libscene/formats/gltf/gltf_mapping.h"
+#include "scenefile/mesh.h"
 
 namespace scene::gltf {
 
@@ -138,6 +141,64 @@ std::optional<Material> materialExtras(const std::string& extrasText) {
     materialValue(m, p) = *v;
   }
   return m;
+}
+
+const std::string& ownExtras(const std::vector<std::string>& extras, int index) {
+  static const std::string kNone;
+  return index >= 0 && static_cast<std::size_t>(index) < extras.size() ? extras[index] : kNone;
+}
+
+double distanceOfPbr(const PbrMaterial& a, const PbrMaterial& b) {
+  double d = 0.0;
+  for (int i = 0; i < 4; ++i) d = std::max(d, std::abs(a.baseColor[i] - b.baseColor[i]));
+  d = std::max({d, std::abs(a.metallic - b.metallic), std::abs(a.roughness - b.roughness)});
+  auto optional = [&d](const std::optional<double>& x, const std::optional<double>& y) {
+    if (x.has_value() != y.has_value()) {
+      d = std::numeric_limits<double>::infinity();
+    } else if (x) {
+      d = std::max(d, std::abs(*x - *y));
+    }
+  };
+  optional(a.ior, b.ior);
+  optional(a.transmission, b.transmission);
+  optional(a.specular, b.specular);
+  return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
+}
+
+std::optional<int> writtenSegments(ObjectKind kind, std::size_t vertices) {
+  for (int n = kMinSegments; n <= kMaxSegments; ++n) {
+    std::size_t want = 0;
+    switch (kind) {
+      case ObjectKind::Sphere:
+        want = 2 + static_cast<std::size_t>(n) * (std::max(2, n / 2) - 1);
+        break;
+      case ObjectKind::Cylinder:
+        want = 4 * static_cast<std::size_t>(n) + 2;
+        break;
+      case ObjectKind::Cube:
+        want = 24;
+        break;
+      case ObjectKind::Plane:
+        want = 4;
+        break;
+    }
+    if (want == vertices) return n;
+  }
+  return std::nullopt;
+}
+
+bool isWrittenMesh(ObjectKind kind, int segments, const std::vector<double>& xyz) {
+  if (xyz.empty()) return false;
+  // A plane's square is as large as the scene it was written for: its first
+  // coordinate gives the half-size.
+  TriangleMesh want = primitiveMesh(kind, segments, static_cast<float>(std::abs(xyz[0])));
+  if (want.positions.size() * 3 != xyz.size()) return false;
+  for (std::size_t i = 0; i < want.positions.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      if (static_cast<double>(want.positions[i][c]) != xyz[3 * i + c]) return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace scene::gltf

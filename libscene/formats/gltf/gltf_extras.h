@@ -1,7 +1,9 @@
 // Our own extras: the exact values that the glTF writer puts under
-// `extras.sf` (docs/GLTF.md, "Extras"), read back by the glTF reader.
+// `extras.sf` (docs/GLTF.md, "Extras"), read back by the glTF reader, and
+// what tells whether they still describe the file's own data.
 #pragma once
 
+#include <cstddef>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
@@ -9,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "libscene/formats/gltf/gltf_mapping.h"
 #include "scenefile/scene.h"
 #include "scenefile/transform.h"
 
@@ -38,5 +41,23 @@ struct RecordExtras {
 std::optional<RecordExtras> recordExtras(const std::string& extrasText);
 // The material of a material's extras, when they hold every value.
 std::optional<Material> materialExtras(const std::string& extrasText);
+
+// The extras are believed only while they agree with the glTF values: a
+// difference above this (relative) means the file was edited elsewhere.
+inline constexpr double kExtrasAgreement = 1e-9;
+
+// The extras (OwnExtras) of object `index`, "" when it has none.
+const std::string& ownExtras(const std::vector<std::string>& extras, int index);
+
+// The largest difference between two glTF materials' values: infinite when
+// one has an extension value that the other has not.
+double distanceOfPbr(const PbrMaterial& a, const PbrMaterial& b);
+
+// The --tessellation that gives the writer's mesh of `kind` this many
+// vertices, if one does.
+std::optional<int> writtenSegments(ObjectKind kind, std::size_t vertices);
+// Whether `xyz` (three coordinates a vertex) is exactly the writer's mesh of
+// `kind` at `segments` (scenefile/mesh.h), a plane's at the size it gives.
+bool isWrittenMesh(ObjectKind kind, int segments, const std::vector<double>& xyz);
 
 }  // namespace scene::gltf

@@ -2,6 +2,9 @@
 
 #include <cctype>
 #include <fstream>
+#include <new>
+
+#include "libscene/formats/gltf/glb.h"
 
 namespace scene::gltf {
 
@@ -33,6 +36,18 @@ bool isInside(const fs::path& folder, const fs::path& path) {
     if (p == path.end() || *f != *p) return false;
   }
   return p != path.end();
+}
+
+bool noImageDecoding(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                     const unsigned char*, int, void*) {
+  return true;
+}
+
+// tinygltf's error text, first line only, without its trailing newline.
+std::string firstLine(const std::string& text) {
+  std::string line = text.substr(0, text.find('\n'));
+  if (line.size() > 160) line = line.substr(0, 157) + "...";
+  return line.empty() ? "tinygltf could not read it" : line;
 }
 
 }  // namespace
@@ -104,6 +119,76 @@ bool confinedRead(std::vector<unsigned char>* out, std::string* err, const std::
 bool noWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
   if (err) *err += "the reader writes nothing\n";
   return false;
+}
+
+void checkBufferFiles(const nlohmann::json& doc, const fs::path& folder, const ReadOptions& options,
+                      DiagnosticList& out) {
+  using Json = nlohmann::json;
+  if (!doc.contains("buffers") || !doc["buffers"].is_array()) return;
+  for (std::size_t i = 0; i < doc["buffers"].size(); ++i) {
+    const Json& b = doc["buffers"][i];
+    if (!b.is_object() || !b.contains("uri") || !b["uri"].is_string()) continue;
+    std::string uri = b["uri"].get<std::string>();
+    std::string shown = uri.size() > 80 ? uri.substr(0, 77) + "..." : uri;
+    fs::path target;
+    if (std::optional<std::string> problem = uriProblem(uri, folder, target)) {
+      out.error(DiagnosticCode::GltfExternalFile, {},
+                "buffer " + std::to_string(i) + "'s uri '" + shown + "' " + *problem);
+      continue;
+    }
+    std::error_code sizeError;
+    std::uintmax_t size = uri.starts_with("data:") ? 0 : fs::file_size(target, sizeError);
+    if (!sizeError && size > options.maxFileSize) {
+      out.error(DiagnosticCode::FileTooLarge, {},
+                "buffer " + std::to_string(i) + "'s file '" + shown + "' is " +
+                    std::to_string(size) + " bytes, more than the limit of " +
+                    std::to_string(options.maxFileSize))
+          .hint = "raise the limit with --max-file-size if the file is meant to be this large";
+    }
+  }
+}
+
+bool loadModel(const std::string& json, std::optional<std::string_view> bin, bool binary,
+               const fs::path& folder, std::uint64_t maxFileSize, tinygltf::Model& model,
+               DiagnosticList& out) {
+  tinygltf::TinyGLTF loader;
+  Confinement confinement;
+  std::error_code ec;
+  confinement.folder =
+      fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder), ec);
+  confinement.maxFileSize = maxFileSize;
+  loader.SetFsCallbacks({&confinedExists, &unexpandedPath, &confinedRead, &noWrite, &confinement});
+  loader.SetImageLoader(&noImageDecoding, nullptr);
+  loader.SetStoreOriginalJSONForExtrasAndExtensions(true);
+  std::string err;
+  std::string warn;
+  bool loaded = false;
+  try {
+    if (binary) {
+      std::string glb = encodeGlb(json, bin.value_or(std::string_view{}));
+      loaded = loader.LoadBinaryFromMemory(
+          &model, &err, &warn, reinterpret_cast<const unsigned char*>(glb.data()),
+          static_cast<unsigned int>(glb.size()), confinement.folder.string());
+    } else {
+      loaded = loader.LoadASCIIFromString(&model, &err, &warn, json.data(),
+                                          static_cast<unsigned int>(json.size()),
+                                          confinement.folder.string());
+    }
+  } catch (const std::bad_alloc&) {
+    // Out of memory is no property of the file: the tools report it.
+    throw;
+  } catch (const std::exception& e) {
+    err = e.what();
+    loaded = false;
+  }
+  // tinygltf catches what its JSON parser throws, std::bad_alloc too, and
+  // returns its text: that is no fault of the file, and goes on as itself.
+  if (!loaded && err.starts_with(std::bad_alloc().what())) throw std::bad_alloc();
+  if (!loaded) {
+    out.error(DiagnosticCode::GltfInvalid, {}, "not a valid glTF 2.0 file: " + firstLine(err));
+    return false;
+  }
+  return true;
 }
 
 }  // namespace scene::gltf

@@ -431,104 +431,97 @@ std::optional<std::string> firstNonFinite(const Json& j, const std::string& at) 
   return std::nullopt;
 }
 
-}  // namespace
-
-std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& conversion,
-                                   bool binary, DiagnosticList& out) {
-  const GltfWriteOptions& options = conversion.gltf;
-  std::size_t errorsBefore = out.errorCount();
-  float planeSize = planeHalfSize(scene);
-  reportLosses(scene, conversion.noLoss ? Severity::Error : Severity::Warning, planeSize, out);
-  if (out.errorCount() != errorsBefore) return std::nullopt;
-
-  Json doc;
-  Json asset = {{"version", "2.0"}, {"generator", options.generator}};
-  if (scene.outputFile) asset["extras"] = {{gltf::kExtrasKey, {{"outputFile", *scene.outputFile}}}};
-  doc["asset"] = std::move(asset);
-  std::set<std::string> extensions;
+// What the document is built from before it is assembled: the nodes and
+// the scene's roots, the extensions used, the materials and meshes, and
+// the binary buffer they point into.
+struct Parts {
   Json nodes = Json::array();
   Json roots = Json::array();
-
-  // The camera.
-  {
-    // The options' field of view and aspect ratio where they give one, else
-    // the scene's View's.
-    double yfov = options.yfovDegrees.value_or(
-        scene.view ? scene.view->verticalFovDegrees : gltf::kDefaultYfovDegrees);
-    Json perspective = {{"yfov", yfov * std::numbers::pi / 180.0}, {"znear", gltf::kZnear}};
-    if (options.width > 0 && options.height > 0) {
-      perspective["aspectRatio"] = static_cast<double>(options.width) / options.height;
-    } else if (scene.view && scene.view->aspectRatio) {
-      perspective["aspectRatio"] = *scene.view->aspectRatio;
-    }
-    bool defaultView = !scene.view && !options.yfovDegrees && !perspective.contains("aspectRatio");
-    doc["cameras"] = Json::array(
-        {{{"name", "CAMERA"}, {"type", "perspective"}, {"perspective", std::move(perspective)}}});
-    std::size_t node =
-        addRecordNodes(nodes, roots, gltf::cameraNodeMatrix(scene.camera.matrix), "CAMERA");
-    nodes[node]["camera"] = 0;
-    Json sf = {{"record", "CAMERA"},
-               {"colour", vec3Json(scene.camera.colour)},
-               {"matrix", rowsJson(scene.camera.matrix)}};
-    if (scene.camera.lookAt) sf["lookAt"] = vec3Json(*scene.camera.lookAt);
-    // A scene without a View, written with the default field of view, reads
-    // back without one: the yfov is then the writer's, not the scene's.
-    if (defaultView) sf["view"] = false;
-    nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
-  }
-
-  // The lights.
-  if (!scene.lights.empty()) {
-    Json lights = Json::array();
-    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-      const Light& light = scene.lights[i];
-      std::string name = "LIGHT " + std::to_string(i + 1);
-      gltf::PointLight point = gltf::pointLightFromColour(light.colour);
-      lights.push_back({{"name", name},
-                        {"type", "point"},
-                        {"color", vec3Json(point.color)},
-                        {"intensity", point.intensity}});
-      std::size_t node = addRecordNodes(nodes, roots, gltf::lightNodeMatrix(light.matrix), name);
-      nodes[node]["extensions"] = {{"KHR_lights_punctual", {{"light", i}}}};
-      nodes[node]["extras"] = {{gltf::kExtrasKey,
-                                {{"record", "LIGHT"},
-                                 {"colour", vec3Json(light.colour)},
-                                 {"matrix", rowsJson(light.matrix)}}}};
-    }
-    extensions.insert("KHR_lights_punctual");
-    doc["extensions"] = {{"KHR_lights_punctual", {{"lights", std::move(lights)}}}};
-  }
-
-  // The objects: one vertex set per kind, one material per distinct value,
-  // one mesh per kind and material.
+  std::set<std::string> extensions;
+  Json materials = Json::array();
+  Json meshes = Json::array();
   BufferBuilder buffer;
+};
+
+void addCamera(const Scene& scene, const GltfWriteOptions& options, Json& doc, Parts& parts) {
+  // The options' field of view and aspect ratio where they give one, else
+  // the scene's View's.
+  double yfov = options.yfovDegrees.value_or(scene.view ? scene.view->verticalFovDegrees
+                                                        : gltf::kDefaultYfovDegrees);
+  Json perspective = {{"yfov", yfov * std::numbers::pi / 180.0}, {"znear", gltf::kZnear}};
+  if (options.width > 0 && options.height > 0) {
+    perspective["aspectRatio"] = static_cast<double>(options.width) / options.height;
+  } else if (scene.view && scene.view->aspectRatio) {
+    perspective["aspectRatio"] = *scene.view->aspectRatio;
+  }
+  bool defaultView = !scene.view && !options.yfovDegrees && !perspective.contains("aspectRatio");
+  doc["cameras"] = Json::array(
+      {{{"name", "CAMERA"}, {"type", "perspective"}, {"perspective", std::move(perspective)}}});
+  std::size_t node = addRecordNodes(parts.nodes, parts.roots,
+                                    gltf::cameraNodeMatrix(scene.camera.matrix), "CAMERA");
+  parts.nodes[node]["camera"] = 0;
+  Json sf = {{"record", "CAMERA"},
+             {"colour", vec3Json(scene.camera.colour)},
+             {"matrix", rowsJson(scene.camera.matrix)}};
+  if (scene.camera.lookAt) sf["lookAt"] = vec3Json(*scene.camera.lookAt);
+  // A scene without a View, written with the default field of view, reads
+  // back without one: the yfov is then the writer's, not the scene's.
+  if (defaultView) sf["view"] = false;
+  parts.nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+}
+
+void addLights(const Scene& scene, Json& doc, Parts& parts) {
+  if (scene.lights.empty()) return;
+  Json lights = Json::array();
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& light = scene.lights[i];
+    std::string name = "LIGHT " + std::to_string(i + 1);
+    gltf::PointLight point = gltf::pointLightFromColour(light.colour);
+    lights.push_back({{"name", name},
+                      {"type", "point"},
+                      {"color", vec3Json(point.color)},
+                      {"intensity", point.intensity}});
+    std::size_t node =
+        addRecordNodes(parts.nodes, parts.roots, gltf::lightNodeMatrix(light.matrix), name);
+    parts.nodes[node]["extensions"] = {{"KHR_lights_punctual", {{"light", i}}}};
+    parts.nodes[node]["extras"] = {{gltf::kExtrasKey,
+                                    {{"record", "LIGHT"},
+                                     {"colour", vec3Json(light.colour)},
+                                     {"matrix", rowsJson(light.matrix)}}}};
+  }
+  parts.extensions.insert("KHR_lights_punctual");
+  doc["extensions"] = {{"KHR_lights_punctual", {{"lights", std::move(lights)}}}};
+}
+
+// The objects: one vertex set per kind, one material per distinct value,
+// one mesh per kind and material.
+void addObjects(const Scene& scene, const GltfWriteOptions& options, float planeSize,
+                Parts& parts) {
   std::map<ObjectKind, MeshAccessors> kindAccessors;
   std::map<std::vector<std::uint64_t>, std::size_t> materialIndex;
   std::map<std::pair<ObjectKind, std::size_t>, std::size_t> meshIndex;
-  Json materials = Json::array();
-  Json meshes = Json::array();
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     auto accessors = kindAccessors.find(object.kind);
     if (accessors == kindAccessors.end()) {
-      accessors =
-          kindAccessors
-              .emplace(object.kind,
-                       addMesh(buffer, primitiveMesh(object.kind, options.segments, planeSize)))
-              .first;
+      accessors = kindAccessors
+                      .emplace(object.kind,
+                               addMesh(parts.buffer,
+                                       primitiveMesh(object.kind, options.segments, planeSize)))
+                      .first;
     }
     bool doubleSided = object.kind == ObjectKind::Plane;
     auto [material, newMaterial] =
-        materialIndex.emplace(materialKey(object.material, doubleSided), materials.size());
+        materialIndex.emplace(materialKey(object.material, doubleSided), parts.materials.size());
     if (newMaterial) {
-      materials.push_back(materialJson(object.material, object.kind, extensions,
-                                       static_cast<int>(materials.size()) + 1));
+      parts.materials.push_back(materialJson(object.material, object.kind, parts.extensions,
+                                             static_cast<int>(parts.materials.size()) + 1));
     }
     auto [mesh, newMesh] =
-        meshIndex.emplace(std::pair{object.kind, material->second}, meshes.size());
+        meshIndex.emplace(std::pair{object.kind, material->second}, parts.meshes.size());
     if (newMesh) {
       const MeshAccessors& a = accessors->second;
-      meshes.push_back(
+      parts.meshes.push_back(
           {{"name", std::string(objectKindName(object.kind))},
            {"primitives",
             Json::array({{{"attributes", {{"POSITION", a.position}, {"NORMAL", a.normal}}},
@@ -536,18 +529,21 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
                           {"material", material->second}}})}});
     }
     std::string name = std::string(objectKindName(object.kind)) + " " + std::to_string(i + 1);
-    std::size_t node = addRecordNodes(nodes, roots, object.matrix, name);
-    nodes[node]["mesh"] = mesh->second;
+    std::size_t node = addRecordNodes(parts.nodes, parts.roots, object.matrix, name);
+    parts.nodes[node]["mesh"] = mesh->second;
     Json sf = {{"record", std::string(objectKindName(object.kind))},
                {"matrix", rowsJson(object.matrix)}};
     if (object.transforms) sf["transforms"] = transformsJson(*object.transforms);
-    nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+    parts.nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
   }
+}
 
-  if (!extensions.empty()) {
+// The scene, the nodes, materials and meshes after what `doc` holds, with
+// extensionsUsed first among the top-level keys after asset.
+void assemble(Json& doc, Parts& parts) {
+  if (!parts.extensions.empty()) {
     Json used = Json::array();
-    for (const std::string& name : extensions) used.push_back(name);
-    // extensionsUsed comes first among the top-level keys, after asset.
+    for (const std::string& name : parts.extensions) used.push_back(name);
     Json reordered;
     for (auto& [key, value] : doc.items()) {
       reordered[key] = value;
@@ -556,17 +552,15 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
     doc = std::move(reordered);
   }
   doc["scene"] = 0;
-  doc["scenes"] = Json::array({{{"name", "scene"}, {"nodes", std::move(roots)}}});
-  doc["nodes"] = std::move(nodes);
-  if (!materials.empty()) doc["materials"] = std::move(materials);
-  if (!meshes.empty()) doc["meshes"] = std::move(meshes);
+  doc["scenes"] = Json::array({{{"name", "scene"}, {"nodes", std::move(parts.roots)}}});
+  doc["nodes"] = std::move(parts.nodes);
+  if (!parts.materials.empty()) doc["materials"] = std::move(parts.materials);
+  if (!parts.meshes.empty()) doc["meshes"] = std::move(parts.meshes);
+}
 
-  if (std::optional<std::string> where = firstNonFinite(doc, "")) {
-    out.error(DiagnosticCode::ValueNotFinite, scene.camera.span,
-              "the glTF's number at " + *where + " is not finite, so nothing is written")
-        .hint = "scale the scene so that its numbers stay within about 1e300";
-    return std::nullopt;
-  }
+// The file (and for a .gltf with an external buffer, the buffer's), once
+// the buffer is in the document: embedded in a .gltf as base64, or beside.
+GltfFiles encode(Json& doc, BufferBuilder& buffer, const GltfWriteOptions& options, bool binary) {
   GltfFiles files;
   std::string& bin = buffer.data();
   if (!bin.empty()) {
@@ -590,6 +584,34 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
     files.main += '\n';
   }
   return files;
+}
+
+}  // namespace
+
+std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& conversion,
+                                   bool binary, DiagnosticList& out) {
+  const GltfWriteOptions& options = conversion.gltf;
+  std::size_t errorsBefore = out.errorCount();
+  float planeSize = planeHalfSize(scene);
+  reportLosses(scene, conversion.noLoss ? Severity::Error : Severity::Warning, planeSize, out);
+  if (out.errorCount() != errorsBefore) return std::nullopt;
+
+  Json doc;
+  Json asset = {{"version", "2.0"}, {"generator", options.generator}};
+  if (scene.outputFile) asset["extras"] = {{gltf::kExtrasKey, {{"outputFile", *scene.outputFile}}}};
+  doc["asset"] = std::move(asset);
+  Parts parts;
+  addCamera(scene, options, doc, parts);
+  addLights(scene, doc, parts);
+  addObjects(scene, options, planeSize, parts);
+  assemble(doc, parts);
+  if (std::optional<std::string> where = firstNonFinite(doc, "")) {
+    out.error(DiagnosticCode::ValueNotFinite, scene.camera.span,
+              "the glTF's number at " + *where + " is not finite, so nothing is written")
+        .hint = "scale the scene so that its numbers stay within about 1e300";
+    return std::nullopt;
+  }
+  return encode(doc, parts.buffer, options, binary);
 }
 
 }  // namespace scene

@@ -246,13 +246,18 @@ void consider(Attempt& best, const Attempt& next) {
   if (next.error < best.error || (best.why.empty() && !next.why.empty())) best = next;
 }
 
-Attempt fitPlane(const Mesh& m, double tol) {
-  Attempt out;
-  out.kind = ObjectKind::Plane;
-  if (m.clusters.size() != 1 || m.tooManyDirections) {
-    out.why = "it is not flat";
-    return out;
-  }
+// A flat mesh seen from its normal: the rotation that takes +Y to the
+// normal, the points in the plane's x and z, their mean height along the
+// normal and how far (relative to the mesh's size) any is off that height.
+struct PlaneFrame {
+  glm::dmat3 frame;
+  glm::dmat3 toFrame;
+  std::vector<glm::dvec2> flat;
+  double height = 0.0;
+  double offPlane = 0.0;
+};
+
+PlaneFrame planeFrame(const Mesh& m) {
   glm::dvec3 normal = glm::length(m.areaNormal) > 0.0 ? m.areaNormal : m.clusters[0].normal;
   normal = glm::normalize(normal);
   // Keep the mesh's front as +Y, snapping only onto an axis of the same sign.
@@ -261,28 +266,30 @@ Attempt fitPlane(const Mesh& m, double tol) {
     axis[i] = normal[i] < 0 ? -1.0 : 1.0;
     if (glm::length(normal - axis) <= kSnap) normal = axis;
   }
-  glm::dmat3 frame = frameWithY(normal);
-  glm::dmat3 toFrame = glm::transpose(frame);
-  std::vector<glm::dvec2> flat;
-  double height = 0.0;
+  PlaneFrame f;
+  f.frame = frameWithY(normal);
+  f.toFrame = glm::transpose(f.frame);
   for (const glm::dvec3& p : m.points) {
-    glm::dvec3 q = toFrame * p;
-    flat.emplace_back(q.x, q.z);
-    height += q.y;
+    glm::dvec3 q = f.toFrame * p;
+    f.flat.emplace_back(q.x, q.z);
+    f.height += q.y;
   }
-  height /= static_cast<double>(m.points.size());
-  double offPlane = 0.0;
+  f.height /= static_cast<double>(m.points.size());
   for (const glm::dvec3& p : m.points) {
-    offPlane = std::max(offPlane, std::abs((toFrame * p).y - height));
+    f.offPlane = std::max(f.offPlane, std::abs((f.toFrame * p).y - f.height));
   }
-  offPlane /= m.size;
+  f.offPlane /= m.size;
+  return f;
+}
 
-  // A rectangle: its sides give the in-plane angle (taken in (-45, 45]
-  // degrees, so that an axis-aligned quad keeps its frame).
+// A rectangle: its sides give the in-plane angle (taken in (-45, 45]
+// degrees, so that an axis-aligned quad keeps its frame). True when one
+// fits; else `out` keeps the nearest miss.
+bool fitRectangle(const Mesh& m, const PlaneFrame& f, double tol, Attempt& out) {
   std::vector<double> angles;
   for (const auto& tri : m.triangles) {
     for (int e = 0; e < 3 && angles.size() < 64; ++e) {
-      glm::dvec3 d = toFrame * (tri[(e + 1) % 3] - tri[e]);
+      glm::dvec3 d = f.toFrame * (tri[(e + 1) % 3] - tri[e]);
       if (std::hypot(d.x, d.z) <= 1e-9 * m.size) continue;
       double theta = std::atan2(d.z, d.x);
       theta -= std::round(theta / (kPi / 2)) * (kPi / 2);
@@ -296,7 +303,7 @@ Attempt fitPlane(const Mesh& m, double tol) {
     double c = std::cos(theta), s = std::sin(theta);
     glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
     std::vector<glm::dvec2> turned;
-    for (const glm::dvec2& p : flat) {
+    for (const glm::dvec2& p : f.flat) {
       glm::dvec2 t(c * p.x + s * p.y, -s * p.x + c * p.y);
       turned.push_back(t);
       lo = glm::min(lo, t);
@@ -312,7 +319,7 @@ Attempt fitPlane(const Mesh& m, double tol) {
       cornerError = std::max(cornerError, nearest / m.size);
     }
     double areaError = std::abs(m.area / (extent.x * extent.y) - 1.0);
-    double error = std::max({cornerError, offPlane, areaError / 10.0});
+    double error = std::max({cornerError, f.offPlane, areaError / 10.0});
     if (error > tol) {
       if (error < out.error) {
         out.error = error;
@@ -321,43 +328,58 @@ Attempt fitPlane(const Mesh& m, double tol) {
       continue;
     }
     glm::dvec2 middle = 0.5 * (lo + hi);
-    glm::dvec3 ex = frame * glm::dvec3(c, 0.0, s);
-    glm::dvec3 ey = frame[1];
+    glm::dvec3 ex = f.frame * glm::dvec3(c, 0.0, s);
+    glm::dvec3 ey = f.frame[1];
     glm::dvec3 ez = glm::cross(ex, ey);
     glm::dvec3 centre =
-        frame * glm::dvec3(c * middle.x - s * middle.y, height, s * middle.x + c * middle.y);
+        f.frame * glm::dvec3(c * middle.x - s * middle.y, f.height, s * middle.x + c * middle.y);
     double hx = extent.x / 2, hz = extent.y / 2;
     MeshFit fit{ObjectKind::Plane,
                 affine(glm::dmat3(ex * hx, ey * std::sqrt(hx * hz), ez * hz), centre), error};
     out.fit = fit;
     out.error = error;
-    return out;
+    return true;
   }
+  return false;
+}
 
-  // A disc.
+// A disc: its rim a circle, the mesh covering most of it. True when one
+// fits; else `out` keeps the nearest miss.
+bool fitDisc(const Mesh& m, const PlaneFrame& f, double tol, Attempt& out) {
   glm::dvec2 centre2;
   double radius = 0.0;
-  if (fitRim(flat, m.size, centre2, radius)) {
-    double error = offPlane;
-    for (const glm::dvec2& p : flat) {
-      double rho = glm::length(p - centre2);
-      error = std::max(error, std::min(std::abs(rho - radius), rho) / radius);
-    }
-    double coverage = m.area / (kPi * radius * radius);
-    if (error <= tol && coverage >= kMinCoverage && coverage <= 1.0 + 10 * tol) {
-      glm::dvec3 centre = frame * glm::dvec3(centre2.x, height, centre2.y);
-      out.fit = MeshFit{ObjectKind::Plane, affine(scaledColumns(frame, glm::dvec3(radius)), centre),
-                        error};
-      out.error = error;
-      return out;
-    }
-    if (error < out.error) {
-      out.error = error;
-      out.why = coverage < kMinCoverage
-                    ? "it is flat but neither a rectangle nor a whole disc"
-                    : "the nearest PLANE (a disc) is off by " + shortNumber(error);
-    }
+  if (!fitRim(f.flat, m.size, centre2, radius)) return false;
+  double error = f.offPlane;
+  for (const glm::dvec2& p : f.flat) {
+    double rho = glm::length(p - centre2);
+    error = std::max(error, std::min(std::abs(rho - radius), rho) / radius);
   }
+  double coverage = m.area / (kPi * radius * radius);
+  if (error <= tol && coverage >= kMinCoverage && coverage <= 1.0 + 10 * tol) {
+    glm::dvec3 centre = f.frame * glm::dvec3(centre2.x, f.height, centre2.y);
+    out.fit = MeshFit{ObjectKind::Plane, affine(scaledColumns(f.frame, glm::dvec3(radius)), centre),
+                      error};
+    out.error = error;
+    return true;
+  }
+  if (error < out.error) {
+    out.error = error;
+    out.why = coverage < kMinCoverage
+                  ? "it is flat but neither a rectangle nor a whole disc"
+                  : "the nearest PLANE (a disc) is off by " + shortNumber(error);
+  }
+  return false;
+}
+
+Attempt fitPlane(const Mesh& m, double tol) {
+  Attempt out;
+  out.kind = ObjectKind::Plane;
+  if (m.clusters.size() != 1 || m.tooManyDirections) {
+    out.why = "it is not flat";
+    return out;
+  }
+  PlaneFrame f = planeFrame(m);
+  if (fitRectangle(m, f, tol, out) || fitDisc(m, f, tol, out)) return out;
   if (out.why.empty()) out.why = "it is flat but neither a rectangle nor a disc";
   return out;
 }

@@ -1,0 +1,53 @@
+#include "libscene/formats/gltf/gltf_import_context.h"
+
+#include <algorithm>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "libscene/formats/gltf/gltf_extras.h"
+
+namespace scene::gltf {
+
+// Names come from the file: a long one is cut, so that a message stays one
+// line. Control bytes stay as they are; the tools print every message
+// through tools::printableText, which shows them as \xNN.
+std::string quoted(const std::string& name) {
+  if (name.empty()) return "";
+  constexpr std::size_t kMaxShown = 80;
+  // The cut falls between UTF-8 characters, not inside one.
+  std::size_t end = std::min(name.size(), kMaxShown);
+  while (end < name.size() && end > 0 && (static_cast<unsigned char>(name[end]) & 0xC0) == 0x80) {
+    --end;
+  }
+  return " '" + name.substr(0, end) + (end < name.size() ? "..." : "") + "'";
+}
+
+std::string nodeLabel(const tinygltf::Model& model, int node) {
+  return "node " + std::to_string(node) + quoted(model.nodes[node].name);
+}
+
+std::string meshLabel(const tinygltf::Model& model, int mesh) {
+  return "mesh " + std::to_string(mesh) + quoted(model.meshes[mesh].name);
+}
+
+int nodeLight(const tinygltf::Model& model, int node) {
+  nlohmann::json ext = parseOrNull(model.nodes[node].extensions_json_string);
+  if (!ext.is_object()) return -1;
+  auto it = ext.find("KHR_lights_punctual");
+  if (it == ext.end() || !it->is_object()) return -1;
+  auto light = it->find("light");
+  if (light == it->end() || !light->is_number_integer()) return -2;
+  long long value = light->get<long long>();
+  return value < 0 || value > std::numeric_limits<int>::max() ? -2 : static_cast<int>(value);
+}
+
+// A sum of products with 0 is 0 only when every entry is finite.
+bool finite(const glm::dmat4& m) {
+  double sum = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) sum += m[c][r] * 0.0;
+  }
+  return sum == 0.0;
+}
+
+}  // namespace scene::gltf
