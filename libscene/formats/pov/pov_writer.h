@@ -33,7 +33,7 @@ namespace scene {
 
 // The scene in POV-Ray's scene language, or nothing when `noLoss` forbids a
 // loss. Each value that POV-Ray cannot render as sfrender does is reported in
-// `out` at its object [loss-pov].
+// `out` at its object [pov-write-loss].
 std::optional<std::string> writePovScene(const Scene& scene, const ConversionOptions& options,
                                          DiagnosticList& out);
 
