@@ -2,7 +2,7 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps configure build run test bench clean
+.PHONY: all deps configure build run test bench docs clean
 
 all: build
 
@@ -21,6 +21,11 @@ run: build
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The API reference, from the public headers (Doxygen): $(BUILD_DIR)/docs/html.
+docs: configure
+	@cmake --build $(BUILD_DIR) --target docs
+	@echo "The API reference is in $(BUILD_DIR)/docs/html/index.html."
 
 bench: build
 	@bash bench/run.sh $(BUILD_DIR)

@@ -10,6 +10,8 @@ packages=(
   # POV-Ray renders the cross-checks; the tutorial-style scenes include its
   # colors.inc.
   povray povray-includes
+  # make docs (and its test) builds the API reference with Doxygen.
+  doxygen
   # make bench draws the plots of docs/PERFORMANCE.md with gnuplot.
   gnuplot-nox
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).

@@ -22,24 +22,56 @@ struct OiioModule {
                char* error, std::size_t errorSize) = nullptr;
 };
 
-// Loads the module from beside the running program. dlopen counts its
-// loads, so a second call is cheap; the module is never unloaded, as
-// OpenImageIO's threads may outlive a write.
+#ifndef SFRENDER_MODULE_DIR
+#define SFRENDER_MODULE_DIR "../lib/scenefile"
+#endif
+
+// The module's file: in SFRENDER_MODULE_DIR (tools/CMakeLists.txt: the
+// prefix's lib/scenefile/ seen from its bin/), relative to the folder of the
+// running program as /proc/self/exe names it, so that an installed prefix
+// works wherever it is moved; the build folder has the same layout. Empty
+// when the program's own path cannot be read.
+std::filesystem::path oiioModulePath() {
+  std::error_code failed;
+  std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", failed);
+  if (failed || program.empty()) return {};
+  return (program.parent_path() / SFRENDER_MODULE_DIR / "sfrender_oiio.so").lexically_normal();
+}
+
+// Why the module did not load, for a message that says where it was looked for.
+std::string moduleFailure(const std::filesystem::path& file, const std::string& why) {
+  if (file.empty()) {
+    return "OpenImageIO's module (sfrender_oiio.so), which writes every format but .ppm, could "
+           "not be loaded: the program's own path (/proc/self/exe), which it is found from, "
+           "cannot be read";
+  }
+  std::string reason = why;
+  std::string prefix = file.string() + ": ";
+  if (reason.compare(0, prefix.size(), prefix) == 0) reason.erase(0, prefix.size());
+  return "OpenImageIO's module, which writes every format but .ppm, could not be loaded from " +
+         file.string() + (reason.empty() ? "" : " (" + reason + ")");
+}
+
+// Loads the module (oiioModulePath). dlopen counts its loads, so a second
+// call is cheap; the module is never unloaded, as OpenImageIO's threads may
+// outlive a write.
 std::optional<OiioModule> loadOiio(std::string& error) {
-  std::error_code ignored;
-  std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ignored);
-  std::filesystem::path file = program.parent_path() / "sfrender_oiio.so";
+  std::filesystem::path file = oiioModulePath();
+  if (file.empty()) {
+    error = moduleFailure(file, "");
+    return std::nullopt;
+  }
   void* handle = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* why = ::dlerror();
-    error = "cannot load OpenImageIO's module: " + std::string(why ? why : file.string());
+    error = moduleFailure(file, why ? why : "");
     return std::nullopt;
   }
   OiioModule m;
   m.format = reinterpret_cast<decltype(m.format)>(::dlsym(handle, "sfrender_oiio_format"));
   m.write = reinterpret_cast<decltype(m.write)>(::dlsym(handle, "sfrender_oiio_write"));
   if (!m.format || !m.write) {
-    error = "cannot load OpenImageIO's module: " + file.string() + " lacks its functions";
+    error = moduleFailure(file, "it lacks its functions");
     return std::nullopt;
   }
   return m;
@@ -70,12 +102,19 @@ unsigned char quantizeChannel(float value) {
   return static_cast<unsigned char>(std::lround(clamped * 255.0f));
 }
 
+std::optional<std::string> imageRefusal(const std::filesystem::path& path) {
+  std::string useInstead = "use " + imageExtensionList();
+  if (!hasImageExtension(path)) return useInstead;
+  if (isPpm(path)) return std::nullopt;
+  std::string error;
+  std::optional<OiioModule> oiio = loadOiio(error);
+  if (!oiio) return error + "; .ppm needs no module";
+  if (oiio->format(path.c_str()) < 0) return useInstead;
+  return std::nullopt;
+}
+
 bool canWriteImage(const std::filesystem::path& path) {
-  if (!hasImageExtension(path)) return false;
-  if (isPpm(path)) return true;
-  std::string ignored;
-  std::optional<OiioModule> oiio = loadOiio(ignored);
-  return oiio && oiio->format(path.c_str()) >= 0;
+  return !imageRefusal(path);
 }
 
 std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path) {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "renderer/render.h"
@@ -13,6 +14,11 @@ namespace tools {
 // tools/common/output_file_format.h's, ".ppm" here and every other through
 // OpenImageIO (whose module must load and take it).
 bool canWriteImage(const std::filesystem::path& path);
+
+// Why canWriteImage is false for `path`, as the end of a sentence: which
+// extensions to use instead, or that OpenImageIO's module could not be
+// loaded, from where and why (.ppm needs none); nothing when it is true.
+std::optional<std::string> imageRefusal(const std::filesystem::path& path);
 
 // The bytes of a width x height image written to `path` when it is a ".ppm"
 // (the header and three bytes a pixel); 0 for another format, whose size

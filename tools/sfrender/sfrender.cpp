@@ -156,9 +156,9 @@ std::optional<int> targetRefusal(const std::string& input, const SceneAndTarget&
     printDiagnostics(diagnostics, err);
     return toInt(ExitCode::InvalidInput);
   }
-  if (!canWriteImage(target)) {
-    err << "sfrender: cannot write images named '" << target.string() << "': use "
-        << imageExtensionList() << "\n";
+  if (std::optional<std::string> refusal = imageRefusal(target)) {
+    err << "sfrender: cannot write images named '" << target.string() << "': " << *refusal
+        << "\n";
     return toInt(ExitCode::Usage);
   }
   std::string error;

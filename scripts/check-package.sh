@@ -1,0 +1,189 @@
+#!/usr/bin/env bash
+# The package as its users get it (ctest: package.install-and-use, label
+# "package"):
+#
+#   bash scripts/check-package.sh BUILD_DIR
+#
+# 1. installs the build (already built: `cmake --install`, nothing is
+#    rebuilt) to a temporary prefix, and checks its layout;
+# 2. builds examples/count-objects out of tree against that prefix alone:
+#    with find_package (CMAKE_PREFIX_PATH), shared and static, and with
+#    pkg-config (PKG_CONFIG_PATH), shared and --static;
+# 3. runs each on a scene file, a glTF file and a POV-Ray file ("N objects,
+#    M lights", exit 0) and on an invalid file (FILE:LINE:COLUMN: lines,
+#    exit 1), and once with no file (exit 2);
+# 4. moves the prefix elsewhere and renders a PNG with the moved sfrender
+#    (its OpenImageIO module found relative to the program), then a lone
+#    copy of sfrender, which cannot find the module, must say so.
+# Everything happens under a temporary folder, removed at the end.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${1:?usage: check-package.sh BUILD_DIR}
+build=$(cd "$build" && pwd)
+work=$(mktemp -d "${TMPDIR:-/tmp}/scenefile-package.XXXXXX")
+work=$(cd "$work" && pwd -P)
+trap 'rm -rf "$work"' EXIT
+
+failures=0
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+step() { echo "== $*"; }
+
+# The compiler of the build, and its launcher (ccache) if any, so that the
+# example is built the same way.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt" | head -n 1; }
+cxx=$(cache_value CMAKE_CXX_COMPILER)
+launcher=$(cache_value CMAKE_CXX_COMPILER_LAUNCHER)
+cmake_args=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_COMPILER=$cxx"
+            "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Werror")
+[[ -n $launcher ]] && cmake_args+=("-DCMAKE_CXX_COMPILER_LAUNCHER=$launcher")
+
+# --- 1. Install ---------------------------------------------------------------
+prefix=$work/prefix
+step "cmake --install $build --prefix $prefix"
+cmake --install "$build" --prefix "$prefix" >"$work/install.log" ||
+  { cat "$work/install.log" >&2; exit 1; }
+soname_file=$prefix/lib/libscenefile.so.0
+for file in include/scenefile/read.h include/scenefile/formats.def \
+            include/scenefile/options/gltf.h lib/libscenefile.a lib/libscenefile.so \
+            lib/libscenefile.so.0 lib/libscenefile.so.0.1.0 \
+            lib/cmake/scenefile/scenefileConfig.cmake \
+            lib/cmake/scenefile/scenefileConfigVersion.cmake \
+            lib/cmake/scenefile/scenefileTargets.cmake \
+            lib/cmake/scenefile/scenefileStaticTargets.cmake lib/pkgconfig/scenefile.pc \
+            lib/scenefile/sfrender_oiio.so bin/sfcheck bin/sfconvert bin/sfrender; do
+  [[ -e $prefix/$file ]] || fail "the install has no $file"
+done
+if [[ -e $soname_file ]]; then
+  soname=$(objdump -p "$soname_file" | sed -n 's/^ *SONAME *//p')
+  [[ $soname == libscenefile.so.0 ]] || fail "libscenefile.so's SONAME is '$soname', not libscenefile.so.0"
+fi
+[[ ! -e $prefix/bin/sfrender_oiio.so ]] || fail "sfrender_oiio.so is installed in bin/"
+
+# --- 2. and 3. Build the example each way, and run it ---------------------------
+valid_sf=$root/testdata/valid/all-primitives.sf
+gltf=$root/testdata/gltf/torus-and-sphere.gltf
+pov=$root/testdata/pov/valid/losses.pov
+invalid=$root/testdata/invalid/blank-line-inside-record.sf
+
+# check_program NAME PROGRAM: the four files and a usage error.
+check_program() {
+  local name=$1 program=$2 file status out err
+  for file in "$valid_sf" "$gltf" "$pov"; do
+    status=0
+    out=$("$program" "$file" 2>"$work/err") || status=$?
+    if [[ $status -ne 0 || ! $out =~ ^[0-9]+\ objects,\ [0-9]+\ lights$ ]]; then
+      fail "$name $(basename "$file"): exit $status, printed '$out'; $(cat "$work/err")"
+    else
+      echo "$name $(basename "$file"): $out"
+    fi
+  done
+  status=0
+  out=$("$program" "$invalid" 2>"$work/err") || status=$?
+  err=$(cat "$work/err")
+  if [[ $status -ne 1 || -n $out ]] ||
+     ! grep -qE "^$invalid:[0-9]+:[0-9]+: error: " "$work/err"; then
+    fail "$name on an invalid file: exit $status (not 1), stdout '$out', stderr '$err'"
+  else
+    echo "$name $(basename "$invalid"): exit 1, $(head -n 1 "$work/err" | sed "s|^$root/||")"
+  fi
+  status=0
+  "$program" >/dev/null 2>&1 || status=$?
+  [[ $status -eq 2 ]] || fail "$name with no file: exit $status, not 2"
+}
+
+example=$root/examples/count-objects
+for kind in shared static; do
+  step "find_package(scenefile), $kind"
+  flag=OFF
+  [[ $kind == static ]] && flag=ON
+  if cmake -S "$example" -B "$work/cmake-$kind" "${cmake_args[@]}" \
+       "-DCMAKE_PREFIX_PATH=$prefix" -DCOUNT_OBJECTS_STATIC=$flag >"$work/cmake-$kind.log" 2>&1 &&
+     cmake --build "$work/cmake-$kind" >>"$work/cmake-$kind.log" 2>&1; then
+    check_program "cmake-$kind" "$work/cmake-$kind/count-objects"
+  else
+    fail "building count-objects with find_package ($kind)"
+    cat "$work/cmake-$kind.log" >&2
+  fi
+done
+# The shared build names libscenefile.so.0; the static one does not.
+if [[ -x $work/cmake-shared/count-objects ]]; then
+  objdump -p "$work/cmake-shared/count-objects" | grep -q 'NEEDED *libscenefile\.so\.0$' ||
+    fail "count-objects (shared) does not need libscenefile.so.0"
+fi
+if [[ -x $work/cmake-static/count-objects ]]; then
+  ! objdump -p "$work/cmake-static/count-objects" | grep -q 'NEEDED *libscenefile' ||
+    fail "count-objects (static) needs libscenefile.so"
+fi
+
+export PKG_CONFIG_PATH=$prefix/lib/pkgconfig
+compile=(${launcher:+"$launcher"} "$cxx" -std=c++20 -O2 -Wall -Wextra -Werror)
+step "pkg-config scenefile: $(pkg-config --cflags --libs scenefile)"
+# shellcheck disable=SC2046
+if "${compile[@]}" "$example/count_objects.cpp" -o "$work/pc-shared" \
+     $(pkg-config --cflags --libs scenefile) "-Wl,-rpath,$(pkg-config --variable=libdir scenefile)" \
+     2>"$work/pc-shared.log"; then
+  check_program pkg-config "$work/pc-shared"
+else
+  fail "building count-objects with pkg-config"
+  cat "$work/pc-shared.log" >&2
+fi
+# --static: the static library alone (a folder where -lscenefile finds only
+# libscenefile.a) needs nothing that the --static line leaves out.
+step "pkg-config --static scenefile: $(pkg-config --static --libs scenefile)"
+mkdir -p "$work/static-only"
+ln -s "$prefix/lib/libscenefile.a" "$work/static-only/libscenefile.a"
+# shellcheck disable=SC2046
+if "${compile[@]}" "$example/count_objects.cpp" -o "$work/pc-static" -L"$work/static-only" \
+     $(pkg-config --cflags --static --libs scenefile) 2>"$work/pc-static.log"; then
+  check_program "pkg-config --static" "$work/pc-static"
+  ! objdump -p "$work/pc-static" | grep -q 'NEEDED *libscenefile' ||
+    fail "count-objects (pkg-config --static) needs libscenefile.so"
+else
+  fail "building count-objects with pkg-config --static"
+  cat "$work/pc-static.log" >&2
+fi
+
+# --- 4. A moved prefix --------------------------------------------------------
+moved=$work/elsewhere/moved-prefix
+mkdir -p "$(dirname "$moved")"
+mv "$prefix" "$moved"
+step "the prefix moved to $moved: sfrender -o render.png"
+status=0
+(cd "$work" && "$moved/bin/sfrender" "$root/examples/red-sphere.sf" -o "$work/render.png" \
+   --width 32 --height 24 --quiet) 2>"$work/render.err" || status=$?
+if [[ $status -ne 0 ]]; then
+  fail "the moved sfrender exited $status: $(cat "$work/render.err")"
+elif [[ ! -s $work/render.png || $(head -c 8 "$work/render.png" | od -An -tx1 | tr -d ' \n') != 89504e470d0a1a0a ]]; then
+  fail "the moved sfrender wrote no PNG"
+else
+  echo "render.png: a PNG of $(stat -c %s "$work/render.png") bytes"
+fi
+# The moved library still serves its programs.
+if [[ -x $work/cmake-shared/count-objects ]]; then
+  status=0
+  LD_LIBRARY_PATH=$moved/lib "$work/cmake-shared/count-objects" "$valid_sf" >/dev/null || status=$?
+  [[ $status -eq 0 ]] || fail "count-objects with the moved libscenefile.so: exit $status"
+fi
+# A lone copy of sfrender finds no module and says so; .ppm still works.
+mkdir -p "$work/lone"
+cp "$moved/bin/sfrender" "$work/lone/sfrender"
+status=0
+"$work/lone/sfrender" --width 8 --height 8 -o "$work/lone.png" 2>"$work/lone.err" || status=$?
+if [[ $status -ne 2 ]] || ! grep -q "could not be loaded from $work/lib/scenefile/sfrender_oiio.so" "$work/lone.err" ||
+   ! grep -q '\.ppm needs no module' "$work/lone.err"; then
+  fail "a lone sfrender asked for a PNG: exit $status, $(cat "$work/lone.err")"
+else
+  echo "a lone sfrender: $(cat "$work/lone.err")"
+fi
+"$work/lone/sfrender" --width 8 --height 8 --quiet -o "$work/lone.ppm" ||
+  fail "a lone sfrender cannot write a PPM"
+
+if ((failures > 0)); then
+  echo "FAIL: $failures checks of the installed package" >&2
+  exit 1
+fi
+echo "PASS: the installed package builds and runs count-objects four ways, and a moved prefix renders a PNG"
