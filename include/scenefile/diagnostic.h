@@ -1,8 +1,9 @@
-// Diagnostics: what the library reports about an input, as values.
-//
-// The library collects diagnostics and never prints or exits; the tools decide
-// how to show them (text in the compiler's form, or JSON). Every kind of
-// problem has a stable code, listed in one table in docs/DIAGNOSTICS.md.
+/// @file
+/// Diagnostics: what the library reports about an input, as values.
+///
+/// The library collects diagnostics and never prints or exits; the tools decide
+/// how to show them (text in the compiler's form, or JSON). Every kind of
+/// problem has a stable code, listed in one table in docs/DIAGNOSTICS.md.
 #pragma once
 
 #include <cstdint>
@@ -17,8 +18,8 @@ enum class Severity : std::uint8_t { Note, Warning, Error };
 
 std::string_view severityName(Severity severity);
 
-// A place in a source file. Lines and columns count from 1; columns count
-// bytes. A span of length 0 points between two characters (the end of a line).
+/// A place in a source file. Lines and columns count from 1; columns count
+/// bytes. A span of length 0 points between two characters (the end of a line).
 struct SourceSpan {
   std::uint32_t line = 0;
   std::uint32_t column = 0;
@@ -50,14 +51,14 @@ std::string_view codeName(DiagnosticCode code);
 /// and case-sensitive.
 std::optional<DiagnosticCode> diagnosticCodeFromName(std::string_view name);
 
-// A replacement the user (or an editor) can apply to fix the problem.
+/// A replacement the user (or an editor) can apply to fix the problem.
 struct FixIt {
   SourceSpan span;
   std::string replacement;
   friend bool operator==(const FixIt&, const FixIt&) = default;
 };
 
-// A secondary location that explains a diagnostic ("block opened here").
+/// A secondary location that explains a diagnostic ("block opened here").
 struct DiagnosticNote {
   SourceSpan span;
   std::string message;
@@ -69,9 +70,9 @@ struct Diagnostic {
   DiagnosticCode code = DiagnosticCode::UnknownFormat;
   std::string file;
   SourceSpan span;
-  // Lower case, no final period, as in clang.
+  /// Lower case, no final period, as in clang.
   std::string message;
-  // One line of advice printed after the message, or empty.
+  /// One line of advice printed after the message, or empty.
   std::string hint;
   std::vector<DiagnosticNote> notes;
   std::optional<FixIt> fixIt;
@@ -79,9 +80,9 @@ struct Diagnostic {
   friend bool operator==(const Diagnostic&, const Diagnostic&) = default;
 };
 
-// Collects the diagnostics of one operation, in the order they were found.
-// After `errorLimit` errors the list takes no more and says so once, so that a
-// file of garbage costs bounded memory; readers stop when `full()`.
+/// Collects the diagnostics of one operation, in the order they were found.
+/// After `errorLimit` errors the list takes no more and says so once, so that a
+/// file of garbage costs bounded memory; readers stop when `full()`.
 class DiagnosticList {
  public:
   static constexpr std::size_t kDefaultErrorLimit = 1000;
