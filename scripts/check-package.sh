@@ -37,6 +37,9 @@ step() { echo "== $*"; }
 cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt" | head -n 1; }
 cxx=$(cache_value CMAKE_CXX_COMPILER)
 launcher=$(cache_value CMAKE_CXX_COMPILER_LAUNCHER)
+# lib, or lib/x86_64-linux-gnu for a build configured for /usr.
+libdir=$(cache_value CMAKE_INSTALL_LIBDIR)
+libdir=${libdir:-lib}
 cmake_args=(-DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_COMPILER=$cxx"
             "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Werror")
 [[ -n $launcher ]] && cmake_args+=("-DCMAKE_CXX_COMPILER_LAUNCHER=$launcher")
@@ -46,15 +49,15 @@ prefix=$work/prefix
 step "cmake --install $build --prefix $prefix"
 cmake --install "$build" --prefix "$prefix" >"$work/install.log" ||
   { cat "$work/install.log" >&2; exit 1; }
-soname_file=$prefix/lib/libscenefile.so.0
+soname_file=$prefix/$libdir/libscenefile.so.0
 for file in include/scenefile/read.h include/scenefile/formats.def \
-            include/scenefile/options/gltf.h lib/libscenefile.a lib/libscenefile.so \
-            lib/libscenefile.so.0 lib/libscenefile.so.0.1.0 \
-            lib/cmake/scenefile/scenefileConfig.cmake \
-            lib/cmake/scenefile/scenefileConfigVersion.cmake \
-            lib/cmake/scenefile/scenefileTargets.cmake \
-            lib/cmake/scenefile/scenefileStaticTargets.cmake lib/pkgconfig/scenefile.pc \
-            lib/scenefile/sfrender_oiio.so bin/sfcheck bin/sfconvert bin/sfrender; do
+            include/scenefile/options/gltf.h "$libdir"/libscenefile.a "$libdir"/libscenefile.so \
+            "$libdir"/libscenefile.so.0 "$libdir"/libscenefile.so.0.1.0 \
+            "$libdir"/cmake/scenefile/scenefileConfig.cmake \
+            "$libdir"/cmake/scenefile/scenefileConfigVersion.cmake \
+            "$libdir"/cmake/scenefile/scenefileTargets.cmake \
+            "$libdir"/cmake/scenefile/scenefileStaticTargets.cmake "$libdir"/pkgconfig/scenefile.pc \
+            "$libdir"/scenefile/sfrender_oiio.so bin/sfcheck bin/sfconvert bin/sfrender; do
   [[ -e $prefix/$file ]] || fail "the install has no $file"
 done
 if [[ -e $soname_file ]]; then
@@ -119,7 +122,7 @@ if [[ -x $work/cmake-static/count-objects ]]; then
     fail "count-objects (static) needs libscenefile.so"
 fi
 
-export PKG_CONFIG_PATH=$prefix/lib/pkgconfig
+export PKG_CONFIG_PATH=$prefix/$libdir/pkgconfig
 compile=(${launcher:+"$launcher"} "$cxx" -std=c++20 -O2 -Wall -Wextra -Werror)
 step "pkg-config scenefile: $(pkg-config --cflags --libs scenefile)"
 # shellcheck disable=SC2046
@@ -135,7 +138,7 @@ fi
 # libscenefile.a) needs nothing that the --static line leaves out.
 step "pkg-config --static scenefile: $(pkg-config --static --libs scenefile)"
 mkdir -p "$work/static-only"
-ln -s "$prefix/lib/libscenefile.a" "$work/static-only/libscenefile.a"
+ln -s "$prefix/$libdir/libscenefile.a" "$work/static-only/libscenefile.a"
 # shellcheck disable=SC2046
 if "${compile[@]}" "$example/count_objects.cpp" -o "$work/pc-static" -L"$work/static-only" \
      $(pkg-config --cflags --static --libs scenefile) 2>"$work/pc-static.log"; then
@@ -165,7 +168,7 @@ fi
 # The moved library still serves its programs.
 if [[ -x $work/cmake-shared/count-objects ]]; then
   status=0
-  LD_LIBRARY_PATH=$moved/lib "$work/cmake-shared/count-objects" "$valid_sf" >/dev/null || status=$?
+  LD_LIBRARY_PATH=$moved/$libdir "$work/cmake-shared/count-objects" "$valid_sf" >/dev/null || status=$?
   [[ $status -eq 0 ]] || fail "count-objects with the moved libscenefile.so: exit $status"
 fi
 # A lone copy of sfrender finds no module and says so; .ppm still works.
@@ -173,7 +176,7 @@ mkdir -p "$work/lone"
 cp "$moved/bin/sfrender" "$work/lone/sfrender"
 status=0
 "$work/lone/sfrender" --width 8 --height 8 -o "$work/lone.png" 2>"$work/lone.err" || status=$?
-if [[ $status -ne 2 ]] || ! grep -q "could not be loaded from $work/lib/scenefile/sfrender_oiio.so" "$work/lone.err" ||
+if [[ $status -ne 2 ]] || ! grep -q "could not be loaded from $work/$libdir/scenefile/sfrender_oiio.so" "$work/lone.err" ||
    ! grep -q '\.ppm needs no module' "$work/lone.err"; then
   fail "a lone sfrender asked for a PNG: exit $status, $(cat "$work/lone.err")"
 else
