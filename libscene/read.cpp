@@ -91,7 +91,7 @@ ReadResult parseScene(std::string_view text, std::string fileName, const ReadOpt
   }
   std::optional<Format> format = detectFormat(text, fileName);
   if (!format) return unknownFormat(text, std::move(fileName), options);
-  return checked(formatInfo(*format).read(text, std::move(fileName), options));
+  return parseSceneAs(*format, text, std::move(fileName), options);
 }
 
 ReadResult parseSceneAs(Format format, std::string_view text, std::string fileName,
