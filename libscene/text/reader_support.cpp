@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "libscene/text/number.h"
+#include "scenefile/spelling.h"
 
 namespace scene {
 
@@ -20,26 +21,6 @@ bool equalsIgnoringCase(std::string_view a, std::string_view b) {
            return std::toupper(static_cast<unsigned char>(x)) ==
                   std::toupper(static_cast<unsigned char>(y));
          });
-}
-
-// Optimal string alignment distance, case-insensitive, capped: words longer
-// than any keyword are not worth comparing.
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  if (a.size() > 64 || b.size() > 64) return 64;
-  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-  auto up = [](char c) { return std::toupper(static_cast<unsigned char>(c)); };
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t cost = up(a[i - 1]) == up(b[j - 1]) ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && up(a[i - 1]) == up(b[j - 2]) && up(a[i - 2]) == up(b[j - 1])) {
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-      }
-    }
-  }
-  return d[a.size()][b.size()];
 }
 
 }  // namespace
@@ -141,17 +122,7 @@ std::optional<std::string_view> keywordInOtherCase(std::string_view word,
 
 std::optional<std::string_view> suggestKeyword(std::string_view word,
                                                std::span<const std::string_view> candidates) {
-  if (auto same = keywordInOtherCase(word, candidates)) return same;
-  std::optional<std::string_view> best;
-  std::size_t bestDistance = std::max<std::size_t>(1, word.size() / 3) + 1;
-  for (std::string_view c : candidates) {
-    std::size_t d = editDistance(word, c);
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = c;
-    }
-  }
-  return best;
+  return suggestSpelling(word, candidates);
 }
 
 void reportUnknownKeyword(const LineCursor& cursor, std::size_t tokenIndex,
