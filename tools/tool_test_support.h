@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/common/tool_streams.h"
 #include "tools/sfrender/sfrender.h"
 
 namespace tools {
@@ -23,9 +24,9 @@ inline const std::string kValidScene =
     "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
     "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
 
-// sfrender as a test runs it: standard error is no terminal.
-inline int sfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-  return runSfrender(argc, argv, out, err, false);
+// sfrender as a test runs it, with the memory as the machine has it.
+inline int sfrender(int argc, const char* const* argv, const ToolStreams& streams) {
+  return runSfrender(argc, argv, streams);
 }
 
 // An empty folder for the running test alone, `prefix`-PID-TEST under the
@@ -40,15 +41,17 @@ inline std::filesystem::path freshTestFolder(const std::string& prefix) {
 }
 
 // Runs a tool's entry point (runSfcheck, sfrender, ...) on `args`, the
-// program's name first, with `out` and `err` emptied first.
+// program's name first, with `out` and `err` emptied first, `input` as
+// standard input and no stream a terminal.
 template <typename Tool>
 int runTool(Tool tool, const std::vector<std::string>& args, std::ostringstream& out,
-            std::ostringstream& err) {
+            std::ostringstream& err, const std::string& input = "") {
   out.str("");
   err.str("");
+  std::istringstream in(input);
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
-  return tool(static_cast<int>(argv.size()), argv.data(), out, err);
+  return tool(static_cast<int>(argv.size()), argv.data(), ToolStreams(in, out, err));
 }
 
 // The names in a folder, sorted: to see that nothing half-written stayed.

@@ -77,6 +77,18 @@ TEST_F(ToolTest, SfcheckPrintsDiagnosticsInTheCompilersForm) {
                           "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
                           "sphere\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
   EXPECT_EQ(run(runSfcheck, {"sfcheck", bad}), toInt(ExitCode::InvalidInput));
+  // The source line quoted, the span underlined, the fix-it under it.
+  EXPECT_EQ(err_.str(),
+            bad +
+                ":7:1: error: unknown keyword 'sphere', expected a record name (CAMERA, LIGHT, "
+                "PLANE, SPHERE, CYLINDER or CUBE) [unknown-keyword]\n"
+                "    7 | sphere\n"
+                "      | ^~~~~~\n"
+                "      | SPHERE\n"
+                "  hint: keywords are upper case: did you mean 'SPHERE'?\n"
+                "sfcheck: 1 file checked, 1 error, 0 warnings\n");
+  // The short form: a line a diagnostic.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "short", bad}), toInt(ExitCode::InvalidInput));
   EXPECT_EQ(err_.str(),
             bad +
                 ":7:1: error: unknown keyword 'sphere', expected a record name (CAMERA, LIGHT, "
@@ -122,10 +134,10 @@ TEST(PrintableText, EscapesControlBytesAndWhatIsNotUtf8) {
   EXPECT_EQ(printableText("plain text, \xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80"),
             "plain text, \xC3\xA9t\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80");
   EXPECT_EQ(printableText(std::string("a\0b\tc\x7F", 6)), "a\\x00b\\x09c\\x7F");
-  EXPECT_EQ(printableText("\xC0\xAF"), "\\xC0\\xAF");              // overlong '/'
-  EXPECT_EQ(printableText("\xED\xA0\x80"), "\\xED\\xA0\\x80");      // a surrogate
+  EXPECT_EQ(printableText("\xC0\xAF"), "\\xC0\\xAF");                    // overlong '/'
+  EXPECT_EQ(printableText("\xED\xA0\x80"), "\\xED\\xA0\\x80");           // a surrogate
   EXPECT_EQ(printableText("\xF4\x90\x80\x80"), "\\xF4\\x90\\x80\\x80");  // past U+10FFFF
-  EXPECT_EQ(printableText("\xE2\x82"), "\\xE2\\x82");              // cut short
+  EXPECT_EQ(printableText("\xE2\x82"), "\\xE2\\x82");                    // cut short
   EXPECT_EQ(printableText("x\xFF"), "x\\xFF");
 }
 
@@ -161,7 +173,9 @@ TEST_F(ToolTest, ExitCodesForUsageAndUnreadableFiles) {
   EXPECT_EQ(run(runSfcheck, {"sfcheck", "--help"}), 0);
   EXPECT_NE(out_.str().find("--werror"), std::string::npos);
   EXPECT_EQ(run(runSfconvert, {"sfconvert", "--version"}), 0);
-  EXPECT_EQ(out_.str(), std::string(SCENEFILE_VERSION) + "\n");
+  EXPECT_EQ(out_.str(), std::string("sfconvert ") + SCENEFILE_VERSION + "\n");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "-V"}), 0);
+  EXPECT_EQ(out_.str(), std::string("sfconvert ") + SCENEFILE_VERSION + "\n");
 }
 
 TEST_F(ToolTest, SfconvertInstructionsToSceneFileReportsLosses) {
@@ -520,16 +534,18 @@ TEST_F(ToolTest, SfrenderSettingsAboveTheirLimitsAreUsageErrorsNamingTheFlag) {
   std::string out = path("a.ppm");
   EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--width", "8192", "--height", "8193"}),
             toInt(ExitCode::Usage));
-  EXPECT_EQ(err_.str(),
-            "sfrender: --width 8192 and --height 8193 make 67,117,056 pixels, more than the limit "
-            "of 67,108,864; raise it with --max-pixels\n");
+  EXPECT_EQ(
+      err_.str(),
+      "sfrender: error: --width 8192 and --height 8193 make 67,117,056 pixels, more than the limit "
+      "of 67,108,864; raise it with --max-pixels\n");
   EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--spp", "1025"}), toInt(ExitCode::Usage));
-  EXPECT_EQ(err_.str(),
-            "sfrender: --spp 1025 is more than the limit of 1024 samples per pixel; raise it with "
-            "--max-spp\n");
+  EXPECT_EQ(
+      err_.str(),
+      "sfrender: error: --spp 1025 is more than the limit of 1024 samples per pixel; raise it with "
+      "--max-spp\n");
   EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--depth", "65"}), toInt(ExitCode::Usage));
   EXPECT_EQ(err_.str(),
-            "sfrender: --depth 65 is more than the limit of 64 bounces; raise it with "
+            "sfrender: error: --depth 65 is more than the limit of 64 bounces; raise it with "
             "--max-depth\n");
   EXPECT_FALSE(fs::exists(out));
   // Lowered limits hold too, and raised ones let the render through.
@@ -552,7 +568,9 @@ TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   auto oneMebibyte = [] { return std::optional<std::uint64_t>(std::uint64_t{1} << 20); };
-  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, oneMebibyte),
+  std::istringstream none;
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), ToolStreams(none, out_, err_),
+                        oneMebibyte),
             toInt(ExitCode::OutOfResources));
   EXPECT_NE(err_.str().find("sfrender: error: the render needs about "), std::string::npos)
       << err_.str();
@@ -564,11 +582,14 @@ TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
   args = {"sfrender", "-o", out, "--width", "16", "--height", "12", "--quiet"};
   argv.clear();
   for (const std::string& a : args) argv.push_back(a.c_str());
-  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, oneMebibyte),
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), ToolStreams(none, out_, err_),
+                        oneMebibyte),
             0)
       << err_.str();
   auto unknown = [] { return std::optional<std::uint64_t>(); };
-  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), out_, err_, false, unknown), 0);
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), ToolStreams(none, out_, err_),
+                        unknown),
+            0);
 }
 
 // A file that cannot be read is no "0 errors": counted as an error, and

@@ -1,30 +1,69 @@
-// How the tools show diagnostics: the compilers' text form, or JSON.
+// How the tools show diagnostics: the compilers' text form, with the source
+// line quoted and the span underlined (docs/DIAGNOSTICS.md, "Output"), the
+// short form of one line each, or JSON.
 #pragma once
 
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
 
-#include <nlohmann/json.hpp>
-
 #include "scenefile/diagnostic.h"
+#include "tools/common/printable_text.h"
+#include "tools/common/source_excerpt.h"
+#include "tools/common/terminal_style.h"
 
 namespace tools {
 
-enum class DiagnosticFormat { Text, Json };
+// --format: text (quoting the source), short (one line a diagnostic, as
+// `rustc --error-format short`; what the tests' .expect files hold) or json.
+enum class DiagnosticFormat { Text, Short, Json };
 
-// The text as it is safe to show: a message may quote bytes from a file, and
-// a control byte (a terminal's escape sequence) or a byte that is not UTF-8
-// is written as \xNN instead, so that printing cannot drive the terminal and
-// JSON output stays valid UTF-8.
-std::string printableText(std::string_view text);
+std::optional<DiagnosticFormat> diagnosticFormatFromName(std::string_view name);
 
-// FILE:LINE:COLUMN: error: message [code], then "  hint: ..." and one line per
-// note. With `warningsAsErrors`, warnings print as errors.
-void printDiagnostic(const scene::Diagnostic& d, std::ostream& out, bool warningsAsErrors = false);
-void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out,
-                      bool warningsAsErrors = false);
+struct DiagnosticStyle {
+  TerminalStyle terminal;
+  bool quoteSource = true;        // the source line and caret under each message
+  bool warningsAsErrors = false;  // --werror: warnings print as errors
+  bool errorsOnly = false;        // --quiet: warnings and notes are not printed
+};
 
+// Prints diagnostics in the text forms:
+//
+//   FILE:LINE:COLUMN: error: message [code]
+//       LINE | the source line
+//            |     ^~~~
+//     hint: ...
+//   FILE:LINE:COLUMN: note: ...
+//
+// A diagnostic without a place prints "FILE: error: ...", and one whose line
+// was not captured (or with quoteSource off) prints no quote.
+class DiagnosticPrinter {
+ public:
+  DiagnosticPrinter(std::ostream& out, DiagnosticStyle style,
+                    const SourceExcerpts* sources = nullptr)
+      : out_(out), style_(style), sources_(sources) {}
+
+  void print(const scene::Diagnostic& d) const;
+  void print(const scene::DiagnosticList& list) const;
+
+ private:
+  void printLocation(const std::string& file, const scene::SourceSpan& span) const;
+  void quote(const std::string& file, const scene::SourceSpan& span,
+             const scene::FixIt* fixIt) const;
+
+  std::ostream& out_;
+  DiagnosticStyle style_;
+  const SourceExcerpts* sources_;
+};
+
+// The short form, uncoloured: for messages built outside a tool's run.
+void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out);
+
+// JSON: file, severity, code, message, line, column, length, endLine and
+// endColumn (the column just past the span, as in SARIF and LSP), hint,
+// notes and fixIt.
 nlohmann::json diagnosticToJson(const scene::Diagnostic& d, bool warningsAsErrors = false);
 nlohmann::json diagnosticsToJson(const scene::DiagnosticList& list, bool warningsAsErrors = false);
 

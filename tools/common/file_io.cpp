@@ -1,6 +1,7 @@
 #include "tools/common/file_io.h"
 
 #include <fcntl.h>
+#include <stdio.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
@@ -57,6 +58,23 @@ std::optional<std::string> readWholeFile(const std::filesystem::path& path, std:
 namespace {
 
 namespace fs = std::filesystem;
+
+// rename() that fails with EEXIST instead of replacing the target. Where
+// the file system has no RENAME_NOREPLACE (EINVAL), a hard link does the
+// same (link() never replaces), and the temporary's name goes after.
+bool renameWithoutReplacing(const fs::path& from, const fs::path& to, std::string& error) {
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return true;
+  int failure = errno;
+  if (failure == EINVAL || failure == ENOSYS) {
+    if (::link(from.c_str(), to.c_str()) == 0) {
+      ::unlink(from.c_str());
+      return true;
+    }
+    failure = errno;
+  }
+  error = failure == EEXIST ? kNoClobberMessage : std::strerror(failure);
+  return false;
+}
 
 // The permissions of a new file: 0666 less the umask. umask() can only be
 // read by setting it, so it is set back at once.
@@ -216,9 +234,11 @@ bool StagedFile::finish(std::string& error) {
   return true;
 }
 
-bool StagedFile::commit(std::string& error) {
+bool StagedFile::commit(std::string& error, bool replace) {
   if (!finished_ && !finish(error)) return false;
-  if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
+  if (!replace) {
+    if (!renameWithoutReplacing(temporary_, target_, error)) return false;
+  } else if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
     error = std::strerror(errno);
     return false;
   }
@@ -232,7 +252,17 @@ bool writeFileAtomically(const fs::path& path, std::string_view content, std::st
 }
 
 bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& error,
-                          fs::path* failed) {
+                          fs::path* failed, bool replace) {
+  if (!replace) {
+    // Refused before any is written, so that none of a set lands.
+    for (const FileToWrite& file : files) {
+      if (pathExists(file.path)) {
+        error = kNoClobberMessage;
+        if (failed) *failed = file.path;
+        return false;
+      }
+    }
+  }
   std::vector<StagedFile> staged(files.size());
   for (std::size_t i = 0; i < files.size(); ++i) {
     if (!staged[i].open(files[i].path, false, error) || !staged[i].write(files[i].content, error) ||
@@ -242,12 +272,17 @@ bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& er
     }
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
-    if (!staged[i].commit(error)) {
+    if (!staged[i].commit(error, replace)) {
       if (failed) *failed = files[i].path;
       return false;
     }
   }
   return true;
+}
+
+bool pathExists(const fs::path& path) {
+  std::error_code ec;
+  return fs::symlink_status(path, ec).type() != fs::file_type::not_found && !ec;
 }
 
 bool checkCanWrite(const fs::path& target, bool keepExtension, std::uint64_t bytes,

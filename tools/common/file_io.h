@@ -56,8 +56,11 @@ class StagedFile {
   // Flushes the temporary to disk, whoever wrote it, and closes it: a crash
   // after the rename must not leave a renamed but empty file.
   bool finish(std::string& error);
-  // Renames the finished temporary over the target.
-  bool commit(std::string& error);
+  // Renames the finished temporary over the target. With `replace` false
+  // (--no-clobber), an existing target is kept and commit fails, decided
+  // in the same step as the rename (RENAME_NOREPLACE), so that a file
+  // made meanwhile by another program is not replaced either.
+  bool commit(std::string& error, bool replace = true);
 
  private:
   void discard();
@@ -87,8 +90,16 @@ struct FileToWrite {
 // a kill leaves the new first file beside the old second one is that of one
 // rename() call, not that of a whole write.
 // `failed`, when given, gets the name of the file that could not be written.
+// With `replace` false (--no-clobber), none is written over an existing file.
 bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& error,
-                          std::filesystem::path* failed = nullptr);
+                          std::filesystem::path* failed = nullptr, bool replace = true);
+
+// Whether something is at `path` (a file, a folder, a link even to nothing),
+// which --no-clobber keeps.
+bool pathExists(const std::filesystem::path& path);
+
+// The message for an output that --no-clobber keeps.
+inline constexpr const char* kNoClobberMessage = "the file exists, and --no-clobber keeps it";
 
 // Whether `target` can be written, found out the way the write itself will
 // go: a StagedFile is opened (the temporary created) and discarded. For a

@@ -2,49 +2,80 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <limits>
+
 #include "scenefile/read.h"
 #include "tools/common/file_io.h"
+#include "tools/common/option_checks.h"
+#include "tools/common/tool_streams.h"
 
 namespace tools {
+
+namespace {
+
+// Standard input up to one byte past `maxBytes`, as readWholeFile reads a file.
+std::optional<std::string> readStream(std::istream& in, std::string& error,
+                                      std::uint64_t maxBytes) {
+  std::string text;
+  char chunk[1 << 16];
+  while (text.size() <= maxBytes) {
+    std::uint64_t room = maxBytes + 1 - text.size();
+    in.read(chunk, static_cast<std::streamsize>(std::min<std::uint64_t>(sizeof chunk, room)));
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (!in) break;
+  }
+  if (in.bad()) {
+    error = "standard input could not be read";
+    return std::nullopt;
+  }
+  return text;
+}
+
+}  // namespace
 
 void addReadLimitOptions(CLI::App& app, scene::ReadOptions& options) {
   app.add_option("--max-file-size", options.maxFileSize,
                  "refuse an input larger than this many bytes (suffixes such as 512MiB or 2GB "
                  "work)")
+      ->option_text("SIZE")
       ->transform(CLI::AsSizeValue(true))
-      // CLI11 reads "-5" as a huge unsigned number: the sign is refused
-      // first (a transform added later runs earlier).
-      ->transform(CLI::Validator(
-          [](std::string& value) {
-            return value.find('-') == std::string::npos ? std::string()
-                                                        : std::string("a size is not negative");
-          },
-          ""))
-      ->capture_default_str();
+      // A transform added later runs earlier: the words of this one, not
+      // CLI11's, tell of a value that is no size ("-5" would otherwise read
+      // as a huge unsigned number).
+      ->transform(sizeInBytes());
   app.add_option("--max-objects", options.maxObjects,
                  "stop reading at the first object or light past this many")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+      ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--max-vertices", options.gltf.maxVertices,
                  "glTF: refuse a file with more mesh vertices than this")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+      ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--max-nodes", options.gltf.maxNodes,
                  "glTF: refuse a file with more nodes and other objects than this (a material "
                  "counts 5, a camera or a light 2)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+      ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
 }
 
-InputText readInputText(const std::string& file, const scene::ReadOptions& options) {
-  InputText input{std::nullopt, {}, scene::DiagnosticList(file, options.errorLimit)};
-  struct stat info {};
-  if (::stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode)) {
-    if (!scene::checkFileSize(static_cast<std::uint64_t>(info.st_size), options, input.refused)) {
-      return input;
+std::string inputDisplayName(const std::string& file) {
+  return isStandardStream(file) ? kStandardInputName : file;
+}
+
+InputText readInputText(const std::string& file, const scene::ReadOptions& options,
+                        std::istream* standardInput) {
+  InputText input{
+      std::nullopt, {}, scene::DiagnosticList(inputDisplayName(file), options.errorLimit)};
+  std::optional<std::string> text;
+  if (isStandardStream(file) && standardInput) {
+    text = readStream(*standardInput, input.readError, options.maxFileSize);
+  } else {
+    struct stat info {};
+    if (::stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode)) {
+      if (!scene::checkFileSize(static_cast<std::uint64_t>(info.st_size), options, input.refused)) {
+        return input;
+      }
     }
+    text = readWholeFile(file, input.readError, options.maxFileSize);
   }
-  std::optional<std::string> text = readWholeFile(file, input.readError, options.maxFileSize);
   if (!text) return input;
   if (text->size() > options.maxFileSize) {
     // Not a regular file, or one that grew: its whole size is unknown.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <istream>
 #include <optional>
 #include <string>
 
@@ -24,7 +25,13 @@ struct InputText {
 };
 
 // A regular file over the limit is refused by its size, unread; anything
-// else (a pipe) is read up to one byte past the limit.
-InputText readInputText(const std::string& file, const scene::ReadOptions& options);
+// else (a pipe) is read up to one byte past the limit. The name "-" reads
+// `standardInput` (when given) the same way, and its diagnostics name it
+// "<stdin>".
+InputText readInputText(const std::string& file, const scene::ReadOptions& options,
+                        std::istream* standardInput = nullptr);
+
+// The name diagnostics give an input: "<stdin>" for "-", else the name.
+std::string inputDisplayName(const std::string& file);
 
 }  // namespace tools

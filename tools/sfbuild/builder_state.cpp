@@ -6,11 +6,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 
-#include "scenefile/matrix.h"
-#include "scenefile/convert.h"
-#include "scenefile/transform.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "scenefile/convert.h"
+#include "scenefile/matrix.h"
+#include "scenefile/transform.h"
 
 namespace sfbuild {
 namespace {
@@ -388,6 +388,7 @@ void handleScroll(BuilderState& state, double offset) {
 }
 
 std::optional<std::string> saveScene(BuilderState& state, const FileSystem& files) {
+  ++state.saveAttempts;
   int n = std::max(state.nextSaveNumber, 1);
   std::string name;
   for (;; ++n) {

@@ -3,6 +3,7 @@
 // unit tests make them directly.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -65,6 +66,8 @@ struct BuilderState {
   // reason it failed).
   int nextSaveNumber = 1;
   std::string lastSave;
+  // Counts the saves tried, so that the program can tell each of them once.
+  std::uint64_t saveAttempts = 0;
   bool idView = false;
   bool showHelp = false;
 };

@@ -4,6 +4,8 @@
 // GLFW after the loader, which brings the GL declarations.
 #include <GLFW/glfw3.h>
 
+#include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -14,8 +16,12 @@
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
+#include "tools/common/standard_streams.h"
+#include "tools/common/tool_output.h"
+#include "tools/common/tool_streams.h"
 #include "tools/sfbuild/builder_state.h"
 #include "tools/sfbuild/gl_view.h"
+#include "tools/sfbuild/sfbuild_command_line.h"
 
 namespace {
 
@@ -23,7 +29,23 @@ struct App {
   sfbuild::BuilderState state;
   sfbuild::FileSystem files;
   std::string title;
+  bool quiet = false;
+  const tools::ToolOutput* output = nullptr;
+  std::uint64_t savesTold = 0;
 };
+
+// Says on standard error what the last save did, once: "sfbuild: wrote
+// Scene1.sf", or why it could not.
+void tellSave(App& app) {
+  if (app.state.saveAttempts == app.savesTold || !app.output) return;
+  app.savesTold = app.state.saveAttempts;
+  const std::string& what = app.state.lastSave;
+  if (what.starts_with("saved ")) {
+    app.output->info("wrote " + tools::printableText(what.substr(6)));
+  } else {
+    app.output->error(tools::printableText(what));
+  }
+}
 
 App* appOf(GLFWwindow* window) {
   return static_cast<App*>(glfwGetWindowUserPointer(window));
@@ -62,7 +84,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   App& app = *appOf(window);
   bool helpBefore = app.state.showHelp;
   sfbuild::handleKey(app.state, k, app.files);
-  if (app.state.showHelp && !helpBefore) {
+  tellSave(app);
+  if (app.state.showHelp && !helpBefore && !app.quiet) {
     for (const std::string& line : sfbuild::helpLines()) std::cout << line << "\n";
     std::cout.flush();
   }
@@ -99,43 +122,97 @@ void onFramebufferSize(GLFWwindow* window, int width, int height) {
   appOf(window)->state.height = height;
 }
 
+// Why GLFW failed, from its error callback, for the message that says so.
+std::string& glfwFailure() {
+  static std::string failure;  // GLFW's callback takes no user pointer
+  return failure;
+}
+
+void onGlfwError(int, const char* description) {
+  glfwFailure() = description ? description : "";
+}
+
+// GLFW's reason, in the house style: lower case, no final period.
+std::string glfwReason() {
+  std::string reason = glfwFailure();
+  while (!reason.empty() && (reason.back() == '.' || reason.back() == '\n')) reason.pop_back();
+  if (!reason.empty()) {
+    reason[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[0])));
+  }
+  return reason;
+}
+
+// The scene named on the command line, or the exit status.
+std::optional<int> openScene(const sfbuild::SfbuildOptions& o, const tools::ToolOutput& output,
+                             App& app) {
+  tools::InputText text = tools::readInputText(o.input, o.read, &output.streams().in);
+  tools::DiagnosticStyle style = output.diagnosticStyle(tools::DiagnosticFormat::Text);
+  if (text.tooLarge()) {
+    tools::DiagnosticPrinter(output.err(), style).print(text.refused);
+    return tools::toInt(tools::ExitCode::InvalidInput);
+  }
+  std::string shown = tools::inputDisplayName(o.input);
+  if (!text.text) {
+    output.err() << tools::printableText(shown) << ": "
+                 << output.style().severity(scene::Severity::Error, "error:")
+                 << " cannot read the file: " << tools::printableText(text.readError) << "\n";
+    return tools::toInt(tools::ExitCode::IoError);
+  }
+  scene::ReadResult result = scene::parseScene(*text.text, shown, o.read);
+  tools::SourceExcerpts sources;
+  sources.capture(shown, *text.text, result.diagnostics);
+  tools::DiagnosticPrinter(output.err(), style, &sources).print(result.diagnostics);
+  if (!result.ok()) return tools::toInt(tools::ExitCode::InvalidInput);
+  app.state = sfbuild::stateForScene(std::move(result.scene), o.width, o.height);
+  return std::nullopt;
+}
+
+// The window, or nothing after saying why there is none: no display (or
+// none that GLFW can use) and no OpenGL 3.3 there are the environment's
+// lack, not the input's (ExitCode::NoDisplay).
+GLFWwindow* openWindow(const sfbuild::SfbuildOptions& o, const tools::ToolOutput& output) {
+  glfwSetErrorCallback(onGlfwError);
+  if (!glfwInit()) {
+    std::string reason = glfwReason();
+    output.error("no display to open a window on" + (reason.empty() ? "" : ": " + reason),
+                 "run sfbuild in a graphical session, or under xvfb-run for scripts");
+    return nullptr;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 0);
+  GLFWwindow* window = glfwCreateWindow(o.width, o.height, "sfbuild", nullptr, nullptr);
+  if (!window) {
+    std::string reason = glfwReason();
+    output.error("cannot open an OpenGL 3.3 core window" + (reason.empty() ? "" : ": " + reason),
+                 "the display's OpenGL is older than 3.3; Mesa's software OpenGL has 4.5");
+    glfwTerminate();
+  }
+  return window;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli{"The interactive scene builder: P saves Scene<n>.sf in the current folder",
-               "sfbuild"};
-  cli.set_version_flag("--version", SCENEFILE_VERSION);
-  std::string input;
-  int width = 640, height = 480;
-  bool idView = false;
-  cli.add_option("scene", input, "a scene to open (any format sfrender reads)");
-  cli.add_option("--width", width, "window width in pixels")->check(CLI::Range(64, 8192));
-  cli.add_option("--height", height, "window height in pixels")->check(CLI::Range(64, 8192));
-  cli.add_flag("--id-view", idView, "draw each object in a flat colour of its own (F9 toggles)");
-  scene::ReadOptions readOptions;
-  tools::addReadLimitOptions(cli, readOptions);
-  if (auto code = tools::parseCommandLine(cli, argc, argv, std::cout, std::cerr)) {
-    return tools::toInt(*code);
+  tools::ToolStreams streams = tools::processStreams();
+  sfbuild::SfbuildOptions options;
+  std::unique_ptr<CLI::App> cli = sfbuild::makeSfbuildCommandLine(options);
+  if (auto code = tools::parseCommandLine(*cli, argc, argv, streams.out, streams.err)) {
+    return tools::closeStandardStreams("sfbuild", tools::toInt(*code));
   }
+  tools::ToolOutput output("sfbuild", streams, options.common);
 
   App app;
-  app.state = sfbuild::initialState(width, height);
-  if (!input.empty()) {
-    tools::InputText text = tools::readInputText(input, readOptions);
-    if (text.tooLarge()) {
-      tools::printDiagnostics(text.refused, std::cerr);
-      return tools::toInt(tools::ExitCode::InvalidInput);
+  app.quiet = options.common.quiet;
+  app.state = sfbuild::initialState(options.width, options.height);
+  if (!options.input.empty()) {
+    if (std::optional<int> status = openScene(options, output, app)) {
+      return tools::closeStandardStreams("sfbuild", *status);
     }
-    if (!text.text) {
-      std::cerr << "sfbuild: " << text.readError << "\n";
-      return tools::toInt(tools::ExitCode::IoError);
-    }
-    scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
-    tools::printDiagnostics(result.diagnostics, std::cerr);
-    if (!result.ok()) return tools::toInt(tools::ExitCode::InvalidInput);
-    app.state = sfbuild::stateForScene(std::move(result.scene), width, height);
   }
-  app.state.idView = idView;
+  app.state.idView = options.idView;
   app.files.exists = [](const std::string& name) {
     std::error_code ec;
     return std::filesystem::exists(name, ec) || std::filesystem::is_symlink(name, ec);
@@ -143,22 +220,11 @@ int main(int argc, char** argv) {
   app.files.write = [](const std::string& name, const std::string& content, std::string& error) {
     return tools::writeFileAtomically(name, content, error);
   };
+  app.output = &output;
 
-  if (!glfwInit()) {
-    std::cerr << "sfbuild: cannot start GLFW (is there a display?)\n";
-    return 1;
-  }
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SAMPLES, 0);
-  GLFWwindow* window = glfwCreateWindow(width, height, "sfbuild", nullptr, nullptr);
-  if (!window) {
-    std::cerr << "sfbuild: cannot open an OpenGL 3.3 core window\n";
-    glfwTerminate();
-    return 1;
-  }
+  GLFWwindow* window = openWindow(options, output);
+  if (!window)
+    return tools::closeStandardStreams("sfbuild", tools::toInt(tools::ExitCode::NoDisplay));
   glfwSetWindowUserPointer(window, &app);
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
@@ -168,6 +234,8 @@ int main(int argc, char** argv) {
   glfwSetScrollCallback(window, onScroll);
   glfwSetFramebufferSizeCallback(window, onFramebufferSize);
   glfwGetFramebufferSize(window, &app.state.width, &app.state.height);
+  output.detail(std::string("OpenGL ") + reinterpret_cast<const char*>(glGetString(GL_VERSION)) +
+                " on " + reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 
   int status = 0;
   try {
@@ -183,10 +251,10 @@ int main(int argc, char** argv) {
       glfwWaitEventsTimeout(0.1);
     }
   } catch (const std::exception& e) {
-    std::cerr << "sfbuild: " << e.what() << "\n";
+    output.error(e.what());
     status = 1;
   }
   glfwDestroyWindow(window);
   glfwTerminate();
-  return status;
+  return tools::closeStandardStreams("sfbuild", status);
 }

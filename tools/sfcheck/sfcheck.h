@@ -1,11 +1,31 @@
 // sfcheck: validates scene files and instruction files.
 #pragma once
 
+#include <CLI/CLI.hpp>
+#include <memory>
 #include <ostream>
+#include <string>
+#include <vector>
+
+#include "scenefile/read.h"
+#include "tools/common/command_line.h"
+#include "tools/common/tool_streams.h"
 
 namespace tools {
 
+struct SfcheckOptions {
+  CommonFlags common;
+  std::vector<std::string> files;
+  bool werror = false;
+  std::string format = "text";
+  scene::ReadOptions read;
+};
+
+// sfcheck's command line, bound to `options`: what --help, the man page and
+// the bash completion show.
+std::unique_ptr<CLI::App> makeSfcheckCommandLine(SfcheckOptions& options);
+
 // The whole tool, with its streams passed in so that tests can run it.
-int runSfcheck(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+int runSfcheck(int argc, const char* const* argv, const ToolStreams& streams);
 
 }  // namespace tools

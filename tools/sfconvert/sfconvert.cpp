@@ -2,31 +2,22 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "scenefile/convert.h"
-#include "scenefile/mesh.h"
-#include "scenefile/read.h"
-#include "tools/common/output_location.h"
-#include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
+#include "tools/common/output_location.h"
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
+#include "tools/common/tool_output.h"
 
 namespace tools {
 
 namespace {
-
-// The --to names of the format registry, for CLI11's check.
-std::vector<std::string> formatNameList() {
-  std::vector<std::string> names;
-  for (const scene::FormatInfo& row : scene::formats()) names.emplace_back(row.name);
-  return names;
-}
 
 // Every extension the registry knows, for the usage error: ".sf, .txt, ...".
 std::string extensionList() {
@@ -42,216 +33,290 @@ std::string extensionList() {
   return text;
 }
 
-void printAll(const scene::DiagnosticList& list, bool json, std::ostream& err) {
-  if (json) {
-    err << diagnosticsToJson(list).dump(2) << "\n";
-  } else {
-    printDiagnostics(list, err);
-  }
-}
-
 // Whether the name is one of standard output's: written as a file, it is
 // the pipe or terminal behind it, which an atomic write cannot replace.
 bool namesStandardOutput(const std::string& path) {
   return path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
 }
 
-int convert(int argc, const char* const* argv, std::ostream& out, std::ostream& err, Stage& stage) {
-  CLI::App app{"Converts between " + scene::describeFormats(), "sfconvert"};
-  app.set_version_flag("--version", SCENEFILE_VERSION);
-  std::string input;
-  std::string output;
-  std::string to;
-  std::string format = "text";
-  bool noLoss = false;
-  bool approximate = false;
-  bool transpose = false;
-  app.add_option("input", input, "the scene to read (format recognised from its content)")
-      ->required();
-  app.add_option("output", output, "the file to write, or - for standard output")->required();
-  app.add_option("--to", to, "output format, instead of the output's extension")
-      ->check(CLI::IsMember(formatNameList()));
-  app.add_flag("--no-loss", noLoss, "fail instead of dropping anything the output cannot hold");
-  app.add_flag("--approximate", approximate,
-               "write the nearest expressible matrix or camera and report how far it moved");
-  app.add_flag("--transpose-matrices", transpose,
-               "read each scene-file matrix column by column (repairs files written transposed)");
-  std::optional<double> fov;
-  int width = 0;
-  int height = 0;
-  bool externalBuffers = false;
-  int tessellation = scene::kDefaultSegments;
-  app.add_option("--fov", fov,
-                 "glTF and POV-Ray: the camera's vertical field of view in degrees (sfrender's; "
-                 "default: the input's, else 60)")
-      ->check(CLI::Range(0.0, 180.0));
-  app.add_option("--width", width,
-                 "glTF and POV-Ray: the image width, for the camera's aspect ratio (POV-Ray "
-                 "input: image_width)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--height", height,
-                 "glTF and POV-Ray: the image height, for the camera's aspect ratio (POV-Ray "
-                 "input: image_height)")
-      ->check(CLI::PositiveNumber);
-  app.add_flag("--external-buffers", externalBuffers,
-               "glTF: write the buffer to NAME.bin beside NAME.gltf instead of embedding it");
-  app.add_option("--tessellation", tessellation,
-                 "glTF: segments around a sphere or cylinder (the sphere gets half as many rings)")
-      ->check(CLI::Range(scene::kMinSegments, scene::kMaxSegments))
-      ->capture_default_str();
-  bool flat = false;
-  bool skipUnsupported = false;
-  app.add_flag("--flat", flat,
-               "POV-Ray output: every object unlit in a colour of its own (an object-identity "
-               "picture)");
-  app.add_flag("--skip-unsupported", skipUnsupported,
-               "POV-Ray input: skip what is outside the subset, with a warning, and convert the "
-               "rest");
-  app.add_option("--format", format, "how to print diagnostics (on standard error)")
-      ->check(CLI::IsMember({"text", "json"}));
-  scene::ReadOptions readOptions;
-  addReadLimitOptions(app, readOptions);
-  if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
-  bool json = format == "json";
-  bool toStdout = output == "-";
-  if (fov && !(*fov > 0.0 && *fov < 180.0)) {
-    err << "sfconvert: --fov must lie between 0 and 180 degrees\n";
-    return toInt(ExitCode::Usage);
-  }
+std::string count(std::size_t n, const char* word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
 
-  // Work out the output format before reading anything.
-  std::optional<scene::Format> outputFormat;
-  if (!to.empty()) {
-    outputFormat = scene::findFormatByName(to)->format;
-  } else if (!toStdout) {
-    if (const scene::FormatInfo* row = scene::findFormatByExtension(output)) {
-      outputFormat = row->format;
-    }
-  }
-  if (!outputFormat) {
-    err << "sfconvert: cannot tell the output format of '" << output
-        << "': use " << extensionList() << ", or --to " << scene::formatNames() << "\n";
-    return toInt(ExitCode::Usage);
-  }
+// A conversion's plan, worked out from the command line before anything is
+// read: the output format, and the buffer file a .gltf may get.
+struct Plan {
+  scene::Format format = scene::Format::SceneFile;
+  bool toStdout = false;
+  std::filesystem::path bufferPath;  // empty: no separate buffer
   std::string bufferFile;
-  if (externalBuffers) {
-    if (*outputFormat != scene::Format::Gltf || toStdout) {
-      err << "sfconvert: --external-buffers needs a .gltf output file\n";
-      return toInt(ExitCode::Usage);
-    }
-    bufferFile = std::filesystem::path(output).stem().string() + ".bin";
-  }
-  if (!toStdout && isSameFile(input, output)) {
-    err << "sfconvert: error: the output '" << output
-        << "' is the input file; sfconvert never writes over its input\n";
-    return toInt(ExitCode::InvalidInput);
-  }
-  // The buffer lies beside the .gltf that names it and takes its name: when
-  // the output is a link, the file at its end (file_io.h writes through
-  // links), so that the .gltf actually written finds its buffer.
-  std::filesystem::path bufferPath;
-  if (!bufferFile.empty()) {
-    std::error_code ec;
-    std::filesystem::path gltfFile = output;
-    if (std::filesystem::is_symlink(gltfFile, ec)) {
-      gltfFile = scene::followLinks(gltfFile).value_or(gltfFile);
-      bufferFile = gltfFile.stem().string() + ".bin";
-    }
-    bufferPath = gltfFile.parent_path() / bufferFile;
-    if (isSameFile(input, bufferPath)) {
-      err << "sfconvert: error: the buffer file '" << bufferPath.string()
-          << "' is the input file; sfconvert never writes over its input\n";
-      return toInt(ExitCode::InvalidInput);
-    }
-    if (gltfFile.filename() == bufferFile) {
-      err << "sfconvert: error: the buffer file '" << bufferPath.string()
-          << "' is the output itself; name the output NAME.gltf\n";
-      return toInt(ExitCode::Usage);
-    }
-  }
+};
 
-  stage.set("reading " + printableText(input));
-  InputText text = readInputText(input, readOptions);
-  if (text.tooLarge()) {
-    printAll(text.refused, json, err);
+class Converter {
+ public:
+  Converter(const SfconvertOptions& o, ToolOutput& output, Stage& stage)
+      : o_(o),
+        output_(output),
+        stage_(stage),
+        format_(diagnosticFormatFromName(o.format).value_or(DiagnosticFormat::Text)) {}
+
+  int run();
+
+ private:
+  std::optional<int> plan();
+  std::optional<int> planBuffer();
+  std::optional<scene::ReadResult> read(int& status);
+  scene::ConversionOptions conversionOptions() const;
+  int write(const scene::ConvertedFiles& converted, const scene::Scene& scene);
+  void print(const scene::DiagnosticList& list) const;
+
+  // Inputs up to this size are kept until the conversion's diagnostics are
+  // printed, to quote the lines they point at.
+  static constexpr std::size_t kKeptForQuotes = std::size_t{16} << 20;
+
+  const SfconvertOptions& o_;
+  ToolOutput& output_;
+  Stage& stage_;
+  DiagnosticFormat format_;
+  Plan plan_;
+  SourceExcerpts sources_;
+  std::string shown_;
+  std::string keptText_;
+};
+
+void Converter::print(const scene::DiagnosticList& list) const {
+  if (format_ == DiagnosticFormat::Json) {
+    output_.err() << diagnosticsToJson(list).dump(2) << "\n";
+    return;
+  }
+  DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format_), &sources_).print(list);
+}
+
+// The output format and where each file goes, or the exit status of a
+// command line that cannot work.
+std::optional<int> Converter::plan() {
+  plan_.toStdout = isStandardStream(o_.output);
+  if (o_.fov && !(*o_.fov > 0.0 && *o_.fov < 180.0)) {
+    output_.error("--fov must lie between 0 and 180 degrees, both excluded");
+    return toInt(ExitCode::Usage);
+  }
+  std::optional<scene::Format> format;
+  if (!o_.to.empty()) {
+    format = scene::findFormatByName(o_.to)->format;
+  } else if (!plan_.toStdout) {
+    if (const scene::FormatInfo* row = scene::findFormatByExtension(o_.output))
+      format = row->format;
+  }
+  if (!format) {
+    output_.error("cannot tell the output format of '" + printableText(o_.output) + "'",
+                  "use " + extensionList() + ", or --to " + scene::formatNames());
+    return toInt(ExitCode::Usage);
+  }
+  plan_.format = *format;
+  if (plan_.toStdout && scene::formatInfo(*format).binary && output_.streams().outIsTerminal) {
+    output_.error("standard output is a terminal, and " +
+                      std::string(scene::formatInfo(*format).singular) + " is binary",
+                  "redirect it to a file or a pipe (> out.glb), or name the output file");
+    return toInt(ExitCode::Usage);
+  }
+  if (!plan_.toStdout && isSameFile(o_.input, o_.output)) {
+    output_.error("the output '" + printableText(o_.output) +
+                  "' is the input file; sfconvert never writes over its input");
     return toInt(ExitCode::InvalidInput);
+  }
+  if (std::optional<int> refused = planBuffer()) return refused;
+  if (o_.noClobber && !plan_.toStdout) {
+    for (const std::filesystem::path& path : {std::filesystem::path(o_.output), plan_.bufferPath}) {
+      if (!path.empty() && pathExists(path)) {
+        output_.err() << printableText(path.string()) << ": "
+                      << output_.style().severity(scene::Severity::Error, "error:") << ' '
+                      << kNoClobberMessage << "\n";
+        return toInt(ExitCode::IoError);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// The buffer lies beside the .gltf that names it and takes its name: when
+// the output is a link, the file at its end (file_io.h writes through
+// links), so that the .gltf actually written finds its buffer.
+std::optional<int> Converter::planBuffer() {
+  if (!o_.externalBuffers) return std::nullopt;
+  if (plan_.format != scene::Format::Gltf || plan_.toStdout) {
+    output_.error("--external-buffers needs a .gltf output file");
+    return toInt(ExitCode::Usage);
+  }
+  std::error_code ec;
+  std::filesystem::path gltfFile = o_.output;
+  if (std::filesystem::is_symlink(gltfFile, ec)) {
+    gltfFile = scene::followLinks(gltfFile).value_or(gltfFile);
+  }
+  plan_.bufferFile = gltfFile.stem().string() + ".bin";
+  plan_.bufferPath = gltfFile.parent_path() / plan_.bufferFile;
+  if (isSameFile(o_.input, plan_.bufferPath)) {
+    output_.error("the buffer file '" + printableText(plan_.bufferPath.string()) +
+                  "' is the input file; sfconvert never writes over its input");
+    return toInt(ExitCode::InvalidInput);
+  }
+  if (gltfFile.filename() == plan_.bufferFile) {
+    output_.error("the buffer file '" + printableText(plan_.bufferPath.string()) +
+                  "' is the output itself; name the output NAME.gltf");
+    return toInt(ExitCode::Usage);
+  }
+  return std::nullopt;
+}
+
+std::optional<scene::ReadResult> Converter::read(int& status) {
+  std::string shown = inputDisplayName(o_.input);
+  stage_.set("reading " + printableText(shown));
+  scene::ReadOptions readOptions = o_.read;
+  InputText text = readInputText(o_.input, readOptions, &output_.streams().in);
+  if (text.tooLarge()) {
+    print(text.refused);
+    status = toInt(ExitCode::InvalidInput);
+    return std::nullopt;
   }
   if (!text.text) {
-    err << printableText(input) << ": error: cannot read the file: "
-        << printableText(text.readError) << "\n";
-    return toInt(ExitCode::IoError);
+    output_.err() << printableText(shown) << ": "
+                  << output_.style().severity(scene::Severity::Error, "error:")
+                  << " cannot read the file: " << printableText(text.readError) << "\n";
+    status = toInt(ExitCode::IoError);
+    return std::nullopt;
   }
-  readOptions.sceneFile.transposedMatrices = transpose;
-  readOptions.noLoss = noLoss;
-  readOptions.pov.skipUnsupported = skipUnsupported;
-  if (width > 0 && height > 0) {
-    readOptions.pov.imageWidth = width;
-    readOptions.pov.imageHeight = height;
+  readOptions.sceneFile.transposedMatrices = o_.transpose;
+  readOptions.noLoss = o_.noLoss;
+  readOptions.pov.skipUnsupported = o_.skipUnsupported;
+  if (o_.width > 0 && o_.height > 0) {
+    readOptions.pov.imageWidth = o_.width;
+    readOptions.pov.imageHeight = o_.height;
   }
-  scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
+  scene::ReadResult result = scene::parseScene(*text.text, shown, readOptions);
   if (!result.ok()) {
-    printAll(result.diagnostics, json, err);
-    return toInt(ExitCode::InvalidInput);
+    if (format_ == DiagnosticFormat::Text) sources_.capture(shown, *text.text, result.diagnostics);
+    print(result.diagnostics);
+    status = toInt(ExitCode::InvalidInput);
+    return std::nullopt;
   }
+  std::optional<scene::Format> detected = scene::detectFormat(*text.text, shown);
+  // The conversion's warnings point into the input too: a small input is
+  // kept to quote them; of a large one only the lines the reader's
+  // diagnostics quote are, so that the text does not stay beside the
+  // scene while it converts.
+  if (format_ == DiagnosticFormat::Text) {
+    shown_ = shown;
+    if (text.text->size() <= kKeptForQuotes) {
+      keptText_ = std::move(*text.text);
+    } else {
+      sources_.capture(shown, *text.text, result.diagnostics);
+    }
+  }
+  output_.detail("read " + printableText(shown) + " (" +
+                 std::string(detected ? scene::formatInfo(*detected).singular : "a scene") + ", " +
+                 count(result.scene.objects.size(), "object") + ", " +
+                 count(result.scene.lights.size(), "light") + ")");
+  output_.step("reading");
+  return result;
+}
 
-  text.text.reset();  // the scene holds all that is needed now
-  stage.set("converting");
+scene::ConversionOptions Converter::conversionOptions() const {
   scene::ConversionOptions options;
-  options.noLoss = noLoss;
-  options.instructions.approximate = approximate;
-  if (!toStdout) {
-    options.instructions.outputFile = std::filesystem::path(output).stem().string() + ".ppm";
+  options.noLoss = o_.noLoss;
+  options.instructions.approximate = o_.approximate;
+  if (!plan_.toStdout) {
+    options.instructions.outputFile = std::filesystem::path(o_.output).stem().string() + ".ppm";
   }
-  options.gltf.yfovDegrees = fov;
-  options.gltf.width = width;
-  options.gltf.height = height;
-  options.gltf.segments = tessellation;
-  options.gltf.externalBuffer = bufferFile;
+  options.gltf.yfovDegrees = o_.fov;
+  options.gltf.width = o_.width;
+  options.gltf.height = o_.height;
+  options.gltf.segments = o_.tessellation;
+  options.gltf.externalBuffer = plan_.bufferFile;
   options.gltf.generator = std::string("sfconvert ") + SCENEFILE_VERSION;
-  options.pov.verticalFovDegrees = fov;
-  if (width > 0 && height > 0) {
-    options.pov.width = width;
-    options.pov.height = height;
-  } else if (width > 0 || height > 0) {
+  options.pov.verticalFovDegrees = o_.fov;
+  if (o_.width > 0 && o_.height > 0) {
+    options.pov.width = o_.width;
+    options.pov.height = o_.height;
+  } else if (o_.width > 0 || o_.height > 0) {
     // One side given: the other keeps sfrender's 4:3.
-    options.pov.width = width > 0 ? width : std::max(1, height * 4 / 3);
-    options.pov.height = height > 0 ? height : std::max(1, width * 3 / 4);
+    options.pov.width = o_.width > 0 ? o_.width : std::max(1, o_.height * 4 / 3);
+    options.pov.height = o_.height > 0 ? o_.height : std::max(1, o_.width * 3 / 4);
   }
-  options.pov.flat = flat;
-  std::optional<scene::ConvertedFiles> converted =
-      scene::convertSceneToFiles(result.scene, *outputFormat, options, result.diagnostics);
-  printAll(result.diagnostics, json, err);
-  if (!converted) return toInt(ExitCode::InvalidInput);
+  options.pov.flat = o_.flat;
+  return options;
+}
 
-  if (toStdout) {
-    stage.set("writing to standard output");
-    out << converted->main;
-    return toInt(flushStandardOutput("sfconvert", out, err) ? ExitCode::Success
-                                                            : ExitCode::IoError);
+int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene& scene) {
+  std::string what = std::string(scene::formatInfo(plan_.format).singular) + ", " +
+                     count(scene.objects.size(), "object") + ", " +
+                     count(scene.lights.size(), "light");
+  if (plan_.toStdout) {
+    stage_.set("writing to standard output");
+    output_.streams().out << converted.main;
+    if (!flushStandardOutput("sfconvert", output_.streams().out, output_.err())) {
+      return toInt(ExitCode::IoError);
+    }
+    output_.info("wrote standard output (" + what + ")");
+    return toInt(ExitCode::Success);
   }
-  stage.set("writing " + printableText(output));
+  stage_.set("writing " + printableText(o_.output));
   // The buffer first, so that the .gltf never names a buffer not there;
   // both are written in full before either is renamed.
   std::vector<FileToWrite> files;
-  if (!converted->sidecar.empty()) files.push_back({bufferPath, converted->sidecar});
-  files.push_back({output, converted->main});
+  if (!converted.sidecar.empty()) files.push_back({plan_.bufferPath, converted.sidecar});
+  files.push_back({o_.output, converted.main});
   std::string writeError;
   std::filesystem::path failed;
-  if (!writeFilesAtomically(files, writeError, &failed)) {
-    err << failed.string() << ": error: cannot write the file: " << writeError << "\n";
-    if (namesStandardOutput(output)) {
-      err << "  hint: sfconvert writes regular files; name the output - for standard output\n";
+  if (!writeFilesAtomically(files, writeError, &failed, !o_.noClobber)) {
+    output_.err() << printableText(failed.string()) << ": "
+                  << output_.style().severity(scene::Severity::Error, "error:")
+                  << " cannot write the file: " << writeError << "\n";
+    if (namesStandardOutput(o_.output)) {
+      output_.err() << "  hint: sfconvert writes regular files; name the output - for standard "
+                       "output\n";
     }
     return toInt(ExitCode::IoError);
   }
+  output_.step("writing");
+  std::string wrote = "wrote " + printableText(o_.output) + " (" + what + ")";
+  if (!converted.sidecar.empty()) wrote += " and " + printableText(plan_.bufferPath.string());
+  output_.info(wrote);
   return toInt(ExitCode::Success);
+}
+
+int Converter::run() {
+  if (std::optional<int> refused = plan()) return *refused;
+  int status = 0;
+  std::optional<scene::ReadResult> result = read(status);
+  if (!result) return status;
+  stage_.set("converting");
+  std::optional<scene::ConvertedFiles> converted = scene::convertSceneToFiles(
+      result->scene, plan_.format, conversionOptions(), result->diagnostics);
+  if (!keptText_.empty()) {
+    sources_.capture(shown_, keptText_, result->diagnostics);
+    keptText_ = std::string();
+  }
+  print(result->diagnostics);
+  if (!converted) return toInt(ExitCode::InvalidInput);
+  output_.step("converting");
+  return write(*converted, result->scene);
+}
+
+int convert(int argc, const char* const* argv, const ToolStreams& streams, Stage& stage) {
+  SfconvertOptions options;
+  std::unique_ptr<CLI::App> app = makeSfconvertCommandLine(options);
+  if (auto stop = parseCommandLine(*app, argc, argv, streams.out, streams.err)) {
+    return toInt(*stop);
+  }
+  ToolOutput output("sfconvert", streams, options.common);
+  return Converter(options, output, stage).run();
 }
 
 }  // namespace
 
-int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+int runSfconvert(int argc, const char* const* argv, const ToolStreams& streams) {
   Stage stage;
-  return runGuarded("sfconvert", err, stage, [&] { return convert(argc, argv, out, err, stage); });
+  return runGuarded("sfconvert", streams.err, stage,
+                    [&] { return convert(argc, argv, streams, stage); });
 }
 
 }  // namespace tools

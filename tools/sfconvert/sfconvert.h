@@ -1,10 +1,42 @@
 // sfconvert: converts between the project's scene formats.
 #pragma once
 
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <optional>
 #include <ostream>
+#include <string>
+
+#include "scenefile/mesh.h"
+#include "scenefile/read.h"
+#include "tools/common/command_line.h"
+#include "tools/common/tool_streams.h"
 
 namespace tools {
 
-int runSfconvert(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+struct SfconvertOptions {
+  CommonFlags common;
+  std::string input;
+  std::string output;
+  std::string to;
+  std::string format = "text";
+  bool noLoss = false;
+  bool noClobber = false;
+  bool approximate = false;
+  bool transpose = false;
+  std::optional<double> fov;
+  int width = 0;
+  int height = 0;
+  bool externalBuffers = false;
+  int tessellation = scene::kDefaultSegments;
+  bool flat = false;
+  bool skipUnsupported = false;
+  scene::ReadOptions read;
+};
+
+// sfconvert's command line, bound to `options`.
+std::unique_ptr<CLI::App> makeSfconvertCommandLine(SfconvertOptions& options);
+
+int runSfconvert(int argc, const char* const* argv, const ToolStreams& streams);
 
 }  // namespace tools

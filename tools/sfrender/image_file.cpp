@@ -85,7 +85,9 @@ bool isPpm(const std::filesystem::path& path) {
   return path.extension() == ".ppm";
 }
 
-std::string ppmBytes(const render::Image& image) {
+}  // namespace
+
+std::string ppmImageBytes(const render::Image& image) {
   std::string header =
       "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
   std::string bytes(header.size() + image.rgb.size(), '\0');
@@ -94,8 +96,6 @@ std::string ppmBytes(const render::Image& image) {
                  [](float v) { return static_cast<char>(quantizeChannel(v)); });
   return bytes;
 }
-
-}  // namespace
 
 unsigned char quantizeChannel(float value) {
   float clamped = std::clamp(value, 0.0f, 1.0f);
@@ -125,7 +125,7 @@ std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& pa
 }
 
 bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
-                    std::string& error) {
+                    std::string& error, bool replace) {
   if (!hasImageExtension(path)) {
     error = "no image format for the extension '" + path.extension().string() + "'";
     return false;
@@ -149,7 +149,7 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
   StagedFile file;
   if (!file.open(path, true, error)) return false;
   if (ppm) {
-    if (!file.write(ppmBytes(image), error)) return false;
+    if (!file.write(ppmImageBytes(image), error)) return false;
   } else {
     bool ok = false;
     char message[512] = "";
@@ -168,7 +168,7 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
       return false;
     }
   }
-  return file.finish(error) && file.commit(error);
+  return file.finish(error) && file.commit(error, replace);
 }
 
 }  // namespace tools

@@ -31,8 +31,14 @@ std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& pa
 // clamped to [0, 1] and rounded to the nearest of 256 levels, with no gamma.
 // The file is written beside the target under a temporary name and renamed,
 // so it appears whole or not at all.
+// With `replace` false (--no-clobber), an existing file is kept and the
+// write fails.
 bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
-                    std::string& error);
+                    std::string& error, bool replace = true);
+
+// The bytes of the image as binary PPM (P6, 8-bit): what a ".ppm" file
+// holds, and what `sfrender -o -` writes to standard output.
+std::string ppmImageBytes(const render::Image& image);
 
 // The 8-bit level of a linear channel value: round(clamp(v, 0, 1) * 255).
 unsigned char quantizeChannel(float value);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <optional>
@@ -11,16 +10,17 @@
 #include <string>
 #include <variant>
 
-#include "tools/common/output_location.h"
-#include "scenefile/read.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
-#include "tools/common/command_line.h"
+#include "scenefile/read.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
 #include "tools/common/output_file_format.h"
+#include "tools/common/output_location.h"
 #include "tools/common/resource_guard.h"
+#include "tools/common/standard_streams.h"
+#include "tools/common/tool_output.h"
 #include "tools/sfrender/image_file.h"
 #include "tools/sfrender/thread_probe.h"
 
@@ -35,18 +35,6 @@ std::string withThousands(std::uint64_t n) {
   for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(i, ",");
   return digits;
 }
-
-// The hard ceilings of --spp and --depth, whatever the --max- flags say: far
-// beyond any useful render (65536 samples was the cap before the flags).
-constexpr int kSppCeiling = 65536;
-constexpr int kDepthCeiling = 1000;
-
-// What one render may ask for; the flags raise them (docs/FORMATS.md, "Limits").
-struct RenderLimits {
-  std::int64_t maxPixels = std::int64_t{8192} * 8192;
-  int maxSpp = 1024;
-  int maxDepth = 64;
-};
 
 // The setting above its limit, named with the flag that raises it, if any.
 std::optional<std::string> settingOverLimit(const render::RenderSettings& settings,
@@ -70,8 +58,8 @@ std::optional<std::string> settingOverLimit(const render::RenderSettings& settin
   return std::nullopt;
 }
 
-void printStatistics(const render::RenderStatistics& s, const render::RenderSettings& settings,
-                     std::ostream& err) {
+std::string statisticsText(const render::RenderStatistics& s,
+                           const render::RenderSettings& settings) {
   std::uint64_t total = s.rays.primary + s.rays.secondary + s.rays.shadow;
   std::ostringstream line;
   line << std::fixed << std::setprecision(3) << "sfrender: " << settings.width << "x"
@@ -85,85 +73,158 @@ void printStatistics(const render::RenderStatistics& s, const render::RenderSett
   line << "sfrender: left out " << withThousands(s.rays.pruned)
        << " branches (past the depth, or within their share of half an 8-bit level), traced "
        << withThousands(s.retracedPixels) << " pixels again\n";
-  err << line.str();
+  return line.str();
 }
 
-// The scene to render and where its image goes, or the exit status.
+// The scene's own view (a POV-Ray or glTF camera's) where the command line
+// does not say otherwise: its field of view unless --fov, and at its aspect
+// ratio the side that --width and --height leave open (the height, when
+// neither is given).
+void applySceneView(const scene::Scene& scene, const SfrenderOptions& o,
+                    render::RenderSettings& settings) {
+  if (!scene.view) return;
+  if (!o.fov) {
+    settings.verticalFovDegrees = std::clamp(scene.view->verticalFovDegrees, 0.001, 179.999);
+  }
+  if (!scene.view->aspectRatio || (o.height && o.width)) return;
+  double aspect = *scene.view->aspectRatio;
+  auto side = [](double pixels) {
+    return static_cast<int>(std::clamp(std::round(pixels), 1.0, 32768.0));
+  };
+  if (o.height) {
+    settings.width = side(settings.height * aspect);
+  } else {
+    settings.height = side(settings.width / aspect);
+  }
+}
+
+// The scene to render and where its image goes.
 struct SceneAndTarget {
   scene::Scene scene;
   fs::path target;
+  bool toStdout = false;        // -o -: PPM on standard output
   bool fromOutputFile = false;  // the target is the scene's OUTPUT_FILE
 };
 
-std::variant<SceneAndTarget, int> readSceneAndTarget(const std::string& input,
-                                                     const std::string& output,
-                                                     const scene::ReadOptions& readOptions,
-                                                     bool quiet, std::ostream& err) {
-  SceneAndTarget job;
-  if (input.empty()) {
-    job.scene = render::defaultScene();
-    job.target = output.empty() ? fs::path(*job.scene.outputFile) : fs::path(output);
-    return job;
+class Renderer {
+ public:
+  Renderer(SfrenderOptions& o, ToolOutput& output, const AvailableMemoryProbe& memory, Stage& stage)
+      : o_(o), output_(output), memory_(memory), stage_(stage) {}
+
+  int run();
+
+ private:
+  std::optional<int> readScene();
+  void chooseTarget();
+  std::optional<int> targetRefusal();
+  std::optional<int> resourceRefusal();
+  int writeImage(const render::Image& image, const render::RenderStatistics& statistics);
+  void fileError(const fs::path& path, const std::string& message) const;
+
+  SfrenderOptions& o_;
+  ToolOutput& output_;
+  const AvailableMemoryProbe& memory_;
+  Stage& stage_;
+  render::RenderSettings settings_;
+  SceneAndTarget job_;
+};
+
+void Renderer::fileError(const fs::path& path, const std::string& message) const {
+  output_.err() << printableText(path.string()) << ": "
+                << output_.style().severity(scene::Severity::Error, "error:") << ' ' << message
+                << "\n";
+}
+
+// Step 1: the scene, from the file, standard input or the built-in one.
+std::optional<int> Renderer::readScene() {
+  if (o_.input.empty()) {
+    job_.scene = render::defaultScene();
+    return std::nullopt;
   }
-  InputText text = readInputText(input, readOptions);
+  std::string shown = inputDisplayName(o_.input);
+  stage_.set("reading " + printableText(shown));
+  InputText text = readInputText(o_.input, o_.read, &output_.streams().in);
+  DiagnosticFormat format = DiagnosticFormat::Text;
   if (text.tooLarge()) {
-    printDiagnostics(text.refused, err);
+    DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format)).print(text.refused);
     return toInt(ExitCode::InvalidInput);
   }
   if (!text.text) {
-    err << printableText(input)
-        << ": error: cannot read the file: " << printableText(text.readError) << "\n";
+    fileError(shown, "cannot read the file: " + printableText(text.readError));
     return toInt(ExitCode::IoError);
   }
-  scene::ReadResult result = scene::parseScene(*text.text, input, readOptions);
-  if (result.scene.outputFile && output.empty()) {
-    // OUTPUT_FILE is the instruction file's to choose, inside its folder.
-    scene::checkOutputLocation(result.scene, fs::path(input).parent_path(), scene::Severity::Error,
-                               result.diagnostics);
+  scene::ReadResult result = scene::parseScene(*text.text, shown, o_.read);
+  if (result.scene.outputFile && o_.output.empty()) {
+    // OUTPUT_FILE is the instruction file's to choose, inside its folder
+    // (standard input's: the current folder).
+    fs::path folder = isStandardStream(o_.input) ? fs::path() : fs::path(o_.input).parent_path();
+    scene::checkOutputLocation(result.scene, folder, scene::Severity::Error, result.diagnostics);
   }
-  if (!quiet || result.diagnostics.hasErrors()) printDiagnostics(result.diagnostics, err);
+  SourceExcerpts sources;
+  sources.capture(shown, *text.text, result.diagnostics);
+  DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format), &sources)
+      .print(result.diagnostics);
   if (!result.ok()) return toInt(ExitCode::InvalidInput);
-  text.text.reset();  // the scene holds all the render needs
-  job.scene = std::move(result.scene);
-  if (!output.empty()) {
-    job.target = output;
-  } else if (job.scene.outputFile) {
-    job.target = fs::path(input).parent_path() / *job.scene.outputFile;
-    job.fromOutputFile = true;
+  output_.detail("read " + printableText(shown) + " (" +
+                 std::to_string(result.scene.objects.size()) + " objects, " +
+                 std::to_string(result.scene.lights.size()) + " lights)");
+  job_.scene = std::move(result.scene);
+  return std::nullopt;
+}
+
+void Renderer::chooseTarget() {
+  if (isStandardStream(o_.output)) {
+    job_.toStdout = true;
+  } else if (!o_.output.empty()) {
+    job_.target = o_.output;
+  } else if (o_.input.empty()) {
+    job_.target = *job_.scene.outputFile;
+  } else if (job_.scene.outputFile) {
+    fs::path folder = isStandardStream(o_.input) ? fs::path() : fs::path(o_.input).parent_path();
+    job_.target = folder / *job_.scene.outputFile;
+    job_.fromOutputFile = true;
   } else {
-    job.target = fs::path(input).stem().string() + ".ppm";
+    job_.target = fs::path(o_.input).stem().string() + ".ppm";
   }
-  return job;
 }
 
 // Whether the image can go where it is to go, found out before the first
 // ray: the name (not the input, an image format) and the place (the folder
 // there and writable, the target no folder or device, room for a PPM).
-std::optional<int> targetRefusal(const std::string& input, const SceneAndTarget& job,
-                                 const render::RenderSettings& settings, std::ostream& err) {
-  const fs::path& target = job.target;
+std::optional<int> Renderer::targetRefusal() {
+  if (job_.toStdout) {
+    if (!output_.streams().outIsTerminal) return std::nullopt;
+    output_.error("standard output is a terminal, and the image is binary",
+                  "redirect it to a file or a pipe (-o - > image.ppm), or name the image");
+    return toInt(ExitCode::Usage);
+  }
+  const fs::path& target = job_.target;
   // Before the extension's check, so that an OUTPUT_FILE naming its own
   // instruction file is told so, not that .txt is no image format.
-  if (!input.empty() && isSameFile(input, target)) {
-    err << "sfrender: error: the output '" << target.string()
-        << "' is the input file; sfrender never writes over its input\n";
+  if (!o_.input.empty() && isSameFile(o_.input, target)) {
+    output_.error("the output '" + printableText(target.string()) +
+                  "' is the input file; sfrender never writes over its input");
     return toInt(ExitCode::InvalidInput);
   }
-  if (job.fromOutputFile && !hasImageExtension(target)) {
+  if (job_.fromOutputFile && !hasImageExtension(target)) {
     // The file's mistake, at its line and column, like any other.
-    scene::DiagnosticList diagnostics(input);
-    checkOutputFileFormat(job.scene, scene::Severity::Error, diagnostics);
-    printDiagnostics(diagnostics, err);
+    scene::DiagnosticList diagnostics(inputDisplayName(o_.input));
+    checkOutputFileFormat(job_.scene, scene::Severity::Error, diagnostics);
+    DiagnosticPrinter(output_.err(), output_.diagnosticStyle(DiagnosticFormat::Short))
+        .print(diagnostics);
     return toInt(ExitCode::InvalidInput);
   }
   if (std::optional<std::string> refusal = imageRefusal(target)) {
-    err << "sfrender: cannot write images named '" << target.string() << "': " << *refusal
-        << "\n";
+    output_.error("cannot write images named '" + printableText(target.string()) + "'", *refusal);
     return toInt(ExitCode::Usage);
   }
+  if (o_.noClobber && pathExists(target)) {
+    fileError(target, kNoClobberMessage);
+    return toInt(ExitCode::IoError);
+  }
   std::string error;
-  if (!checkCanWrite(target, true, ppmFileSize(settings.width, settings.height, target), error)) {
-    err << target.string() << ": error: cannot write the image: " << error << "\n";
+  if (!checkCanWrite(target, true, ppmFileSize(settings_.width, settings_.height, target), error)) {
+    fileError(target, "cannot write the image: " + error);
     return toInt(ExitCode::IoError);
   }
   return std::nullopt;
@@ -171,173 +232,128 @@ std::optional<int> targetRefusal(const std::string& input, const SceneAndTarget&
 
 // Whether the render fits in memory and its threads start: refused before
 // it starts rather than killed, or aborted, half-way.
-std::optional<int> resourceRefusal(const SceneAndTarget& job,
-                                   const render::RenderSettings& settings,
-                                   const AvailableMemoryProbe& availableMemory, Stage& stage,
-                                   std::ostream& err) {
+std::optional<int> Renderer::resourceRefusal() {
   render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
-      job.scene.objects.size(), job.scene.lights.size(), settings.width, settings.height);
-  if (std::optional<std::string> refusal = render::renderMemoryRefusal(
-          estimate, availableMemory ? availableMemory() : std::nullopt)) {
-    err << "sfrender: error: " << *refusal << "\n";
+      job_.scene.objects.size(), job_.scene.lights.size(), settings_.width, settings_.height);
+  if (std::optional<std::string> refusal =
+          render::renderMemoryRefusal(estimate, memory_ ? memory_() : std::nullopt)) {
+    output_.error(*refusal);
     return toInt(ExitCode::OutOfResources);
   }
-  int threads = renderThreadCount(settings.threads);
-  stage.set("starting " + std::to_string(threads) + " threads");
+  int threads = renderThreadCount(settings_.threads);
+  stage_.set("starting " + std::to_string(threads) + " threads");
   if (std::optional<std::string> failure = threadStartFailure(threads)) {
-    err << "sfrender: error: cannot start " << threads << " threads: " << *failure
-        << "; ask for fewer with --threads\n";
+    output_.error("cannot start " + std::to_string(threads) + " threads: " + *failure +
+                  "; ask for fewer with --threads");
     return toInt(ExitCode::OutOfResources);
   }
+  output_.detail(
+      "rendering " + std::to_string(settings_.width) + "x" + std::to_string(settings_.height) +
+      " at a vertical field of view of " + std::to_string(settings_.verticalFovDegrees) +
+      " degrees, " + std::to_string(settings_.samplesPerPixel) + " spp, depth " +
+      std::to_string(settings_.maxDepth) + ", on " + std::to_string(threads) + " threads");
   return std::nullopt;
 }
 
-// Which of the view's flags the command line gave.
-struct ViewFlags {
-  CLI::Option* width = nullptr;
-  CLI::Option* height = nullptr;
-  CLI::Option* fov = nullptr;
-};
-
-// The scene's own view (a POV-Ray or glTF camera's) where the command line
-// does not say otherwise: its field of view unless --fov, and at its aspect
-// ratio the side that --width and --height leave open (the height, when
-// neither is given).
-void applySceneView(const scene::Scene& scene, const ViewFlags& given,
-                    render::RenderSettings& settings) {
-  if (!scene.view) return;
-  if (given.fov->count() == 0) {
-    settings.verticalFovDegrees = std::clamp(scene.view->verticalFovDegrees, 0.001, 179.999);
-  }
-  if (!scene.view->aspectRatio || (given.height->count() > 0 && given.width->count() > 0)) return;
-  double aspect = *scene.view->aspectRatio;
-  auto side = [](double pixels) {
-    return static_cast<int>(std::clamp(std::round(pixels), 1.0, 32768.0));
-  };
-  if (given.height->count() > 0) {
-    settings.width = side(settings.height * aspect);
+// Step 3: the file, whole or not at all, or standard output.
+int Renderer::writeImage(const render::Image& image, const render::RenderStatistics& statistics) {
+  std::string written;
+  if (job_.toStdout) {
+    stage_.set("writing to standard output");
+    output_.streams().out << ppmImageBytes(image);
+    if (!flushStandardOutput("sfrender", output_.streams().out, output_.err())) {
+      return toInt(ExitCode::IoError);
+    }
+    written = "standard output";
   } else {
-    settings.height = side(settings.width / aspect);
+    stage_.set("writing " + printableText(job_.target.string()));
+    std::string writeError;
+    if (!writeImageFile(image, job_.target, writeError, !o_.noClobber)) {
+      fileError(job_.target, "cannot write the image: " + writeError);
+      return toInt(ExitCode::IoError);
+    }
+    written = printableText(job_.target.string());
   }
+  output_.step("writing");
+  // --stats is asked for, so it prints even when quiet.
+  if (o_.stats) output_.err() << statisticsText(statistics, settings_);
+  if (statistics.rays.cut > 0) {
+    // Only the cap on rays a sample may trace (materials that reflect and
+    // refract everything, where no branch can be left out) loses accuracy.
+    output_.warning(withThousands(statistics.rays.cut) +
+                    " reflected or refracted rays were not traced: their samples had traced " +
+                    std::to_string(settings_.maxRaysPerSample) +
+                    " already, so the picture may differ from a full trace by more than half a "
+                    "level");
+  }
+  output_.info("wrote " + written + " (" + std::to_string(settings_.width) + "x" +
+               std::to_string(settings_.height) + (o_.input.empty() ? ", the default scene" : "") +
+               ")");
+  return toInt(ExitCode::Success);
 }
 
-int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                 bool errIsTerminal, const AvailableMemoryProbe& availableMemory, Stage& stage) {
-  CLI::App app{"Ray traces a scene, in any of " + scene::describeFormats() +
-                   " (the default scene without one)",
-               "sfrender"};
-  app.set_version_flag("--version", SCENEFILE_VERSION);
-  std::string input;
-  std::string output;
-  render::RenderSettings settings;
-  bool quiet = false;
-  bool stats = false;
-  app.add_option("scene", input, "the scene to render, its format recognised from its content");
-  app.add_option(
-      "-o,--output", output,
-      "the image to write; its extension picks the format (.ppm, .png, .exr, .tif, ...)");
-  // 32768 a side keeps width * height within an int whatever --max-pixels.
-  ViewFlags given;
-  given.width = app.add_option("--width", settings.width, "image width in pixels")
-                    ->check(CLI::Range(1, 32768));
-  given.height = app.add_option("--height", settings.height, "image height in pixels")
-                     ->check(CLI::Range(1, 32768));
-  given.fov = app.add_option("--fov", settings.verticalFovDegrees,
-                             "vertical field of view in degrees (default: the scene's, else 60)")
-                  ->check(CLI::Range(0.001, 179.999));
-  // --spp and --depth are held to the --max- flags below, checked after
-  // parsing so that the message can name the flag that raises them.
-  app.add_option("--spp", settings.samplesPerPixel, "samples per pixel, stratified")
-      ->check(CLI::Range(1, kSppCeiling));
-  app.add_option("--depth", settings.maxDepth, "bounces of reflection and refraction")
-      ->check(CLI::Range(0, kDepthCeiling));
-  app.add_option("--threads", settings.threads, "threads to render with (0: every core)")
-      ->check(CLI::Range(0, 1024));
-  app.add_option("--seed", settings.seed, "seed of the sample positions");
-  app.add_flag("--quiet", quiet, "print nothing but errors");
-  app.add_flag("--stats", stats, "print the time, the rays and the rays per second");
-  RenderLimits limits;
-  app.add_option("--max-pixels", limits.maxPixels,
-                 "refuse an image of more pixels (width x height)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{32768} * 32768))
-      ->capture_default_str();
-  app.add_option("--max-spp", limits.maxSpp, "refuse more samples per pixel than this")
-      ->check(CLI::Range(1, kSppCeiling))
-      ->capture_default_str();
-  app.add_option("--max-depth", limits.maxDepth, "refuse more bounces than this")
-      ->check(CLI::Range(0, kDepthCeiling))
-      ->capture_default_str();
-  scene::ReadOptions readOptions;
-  addReadLimitOptions(app, readOptions);
-  if (auto stop = parseCommandLine(app, argc, argv, out, err)) return toInt(*stop);
-  if (std::optional<std::string> overLimit = settingOverLimit(settings, limits)) {
-    err << "sfrender: " << *overLimit << "\n";
+int Renderer::run() {
+  settings_ = o_.settings;
+  settings_.width = o_.width.value_or(settings_.width);
+  settings_.height = o_.height.value_or(settings_.height);
+  settings_.verticalFovDegrees = o_.fov.value_or(settings_.verticalFovDegrees);
+  if (std::optional<std::string> overLimit = settingOverLimit(settings_, o_.limits)) {
+    output_.error(*overLimit);
     return toInt(ExitCode::Usage);
   }
-
-  // Step 1: the scene, and where its image goes.
-  if (!input.empty()) stage.set("reading " + printableText(input));
-  std::variant<SceneAndTarget, int> read =
-      readSceneAndTarget(input, output, readOptions, quiet, err);
-  if (const int* status = std::get_if<int>(&read)) return *status;
-  SceneAndTarget& job = std::get<SceneAndTarget>(read);
-  applySceneView(job.scene, given, settings);
-  if (std::optional<std::string> overLimit = settingOverLimit(settings, limits)) {
-    err << "sfrender: " << *overLimit << " (at the scene's aspect ratio)\n";
+  if (isStandardStream(o_.input) && o_.output.empty()) {
+    output_.error("the scene comes from standard input, so the image needs a name",
+                  "name it with -o FILE, or -o - for a PPM on standard output");
     return toInt(ExitCode::Usage);
   }
-  const fs::path& target = job.target;
-  if (std::optional<int> refused = targetRefusal(input, job, settings, err)) return *refused;
-
+  if (std::optional<int> status = readScene()) return *status;
+  output_.step("reading");
+  applySceneView(job_.scene, o_, settings_);
+  if (std::optional<std::string> overLimit = settingOverLimit(settings_, o_.limits)) {
+    output_.error(*overLimit + " (at the scene's aspect ratio)");
+    return toInt(ExitCode::Usage);
+  }
+  chooseTarget();
+  if (std::optional<int> refused = targetRefusal()) return *refused;
   // Step 2: render, with a progress bar on a terminal, if it fits in memory
   // and its threads start.
-  if (std::optional<int> refused = resourceRefusal(job, settings, availableMemory, stage, err)) {
-    return *refused;
-  }
-  stage.set("preparing the scene");
-  render::RenderScene compiled(job.scene);
+  if (std::optional<int> refused = resourceRefusal()) return *refused;
+  stage_.set("preparing the scene");
+  render::RenderScene compiled(job_.scene);
+  output_.step("preparing the scene");
   render::RenderStatistics statistics;
   render::ProgressCallback progress;
-  if (errIsTerminal && !quiet) {
+  if (output_.streams().errIsTerminal && !o_.common.quiet) {
+    std::ostream& err = output_.err();
     progress = [&err](int done, int total) {
       err << "\rsfrender: rendering " << std::setw(3) << (100 * done / total) << "%"
           << (done == total ? "\n" : "") << std::flush;
     };
   }
-  stage.set("rendering");
-  render::Image image = render::renderImage(compiled, settings, &statistics, progress);
+  stage_.set("rendering");
+  render::Image image = render::renderImage(compiled, settings_, &statistics, progress);
+  output_.step("rendering");
+  return writeImage(image, statistics);
+}
 
-  // Step 3: the file, whole or not at all.
-  stage.set("writing " + printableText(target.string()));
-  std::string writeError;
-  if (!writeImageFile(image, target, writeError)) {
-    err << target.string() << ": error: cannot write the image: " << writeError << "\n";
-    return toInt(ExitCode::IoError);
+int renderToFile(int argc, const char* const* argv, const ToolStreams& streams,
+                 const AvailableMemoryProbe& availableMemory, Stage& stage) {
+  SfrenderOptions options;
+  std::unique_ptr<CLI::App> app = makeSfrenderCommandLine(options);
+  if (auto stop = parseCommandLine(*app, argc, argv, streams.out, streams.err)) {
+    return toInt(*stop);
   }
-  if (stats) printStatistics(statistics, settings, err);
-  if (statistics.rays.cut > 0) {
-    // Only the cap on rays a sample may trace (materials that reflect and
-    // refract everything, where no branch can be left out) loses accuracy.
-    err << "sfrender: warning: " << withThousands(statistics.rays.cut)
-        << " reflected or refracted rays were not traced: their samples had traced "
-        << settings.maxRaysPerSample
-        << " already, so the picture may differ from a full trace by more than half a level\n";
-  }
-  if (!quiet) {
-    err << "sfrender: wrote " << target.string() << " (" << settings.width << "x" << settings.height
-        << (input.empty() ? ", the default scene" : "") << ")\n";
-  }
-  return toInt(ExitCode::Success);
+  ToolOutput output("sfrender", streams, options.common);
+  return Renderer(options, output, availableMemory, stage).run();
 }
 
 }  // namespace
 
-int runSfrender(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                bool errIsTerminal, const AvailableMemoryProbe& availableMemory) {
+int runSfrender(int argc, const char* const* argv, const ToolStreams& streams,
+                const AvailableMemoryProbe& availableMemory) {
   Stage stage;
-  return runGuarded("sfrender", err, stage, [&] {
-    return renderToFile(argc, argv, out, err, errIsTerminal, availableMemory, stage);
-  });
+  return runGuarded("sfrender", streams.err, stage,
+                    [&] { return renderToFile(argc, argv, streams, availableMemory, stage); });
 }
 
 }  // namespace tools

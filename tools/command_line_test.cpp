@@ -1,0 +1,225 @@
+// The command lines of all four tools: mistakes told in the house style,
+// the flags every tool has, and help that shows each default.
+#include "tools/common/command_line.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tools/common/option_checks.h"
+#include "tools/sfbuild/sfbuild_command_line.h"
+#include "tools/sfcheck/sfcheck.h"
+#include "tools/sfconvert/sfconvert.h"
+#include "tools/sfrender/sfrender.h"
+
+namespace tools {
+namespace {
+
+// A tool's App with the options it writes into, which must outlive it.
+struct MadeApp {
+  std::shared_ptr<void> options;
+  std::unique_ptr<CLI::App> app;
+  CLI::App* operator->() const { return app.get(); }
+  CLI::App& operator*() const { return *app; }
+};
+
+template <typename Options>
+MadeApp madeWith(std::unique_ptr<CLI::App> (*make)(Options&)) {
+  auto options = std::make_shared<Options>();
+  std::unique_ptr<CLI::App> app = make(*options);
+  return {options, std::move(app)};
+}
+
+// One tool's command line, made afresh for each parse, as each run does.
+struct ToolCommandLine {
+  std::string name;
+  std::function<MadeApp()> make;
+};
+
+std::vector<ToolCommandLine> allTools() {
+  return {
+      {"sfcheck", [] { return madeWith(&makeSfcheckCommandLine); }},
+      {"sfconvert", [] { return madeWith(&makeSfconvertCommandLine); }},
+      {"sfrender", [] { return madeWith(&makeSfrenderCommandLine); }},
+      {"sfbuild", [] { return madeWith(&sfbuild::makeSfbuildCommandLine); }},
+  };
+}
+
+// What the tool prints for `args` (its name first), and the exit status.
+struct Outcome {
+  std::optional<ExitCode> status;
+  std::string out;
+  std::string err;
+};
+
+std::string firstLine(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
+
+Outcome parse(CLI::App& app, std::vector<std::string> args) {
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, err;
+  std::optional<ExitCode> status =
+      parseCommandLine(app, static_cast<int>(argv.size()), argv.data(), out, err);
+  return {status, out.str(), err.str()};
+}
+
+TEST(CommandLine, AnUnknownOptionIsNamedWithTheClosestKnownOne) {
+  SfrenderOptions o;
+  auto app = makeSfrenderCommandLine(o);
+  Outcome r = parse(*app, {"sfrender", "--widht", "3"});
+  EXPECT_EQ(r.status, ExitCode::Usage);
+  EXPECT_EQ(r.err,
+            "sfrender: error: unknown option '--widht'; did you mean '--width'?\n"
+            "  hint: run 'sfrender --help' for the options\n");
+  app = makeSfrenderCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfrender", "--colour", "never"}).err),
+            "sfrender: error: unknown option '--colour'; did you mean '--color'?");
+  // Nothing close: no guess.
+  app = makeSfrenderCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfrender", "--bogus"}).err),
+            "sfrender: error: unknown option '--bogus'");
+}
+
+TEST(CommandLine, ALoneUnknownFlagIsNamedBeforeAMissingArgument) {
+  SfcheckOptions o;
+  auto app = makeSfcheckCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfcheck", "--bogus"}).err),
+            "sfcheck: error: unknown option '--bogus'");
+  app = makeSfcheckCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfcheck", "-x"}).err), "sfcheck: error: unknown option '-x'");
+  // Short flags together, one of them unknown.
+  app = makeSfcheckCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfcheck", "-qz", "a.sf"}).err),
+            "sfcheck: error: unknown option '-z'");
+  // With nothing unknown, what is missing is named as --help shows it.
+  app = makeSfcheckCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfcheck"}).err), "sfcheck: error: missing FILES");
+  // An option's value that looks like a flag is its value, not a flag.
+  app = makeSfcheckCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfcheck", "--max-objects", "-5", "a.sf"}).err),
+            "sfcheck: error: --max-objects: -5 is not between 1 and 9223372036854775807");
+}
+
+TEST(CommandLine, ABadNumberSaysItIsNotANumber) {
+  SfrenderOptions o;
+  auto app = makeSfrenderCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfrender", "--width", "abc"}).err),
+            "sfrender: error: --width: 'abc' is not a number");
+  app = makeSfrenderCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfrender", "--width", "1.5"}).err),
+            "sfrender: error: --width: '1.5' is not a whole number");
+  app = makeSfrenderCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfrender", "--width", "0"}).err),
+            "sfrender: error: --width: 0 is not between 1 and 32768");
+  app = makeSfrenderCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfrender", "--fov", "200"}).err),
+            "sfrender: error: --fov: 200 is not between 0.001 and 179.999");
+  app = makeSfrenderCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfrender", "--width"}).err),
+            "sfrender: error: --width needs a value");
+}
+
+// Whatever the option, a word where a number belongs says so: no option is
+// left to CLI11's "not in range" or "could not convert".
+TEST(CommandLine, EveryNumericOptionOfEveryToolRefusesAWordAsNoNumber) {
+  int checked = 0;
+  for (const ToolCommandLine& tool : allTools()) {
+    auto probe = tool.make();
+    for (const CLI::Option* option : probe->get_options()) {
+      std::string type = option->get_type_name();
+      type = type.substr(0, type.find(':'));
+      if (option->get_positional() || (type != "INT" && type != "UINT" && type != "FLOAT")) {
+        continue;
+      }
+      std::string name = "--" + option->get_lnames().front();
+      auto app = tool.make();
+      Outcome r = parse(*app, {tool.name, name, "abc"});
+      EXPECT_EQ(r.status, ExitCode::Usage) << tool.name << " " << name;
+      EXPECT_NE(r.err.find(name + ": 'abc' is not a number"), std::string::npos)
+          << tool.name << " " << name << ": " << r.err;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
+TEST(CommandLine, AChoiceNotOfferedListsTheChoicesAndTheClosest) {
+  SfcheckOptions o;
+  auto app = makeSfcheckCommandLine(o);
+  EXPECT_EQ(firstLine(parse(*app, {"sfcheck", "--format", "jsn", "a.sf"}).err),
+            "sfcheck: error: --format: 'jsn' is not text, short or json; did you mean 'json'?");
+}
+
+TEST(CommandLine, EveryToolHasTheCommonFlags) {
+  for (const ToolCommandLine& tool : allTools()) {
+    auto app = tool.make();
+    for (const char* flag :
+         {"-h", "--help", "-V", "--version", "-q", "--quiet", "-v", "--verbose", "--color"}) {
+      EXPECT_NE(app->get_option_no_throw(flag), nullptr) << tool.name << " " << flag;
+    }
+    app = tool.make();
+    Outcome version = parse(*app, {tool.name, "-V"});
+    EXPECT_EQ(version.status, ExitCode::Success);
+    EXPECT_EQ(version.out, tool.name + " " + SCENEFILE_VERSION + "\n");
+    app = tool.make();
+    Outcome both = parse(*app, {tool.name, "-q", "-v"});
+    EXPECT_EQ(both.status, ExitCode::Usage) << tool.name;
+    EXPECT_NE(both.err.find("--quiet and --verbose cannot be used together"), std::string::npos)
+        << both.err;
+    app = tool.make();
+    EXPECT_NE(parse(*app, {tool.name, "--color", "sometimes"})
+                  .err.find("'sometimes' is not auto, always or never"),
+              std::string::npos);
+  }
+}
+
+// Help in the GNU layout, within 79 columns, every option's default shown:
+// the source of the man pages (help2man).
+TEST(CommandLine, HelpShowsEveryOptionAndItsDefault) {
+  for (const ToolCommandLine& tool : allTools()) {
+    auto app = tool.make();
+    Outcome help = parse(*app, {tool.name, "--help"});
+    EXPECT_EQ(help.status, ExitCode::Success);
+    EXPECT_EQ(help.out.rfind("Usage: " + tool.name + " [OPTIONS]", 0), 0u) << help.out;
+    std::istringstream lines(help.out);
+    for (std::string line; std::getline(lines, line);) {
+      EXPECT_LE(line.size(), 79u) << tool.name << ": " << line;
+    }
+    auto probe = tool.make();
+    for (const CLI::Option* option : probe->get_options()) {
+      std::string shown = optionDisplayName(*option);
+      EXPECT_NE(help.out.find(shown), std::string::npos) << tool.name << " " << shown;
+    }
+  }
+  SfrenderOptions o;
+  auto app = makeSfrenderCommandLine(o);
+  std::string help = parse(*app, {"sfrender", "--help"}).out;
+  EXPECT_NE(help.find("--spp N"), std::string::npos);
+  EXPECT_NE(help.find("(default: 1)"), std::string::npos);
+  EXPECT_NE(help.find("(default: auto)"), std::string::npos);
+  EXPECT_NE(help.find("Exit status:"), std::string::npos);
+}
+
+TEST(OptionChecks, NumbersAreReadWhole) {
+  std::string value = "12abc";
+  EXPECT_EQ(wholeNumberIn(0, 100)(value), "'12abc' is not a number");
+  value = "+5";
+  EXPECT_EQ(wholeNumberIn(0, 100)(value), "");
+  value = "1e3";
+  EXPECT_EQ(wholeNumberIn(0, 100)(value), "'1e3' is not a whole number written in digits");
+  value = "99999999999999999999";
+  EXPECT_EQ(wholeNumberIn(0, 100)(value), "'99999999999999999999' is too large");
+  value = "nan";
+  EXPECT_EQ(numberIn(0, 1)(value), "'nan' is not a number");
+  value = ".5";
+  EXPECT_EQ(numberIn(0, 1)(value), "");
+}
+
+}  // namespace
+}  // namespace tools

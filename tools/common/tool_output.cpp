@@ -1,0 +1,55 @@
+#include "tools/common/tool_output.h"
+
+#include <cstdio>
+
+#include "tools/common/printable_text.h"
+
+namespace tools {
+
+ToolOutput::ToolOutput(std::string tool, const ToolStreams& streams, const CommonFlags& flags)
+    : tool_(std::move(tool)),
+      streams_(streams),
+      flags_(flags),
+      style_(useColor(flags.colorMode(), streams.errIsTerminal, streams)) {}
+
+void ToolOutput::error(std::string_view message, std::string_view hint) const {
+  streams_.err << tool_ << ": " << style_.severity(scene::Severity::Error, "error:") << ' '
+               << message << '\n';
+  if (!hint.empty()) streams_.err << "  " << style_.location("hint:") << ' ' << hint << '\n';
+}
+
+void ToolOutput::warning(std::string_view message) const {
+  if (flags_.quiet) return;
+  streams_.err << tool_ << ": " << style_.severity(scene::Severity::Warning, "warning:") << ' '
+               << message << '\n';
+}
+
+void ToolOutput::info(std::string_view message) const {
+  if (!flags_.quiet) streams_.err << tool_ << ": " << message << '\n';
+}
+
+void ToolOutput::detail(std::string_view message) const {
+  if (flags_.verbose) streams_.err << tool_ << ": " << message << '\n';
+}
+
+void ToolOutput::step(std::string_view what) {
+  auto now = std::chrono::steady_clock::now();
+  if (flags_.verbose) {
+    double seconds = std::chrono::duration<double>(now - stepStart_).count();
+    char figure[32];
+    std::snprintf(figure, sizeof figure, "%.3f", seconds);
+    streams_.err << tool_ << ": " << what << " took " << figure << " s\n";
+  }
+  stepStart_ = now;
+}
+
+DiagnosticStyle ToolOutput::diagnosticStyle(DiagnosticFormat format, bool warningsAsErrors) const {
+  DiagnosticStyle style;
+  style.terminal = style_;
+  style.quoteSource = format == DiagnosticFormat::Text;
+  style.warningsAsErrors = warningsAsErrors;
+  style.errorsOnly = flags_.quiet;
+  return style;
+}
+
+}  // namespace tools

@@ -1,0 +1,84 @@
+// sfconvert's options: what --help, the man page and the completion show.
+#include <string>
+#include <vector>
+
+#include "scenefile/format.h"
+#include "tools/common/input_limits.h"
+#include "tools/common/option_checks.h"
+#include "tools/sfconvert/sfconvert.h"
+
+namespace tools {
+
+namespace {
+
+// The --to names of the format registry.
+std::vector<std::string> formatNameList() {
+  std::vector<std::string> names;
+  for (const scene::FormatInfo& row : scene::formats()) names.emplace_back(row.name);
+  return names;
+}
+
+void addViewOptions(CLI::App& app, SfconvertOptions& o) {
+  app.add_option("--fov", o.fov,
+                 "glTF and POV-Ray: the camera's vertical field of view in degrees, sfrender's "
+                 "(default: the input's, else 60)")
+      ->option_text("DEGREES")
+      ->check(numberIn(0.0, 180.0));
+  app.add_option("--width", o.width,
+                 "glTF and POV-Ray: the image width, for the camera's aspect ratio (POV-Ray "
+                 "input: image_width)")
+      ->check(wholeNumberIn(1, 1 << 30));
+  app.add_option("--height", o.height,
+                 "glTF and POV-Ray: the image height, for the camera's aspect ratio (POV-Ray "
+                 "input: image_height)")
+      ->check(wholeNumberIn(1, 1 << 30));
+}
+
+void addFormatOptions(CLI::App& app, SfconvertOptions& o) {
+  app.add_flag("--external-buffers", o.externalBuffers,
+               "glTF: write the buffer to NAME.bin beside NAME.gltf instead of embedding it");
+  app.add_option("--tessellation", o.tessellation,
+                 "glTF: segments around a sphere or cylinder (the sphere gets half as many rings)")
+      ->check(wholeNumberIn(scene::kMinSegments, scene::kMaxSegments));
+  app.add_flag("--flat", o.flat,
+               "POV-Ray output: every object unlit in a colour of its own (an object-identity "
+               "picture)");
+  app.add_flag("--skip-unsupported", o.skipUnsupported,
+               "POV-Ray input: skip what is outside the subset, with a warning, and convert the "
+               "rest");
+}
+
+}  // namespace
+
+std::unique_ptr<CLI::App> makeSfconvertCommandLine(SfconvertOptions& o) {
+  std::unique_ptr<CLI::App> app =
+      makeToolApp("sfconvert", "Converts between " + scene::describeFormats(), o.common);
+  app->add_option("input", o.input,
+                  "the scene to read (its format recognised from its content); - reads standard "
+                  "input")
+      ->required();
+  app->add_option("output", o.output,
+                  "the file to write (its format from its extension); - writes standard output")
+      ->required();
+  app->add_option("--to", o.to,
+                  "the output format, instead of the output's extension: " + scene::formatNames())
+      ->option_text("FORMAT")
+      ->check(oneOf(formatNameList()));
+  app->add_flag("--no-loss", o.noLoss, "fail instead of dropping anything the output cannot hold");
+  app->add_flag("--no-clobber", o.noClobber, "never write over an existing file");
+  app->add_flag("--approximate", o.approximate,
+                "write the nearest expressible matrix or camera and report how far it moved");
+  app->add_flag("--transpose-matrices", o.transpose,
+                "read each scene-file matrix column by column (repairs files written transposed)");
+  addViewOptions(*app, o);
+  addFormatOptions(*app, o);
+  app->add_option("--format", o.format,
+                  "how to print diagnostics on standard error: text (quoting the source), short "
+                  "(a line each) or json")
+      ->option_text("FORMAT")
+      ->check(oneOf({"text", "short", "json"}));
+  addReadLimitOptions(*app, o.read);
+  return app;
+}
+
+}  // namespace tools

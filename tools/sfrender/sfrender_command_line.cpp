@@ -1,0 +1,76 @@
+// sfrender's options: what --help, the man page and the completion show.
+#include "tools/common/input_limits.h"
+#include "tools/common/option_checks.h"
+#include "tools/sfrender/sfrender.h"
+
+namespace tools {
+
+namespace {
+
+// The hard ceilings of --spp and --depth, whatever the --max- flags say: far
+// beyond any useful render (65536 samples was the cap before the flags).
+constexpr int kSppCeiling = 65536;
+constexpr int kDepthCeiling = 1000;
+
+void addImageOptions(CLI::App& app, SfrenderOptions& o) {
+  // 32768 a side keeps width * height within an int whatever --max-pixels.
+  app.add_option("--width", o.width,
+                 "image width in pixels (default: 640, or from the height at the scene's aspect "
+                 "ratio)")
+      ->check(wholeNumberIn(1, 32768));
+  app.add_option("--height", o.height,
+                 "image height in pixels (default: 480, or from the width at the scene's aspect "
+                 "ratio)")
+      ->check(wholeNumberIn(1, 32768));
+  app.add_option("--fov", o.fov,
+                 "vertical field of view in degrees (default: the scene's, else 60)")
+      ->option_text("DEGREES")
+      ->check(numberIn(0.001, 179.999));
+  // --spp and --depth are held to the --max- flags below, checked after
+  // parsing so that the message can name the flag that raises them.
+  app.add_option("--spp", o.settings.samplesPerPixel, "samples per pixel, stratified")
+      ->check(wholeNumberIn(1, kSppCeiling));
+  app.add_option("--depth", o.settings.maxDepth, "bounces of reflection and refraction")
+      ->check(wholeNumberIn(0, kDepthCeiling));
+  app.add_option("--threads", o.settings.threads, "threads to render with (0: every core)")
+      ->check(wholeNumberIn(0, 1024));
+  app.add_option("--seed", o.settings.seed, "seed of the sample positions")
+      ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
+}
+
+void addLimitOptions(CLI::App& app, SfrenderOptions& o) {
+  app.add_option("--max-pixels", o.limits.maxPixels,
+                 "refuse an image of more pixels (width x height)")
+      ->check(wholeNumberIn(1, std::int64_t{32768} * 32768));
+  app.add_option("--max-spp", o.limits.maxSpp, "refuse more samples per pixel than this")
+      ->check(wholeNumberIn(1, kSppCeiling));
+  app.add_option("--max-depth", o.limits.maxDepth, "refuse more bounces than this")
+      ->check(wholeNumberIn(0, kDepthCeiling));
+  addReadLimitOptions(app, o.read);
+}
+
+}  // namespace
+
+std::unique_ptr<CLI::App> makeSfrenderCommandLine(SfrenderOptions& o) {
+  std::unique_ptr<CLI::App> app =
+      makeToolApp("sfrender",
+                  "Ray traces a scene, in any of " + scene::describeFormats() +
+                      " (the default scene without one)",
+                  o.common);
+  app->add_option("scene", o.input,
+                  "the scene to render, its format recognised from its content; - reads standard "
+                  "input");
+  app->add_option("-o,--output", o.output,
+                  "the image to write; its extension picks the format (.ppm, .png, .exr, .tif, "
+                  "...); - writes PPM to standard output (default: the scene's name with .ppm, "
+                  "or an instruction file's OUTPUT_FILE)")
+      ->option_text("FILE");
+  addImageOptions(*app, o);
+  app->add_flag("--stats", o.stats,
+                "print the time, the rays and the rays per second (also when quiet)");
+  app->add_flag("--no-clobber", o.noClobber, "never write over an existing file");
+  addLimitOptions(*app, o);
+  return app;
+}
+
+}  // namespace tools
