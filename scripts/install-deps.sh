@@ -10,8 +10,10 @@ packages=(
   # POV-Ray renders the cross-checks; the tutorial-style scenes include its
   # colors.inc.
   povray povray-includes
-  # make docs (and its test) builds the API reference with Doxygen.
-  doxygen
+  # make docs (and its test) builds the API reference with Doxygen; the man
+  # pages are made from each tool's --help by help2man, and their test shows
+  # them with man; the bash completions' test loads them with bash-completion.
+  doxygen help2man man-db bash-completion
   # make bench draws the plots of docs/PERFORMANCE.md with gnuplot.
   gnuplot-nox
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).

@@ -1,5 +1,6 @@
 #include "tools/common/option_checks.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -59,6 +60,27 @@ std::string notWhole(const std::string& value) {
 }
 
 }  // namespace
+
+std::string choiceList(const std::vector<std::string>& names) {
+  std::string list = "{";
+  for (std::size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "" : ",") + names[i];
+  return list + "}";
+}
+
+std::vector<std::string> choicesOf(const CLI::Option& option) {
+  std::string type = option.get_type_name();
+  std::size_t open = type.find(":{");
+  std::size_t close = type.find('}', open);
+  if (open == std::string::npos || close == std::string::npos) return {};
+  std::vector<std::string> choices;
+  std::string list = type.substr(open + 2, close - open - 2);
+  for (std::size_t at = 0; at <= list.size();) {
+    std::size_t comma = std::min(list.find(',', at), list.size());
+    choices.push_back(list.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return choices;
+}
 
 CLI::Validator numberIn(double low, double high) {
   return CLI::Validator(
@@ -136,7 +158,9 @@ CLI::Validator oneOf(std::vector<std::string> names) {
         }
         return message;
       },
-      "", "one of");
+      // The description CLI11 adds to the option's type ("TEXT:{a,b}"):
+      // --help leaves it out, and the completion reads the choices from it.
+      choiceList(names), "one of");
 }
 
 }  // namespace tools

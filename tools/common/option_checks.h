@@ -30,4 +30,9 @@ CLI::Validator sizeInBytes();
 // One of `names`, exactly; the message lists them and suggests the closest.
 CLI::Validator oneOf(std::vector<std::string> names);
 
+// The choices of an option checked with oneOf (for the completion), or
+// none; and how oneOf writes them into the option's type: "{a,b,c}".
+std::vector<std::string> choicesOf(const CLI::Option& option);
+std::string choiceList(const std::vector<std::string>& names);
+
 }  // namespace tools
