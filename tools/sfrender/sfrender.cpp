@@ -83,7 +83,7 @@ void printStatistics(const render::RenderStatistics& s, const render::RenderSett
        << " million rays/s\n";
   // What adaptive depth control (docs/RENDERING.md, "Cost") left out.
   line << "sfrender: left out " << withThousands(s.rays.pruned)
-       << " branches (past the depth, or within their share of half an 8-bit level), traced "
+       << " branches (past the depth, or within their share of half a level of the image), traced "
        << withThousands(s.retracedPixels) << " pixels again\n";
   err << line.str();
 }
@@ -140,7 +140,8 @@ std::variant<SceneAndTarget, int> readSceneAndTarget(const std::string& input,
 // ray: the name (not the input, an image format) and the place (the folder
 // there and writable, the target no folder or device, room for a PPM).
 std::optional<int> targetRefusal(const std::string& input, const SceneAndTarget& job,
-                                 const render::RenderSettings& settings, std::ostream& err) {
+                                 const render::RenderSettings& settings,
+                                 const ImageOptions& imageOptions, std::ostream& err) {
   const fs::path& target = job.target;
   // Before the extension's check, so that an OUTPUT_FILE naming its own
   // instruction file is told so, not that .txt is no image format.
@@ -156,13 +157,13 @@ std::optional<int> targetRefusal(const std::string& input, const SceneAndTarget&
     printDiagnostics(diagnostics, err);
     return toInt(ExitCode::InvalidInput);
   }
-  if (std::optional<std::string> refusal = imageRefusal(target)) {
-    err << "sfrender: cannot write images named '" << target.string() << "': " << *refusal
-        << "\n";
+  if (std::optional<std::string> refusal = imageRefusal(target, imageOptions)) {
+    err << "sfrender: error: " << *refusal << "\n";
     return toInt(ExitCode::Usage);
   }
   std::string error;
-  if (!checkCanWrite(target, true, ppmFileSize(settings.width, settings.height, target), error)) {
+  if (!checkCanWrite(target, true,
+                     ppmFileSize(settings.width, settings.height, target, imageOptions), error)) {
     err << target.string() << ": error: cannot write the image: " << error << "\n";
     return toInt(ExitCode::IoError);
   }
@@ -175,8 +176,9 @@ std::optional<int> resourceRefusal(const SceneAndTarget& job,
                                    const render::RenderSettings& settings,
                                    const AvailableMemoryProbe& availableMemory, Stage& stage,
                                    std::ostream& err) {
-  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
-      job.scene.objects.size(), job.scene.lights.size(), settings.width, settings.height);
+  render::RenderMemoryEstimate estimate =
+      render::estimateRenderMemory(job.scene.objects.size(), job.scene.lights.size(),
+                                   settings.width, settings.height, settings.coverage);
   if (std::optional<std::string> refusal = render::renderMemoryRefusal(
           estimate, availableMemory ? availableMemory() : std::nullopt)) {
     err << "sfrender: error: " << *refusal << "\n";
@@ -232,10 +234,10 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
   render::RenderSettings settings;
   bool quiet = false;
   bool stats = false;
+  ImageOptions imageOptions;
   app.add_option("scene", input, "the scene to render, its format recognised from its content");
-  app.add_option(
-      "-o,--output", output,
-      "the image to write; its extension picks the format (.ppm, .png, .exr, .tif, ...)");
+  app.add_option("-o,--output", output,
+                 "the image to write; its extension picks the format (listed at the end)");
   // 32768 a side keeps width * height within an int whatever --max-pixels.
   ViewFlags given;
   given.width = app.add_option("--width", settings.width, "image width in pixels")
@@ -256,6 +258,14 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
   app.add_option("--seed", settings.seed, "seed of the sample positions");
   app.add_flag("--quiet", quiet, "print nothing but errors");
   app.add_flag("--stats", stats, "print the time, the rays and the rays per second");
+  app.add_option("--bits", imageOptions.bits,
+                 "bits a channel: 8 or 16 for integer images (PNG, TIFF, PPM), 16 (half) or 32 "
+                 "(float) for EXR (default: 8, EXR 32)")
+      ->check(CLI::IsMember({8, 16, 32}));
+  app.add_flag("--alpha", imageOptions.alpha,
+               "a fourth channel: how much of each pixel objects cover, the background "
+               "transparent");
+  app.footer([] { return imageFormatHelp(); });
   RenderLimits limits;
   app.add_option("--max-pixels", limits.maxPixels,
                  "refuse an image of more pixels (width x height)")
@@ -287,7 +297,10 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
     return toInt(ExitCode::Usage);
   }
   const fs::path& target = job.target;
-  if (std::optional<int> refused = targetRefusal(input, job, settings, err)) return *refused;
+  if (std::optional<int> refused = targetRefusal(input, job, settings, imageOptions, err)) {
+    return *refused;
+  }
+  fitRenderToImage(target, imageOptions, settings);
 
   // Step 2: render, with a progress bar on a terminal, if it fits in memory
   // and its threads start.
@@ -310,7 +323,7 @@ int renderToFile(int argc, const char* const* argv, std::ostream& out, std::ostr
   // Step 3: the file, whole or not at all.
   stage.set("writing " + printableText(target.string()));
   std::string writeError;
-  if (!writeImageFile(image, target, writeError)) {
+  if (!writeImageFile(image, target, writeError, imageOptions)) {
     err << target.string() << ": error: cannot write the image: " << writeError << "\n";
     return toInt(ExitCode::IoError);
   }
