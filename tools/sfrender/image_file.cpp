@@ -291,10 +291,12 @@ void fitRenderToImage(const std::filesystem::path& path, const ImageOptions& opt
 std::string imageFormatHelp() {
   Writable w = writableFormats();
   std::string help =
-      "Image formats, by the extension of -o or OUTPUT_FILE (--bits: bits a channel, the "
-      "default first; sRGB: the display values, tagged sRGB; linear: their sRGB decoding):\n" +
+      "Image formats, picked by the extension of -o or OUTPUT_FILE (--bits: bits a channel, the\n"
+      "default first; sRGB: the display values, tagged sRGB where the format can say so;\n"
+      "linear: their sRGB decoding):\n" +
       imageFormatTable(w.formats);
   if (!w.oiio) help += "  (no other: " + w.moduleError + ")\n";
+  help.pop_back();  // CLI11 ends the footer's line
   return help;
 }
 
