@@ -297,5 +297,30 @@ TEST(AdaptiveDepth, TheImageIsTheSameToTheLastLevel) {
   }
 }
 
+TEST(AdaptiveDepth, A16BitImageIsTheSameToTheLastLevel) {
+  // With the levels of a 16-bit image and half of one of them as the
+  // tolerance, every 16-bit level is what tracing in full gives; with the
+  // 8-bit settings, some are not.
+  RenderScene compiled(glassRoom());
+  RenderSettings settings;
+  settings.width = 80;
+  settings.height = 60;
+  settings.maxDepth = 12;
+  Image cut8 = renderImage(compiled, settings);
+  settings.levels = 65535.0;
+  settings.pruneTolerance = 0.5 / settings.levels;
+  Image cut16 = renderImage(compiled, settings);
+  settings.pruneTolerance = 0.0;
+  Image full = renderImage(compiled, settings);
+  auto level = [](float v) { return std::lround(std::clamp(double{v}, 0.0, 1.0) * 65535.0); };
+  int differ8 = 0;
+  for (std::size_t i = 0; i < full.rgb.size(); ++i) {
+    ASSERT_LE(std::abs(full.rgb[i] - cut16.rgb[i]), 0.5 / 65535.0) << i;
+    ASSERT_EQ(level(full.rgb[i]), level(cut16.rgb[i])) << i;
+    differ8 += level(full.rgb[i]) != level(cut8.rgb[i]) ? 1 : 0;
+  }
+  EXPECT_GT(differ8, 0);
+}
+
 }  // namespace
 }  // namespace render

@@ -90,19 +90,23 @@ void forEachTile(int width, int height, int threads, PerTile&& perTile,
   if (failure) std::rethrow_exception(failure);
 }
 
-// The level of an 8-bit image (tools::quantizeChannel): round(clamp(v, 0, 1) * 255).
-long level8(float v) {
-  return std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f);
+// The level of an integer image of `levels` + 1 levels
+// (tools::quantizeChannel): round(clamp(v, 0, 1) * levels). For 255 the
+// float product is the one the 8-bit writer rounds.
+long levelOf(float v, double levels) {
+  float clamped = std::clamp(v, 0.0f, 1.0f);
+  if (levels == 255.0) return std::lround(clamped * 255.0f);
+  return std::lround(static_cast<double>(clamped) * levels);
 }
 
 // Whether every colour from v to v + slack, in each channel, is stored as
-// the same 8-bit level. The margin covers the rounding by which the full
-// colour, summed in another order of terms, can stray past that range.
-bool oneLevel(const glm::dvec3& v, double slack) {
+// the same level. The margin covers the rounding by which the full colour,
+// summed in another order of terms, can stray past that range.
+bool oneLevel(const glm::dvec3& v, double slack, double levels) {
   constexpr double kRounding = 1e-9;
   for (int c = 0; c < 3; ++c) {
-    if (level8(toStoredChannel(v[c] - kRounding)) !=
-        level8(toStoredChannel(v[c] + slack + kRounding))) {
+    if (levelOf(toStoredChannel(v[c] - kRounding), levels) !=
+        levelOf(toStoredChannel(v[c] + slack + kRounding), levels)) {
       return false;
     }
   }
@@ -148,10 +152,10 @@ glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed
   return {i + ((index % columns) + u) / columns, j + ((index / columns) + v) / rows};
 }
 
-std::uint64_t Image::bytesFor(int width, int height) {
+std::uint64_t Image::bytesFor(int width, int height, bool withCoverage) {
   std::uint64_t pixels = saturatingProduct(static_cast<std::uint64_t>(width > 0 ? width : 0),
                                            static_cast<std::uint64_t>(height > 0 ? height : 0));
-  return saturatingProduct(pixels, kChannels * sizeof(float));
+  return saturatingProduct(pixels, (kChannels + (withCoverage ? 1 : 0)) * sizeof(float));
 }
 
 Image renderImage(const RenderScene& scene, const RenderSettings& settings,
@@ -160,8 +164,9 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
   Image image;
   image.width = settings.width;
   image.height = settings.height;
-  image.rgb.assign(static_cast<std::size_t>(settings.width) * settings.height * Image::kChannels,
-                   0.0f);
+  std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
+  image.rgb.assign(pixels * Image::kChannels, 0.0f);
+  if (settings.coverage) image.coverage.assign(pixels, 0.0f);
   PinholeCamera camera(scene.camera(), settings);
   Tracer tracer(scene, settings.maxDepth);
   // Not a number, or below 0, allows no error.
@@ -192,11 +197,13 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
         // changes it), as the copy cost as much as a tenth of a primary ray.
         MediumStack media = eyeMedia;
         TraceContext& context = contexts[worker];
-        // The mean of a pixel's samples, traced to within `allowed`, and in
-        // `slack` the bound on what adaptive depth control left out of it.
-        auto tracePixel = [&](int i, int j, double allowed, double& slack) {
+        // The mean of a pixel's samples, traced to within `allowed`, in
+        // `slack` the bound on what adaptive depth control left out of it,
+        // and in `hits` how many of its camera rays met an object.
+        auto tracePixel = [&](int i, int j, double allowed, double& slack, int& hits) {
           glm::dvec3 sum(0.0);
           slack = 0.0;
+          hits = 0;
           for (int s = 0; s < spp; ++s) {
             glm::dvec2 at = samplePosition(i, j, s, spp, settings.seed);
             if (scene.hasTransparency()) media = eyeMedia;
@@ -206,6 +213,7 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
             sum += tracer.trace(camera.rayThrough(at.x, at.y), RaySource{}, 0, media, context,
                                 allowed);
             slack += context.slack;
+            hits += context.primaryHit ? 1 : 0;
           }
           // Dividing by 1 is exact: skipped, for one division less a pixel.
           if (spp > 1) {
@@ -217,27 +225,32 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
         for (int j = y0; j < y1; ++j) {
           for (int i = x0; i < x1; ++i) {
             double slack = 0.0;
-            glm::dvec3 sum = tracePixel(i, j, tolerance, slack);
+            int hits = 0;
+            glm::dvec3 sum = tracePixel(i, j, tolerance, slack, hits);
             // The full colour lies in [sum, sum + slack]: where that range
             // holds two 8-bit levels, the pixel is traced again with a 64th
             // of the tolerance, then in full, until the range holds one
             // level (a trace that runs out of its allowance proves nothing,
             // and if every one does, the first stays).
-            if (slack > 0.0 && certifies && !oneLevel(sum, slack)) {
+            if (slack > 0.0 && certifies && !oneLevel(sum, slack, settings.levels)) {
               ++retraced[worker];
               for (double finer : {tolerance / 64.0, 0.0}) {
                 std::uint64_t cutBefore = context.counts.cut;
                 double finerSlack = 0.0;
-                glm::dvec3 again = tracePixel(i, j, finer, finerSlack);
+                glm::dvec3 again = tracePixel(i, j, finer, finerSlack, hits);
                 if (context.counts.cut == cutBefore &&
-                    (finer == 0.0 || oneLevel(again, finerSlack))) {
+                    (finer == 0.0 || oneLevel(again, finerSlack, settings.levels))) {
                   sum = again;
                   break;
                 }
               }
             }
-            float* p = &image.rgb[3 * (static_cast<std::size_t>(j) * settings.width + i)];
+            std::size_t pixel = static_cast<std::size_t>(j) * settings.width + i;
+            float* p = &image.rgb[3 * pixel];
             for (int c = 0; c < 3; ++c) p[c] = toStoredChannel(sum[c]);
+            if (settings.coverage) {
+              image.coverage[pixel] = static_cast<float>(static_cast<double>(hits) / spp);
+            }
           }
         }
       },

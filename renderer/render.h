@@ -31,6 +31,12 @@ struct RenderSettings {
   // "Cost"). 0: no limit, and then no pixel is retraced, so that an 8-bit
   // level can come out one below what full tracing gives.
   std::uint64_t maxRaysPerSample = 4096;
+  // The largest level of the integer image the render will be stored in:
+  // what retracing keeps to the level of full tracing (255 for 8 bits,
+  // 65535 for 16, with pruneTolerance half of one of its levels).
+  double levels = 255.0;
+  // Whether the image gets Image::coverage, for an image with alpha.
+  bool coverage = false;
   int threads = 0;  // 0: every core
   std::uint64_t seed = 0;
 };
@@ -53,7 +59,8 @@ class PinholeCamera {
   double width_, height_;
 };
 
-// Linear RGB, row by row from the top, three floats a pixel.
+// The colours RENDERING.md computes, row by row from the top, three floats
+// a pixel; and, when asked for, each pixel's coverage.
 struct Image {
   /// Floats a pixel in `rgb`: red, green, blue.
   static constexpr std::size_t kChannels = 3;
@@ -61,14 +68,21 @@ struct Image {
   int width = 0;
   int height = 0;
   std::vector<float> rgb;
+  /// With RenderSettings::coverage, one float a pixel: the fraction of its
+  /// samples whose camera ray meets an object (0 where only the background
+  /// shows, 1 where every sample hits); empty otherwise. The background is
+  /// black, so `rgb` is already that coverage times the mean colour of the
+  /// samples that hit: premultiplied.
+  std::vector<float> coverage;
   glm::vec3 pixel(int x, int y) const {
     const float* p = &rgb[kChannels * (static_cast<std::size_t>(y) * width + x)];
     return {p[0], p[1], p[2]};
   }
 
-  /// The bytes of `rgb` for an image of `width` x `height` pixels, as
-  /// renderImage allocates it; a side below 1 counts as 0. Saturates.
-  static std::uint64_t bytesFor(int width, int height);
+  /// The bytes of `rgb`, and of `coverage` when `withCoverage`, for an
+  /// image of `width` x `height` pixels, as renderImage allocates them; a
+  /// side below 1 counts as 0. Saturates.
+  static std::uint64_t bytesFor(int width, int height, bool withCoverage = false);
 };
 
 struct RenderStatistics {

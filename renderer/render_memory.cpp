@@ -30,11 +30,12 @@ std::uint64_t RenderMemoryEstimate::total() const {
 }
 
 RenderMemoryEstimate estimateRenderMemory(std::uint64_t objects, std::uint64_t lights, int width,
-                                          int height) {
+                                          int height, bool coverage) {
   RenderMemoryEstimate e;
-  // The float image, and for the file one byte a channel (PPM, PNG), or the
-  // floats again where OpenImageIO copies them (EXR, TIFF): the larger.
-  e.image = saturatingProduct(Image::bytesFor(width, height), 2);
+  // The float image (with its coverage), and for the file one or two bytes
+  // a channel (PPM, PNG, TIFF), or the floats again (EXR's linear values):
+  // the larger.
+  e.image = saturatingProduct(Image::bytesFor(width, height, coverage), 2);
   RenderScene::Bytes compiled = RenderScene::bytesFor(objects, lights);
   e.scene = compiled.scene;
   e.bvh = compiled.bvh;

@@ -29,9 +29,10 @@ struct RenderMemoryEstimate {
 };
 
 /// The estimate for rendering `objects` objects and `lights` lights into a
-/// `width` x `height` image and writing it to a file.
+/// `width` x `height` image, with its coverage or not, and writing it to a
+/// file.
 RenderMemoryEstimate estimateRenderMemory(std::uint64_t objects, std::uint64_t lights, int width,
-                                          int height);
+                                          int height, bool coverage = false);
 
 /// MemAvailable of /proc/meminfo's text, in bytes, or nothing when absent.
 std::optional<std::uint64_t> parseMemAvailable(std::string_view meminfo);

@@ -84,6 +84,11 @@ TEST(RenderMemory, TheEstimateBoundsWhatIsAllocated) {
   settings.threads = 1;
   Image image = renderImage(compiled, settings);
   EXPECT_EQ(image.rgb.capacity() * sizeof(float), Image::bytesFor(17, 5));
+  settings.coverage = true;
+  Image covered = renderImage(compiled, settings);
+  EXPECT_EQ((covered.rgb.capacity() + covered.coverage.capacity()) * sizeof(float),
+            Image::bytesFor(17, 5, true));
+  EXPECT_GT(estimateRenderMemory(1, 1, 17, 5, true).image, estimateRenderMemory(1, 1, 17, 5).image);
 }
 
 TEST(RenderMemory, HugeCountsSaturateInsteadOfWrapping) {

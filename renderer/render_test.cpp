@@ -143,5 +143,55 @@ TEST(Render, ObjectIdsFollowThePixelCentres) {
   EXPECT_EQ(ids[0], -1);            // the corner
 }
 
+// A wall whose left edge, seen from the eye, runs down the middle of the
+// middle column of a 9-pixel-wide image: x = 4.5, where the camera ray has
+// no sideways part.
+scene::Scene halfCoveredColumn() {
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 0, -1});
+  s.objects.push_back(
+      object(ObjectKind::Cube, {scale(10, 10, 1), translate(10, 0, -5)}, flat({0.8, 0.4, 0.2})));
+  s.lights.push_back(light({0, 0, 0}));
+  return s;
+}
+
+TEST(Render, CoverageIsTheShareOfSamplesThatMeetAnObject) {
+  RenderScene compiled(halfCoveredColumn());
+  RenderSettings settings;
+  settings.width = 9;
+  settings.height = 5;
+  settings.coverage = true;
+  for (int spp : {4, 16}) {
+    settings.samplesPerPixel = spp;
+    Image image = renderImage(compiled, settings);
+    ASSERT_EQ(image.coverage.size(), 9u * 5u);
+    for (int j = 0; j < settings.height; ++j) {
+      for (int i = 0; i < settings.width; ++i) {
+        float expected = i < 4 ? 0.0f : i == 4 ? 0.5f : 1.0f;
+        float alpha = image.coverage[static_cast<std::size_t>(j) * settings.width + i];
+        ASSERT_EQ(alpha, expected) << i << "," << j << " at " << spp << " spp";
+        // The colour is the coverage times the wall's: premultiplied.
+        ASSERT_FLOAT_EQ(image.pixel(i, j).x, 0.8f * expected) << i << "," << j;
+      }
+    }
+  }
+}
+
+TEST(Render, CoverageChangesNoColour) {
+  RenderScene compiled(defaultScene());
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  settings.samplesPerPixel = 2;
+  Image plain = renderImage(compiled, settings);
+  EXPECT_TRUE(plain.coverage.empty());
+  settings.coverage = true;
+  Image covered = renderImage(compiled, settings);
+  EXPECT_EQ(plain.rgb, covered.rgb);
+  ASSERT_EQ(covered.coverage.size(), 64u * 48u);
+  // The default scene's floor fills the bottom row, the sky the top one.
+  EXPECT_EQ(covered.coverage.back(), 1.0f);
+  EXPECT_EQ(covered.coverage.front(), 0.0f);
+}
+
 }  // namespace
 }  // namespace render

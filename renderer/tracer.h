@@ -71,6 +71,9 @@ struct alignas(64) TraceContext {
   // that the full colour lies between that colour and it plus this. Reset
   // by the caller.
   double slack = 0.0;
+  // Whether the last camera ray traced (bounce 0) met an object: its
+  // sample's share of the pixel's coverage (Image::coverage).
+  bool primaryHit = false;
   std::array<std::uint32_t, kOccluderSlots> lastOccluder = filledWithNone();
 
  private:

@@ -6,7 +6,10 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libcli11-dev libglm-dev libtinygltf-dev nlohmann-json3-dev
-  libopenimageio-dev libgtest-dev libgmock-dev
+  libopenimageio-dev liblcms2-dev libgtest-dev libgmock-dev
+  # The colour-managed images' test converts sfrender's PNG, TIFF and EXR
+  # with oiiotool.
+  openimageio-tools
   # POV-Ray renders the cross-checks; the tutorial-style scenes include its
   # colors.inc.
   povray povray-includes

@@ -151,6 +151,10 @@ CLI::Validator oneOf(std::vector<std::string> names) {
           list += i == 0 ? "" : i + 1 == names.size() ? " or " : ", ";
           list += names[i];
         }
+        // Numbers to choose from (--bits 8|16|32): a word is no number.
+        bool numbers = std::all_of(names.begin(), names.end(),
+                                   [](const std::string& n) { return whole(n).has_value(); });
+        if (numbers && !decimal(value)) return inQuotes(value) + " is not a number";
         std::string message = inQuotes(value) + " is not " + list;
         std::vector<std::string_view> candidates(names.begin(), names.end());
         if (auto closest = scene::suggestSpelling(value, candidates)) {

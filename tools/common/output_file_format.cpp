@@ -8,13 +8,19 @@ namespace tools {
 
 namespace {
 
-// RGB formats that OpenImageIO 2.4 (Debian 12) writes, 8-bit but for the
-// last two (floating point); a test checks that its module takes each.
-// Formats it also writes but that would lose or mangle an RGB image (.pgm,
-// .gif) or are no file at all (.term, .null) are left out.
-constexpr std::array<std::string_view, 12> kImageExtensions = {
-    ".ppm", ".pnm", ".png",  ".jpg",  ".jpeg", ".bmp",
-    ".tga", ".tif", ".tiff", ".webp", ".exr",  ".hdr",
+// What sfrender writes with Debian 12's OpenImageIO (2.4.7): its own .ppm,
+// then the extensions of OpenImageIO's writers that sfrender takes
+// (tools/sfrender/oiio_module.cpp leaves out those that make no file or
+// cannot hold a rendered image: GIF, ICO, ZFile), in the order of sfrender's
+// table of formats (tools/sfrender/image_formats.cpp). sfrender asks
+// OpenImageIO at run time; sfcheck, which must not load it, has this copy,
+// and a test (ImageFormats.SfchecksListIsOpenImageIOs) fails when the two
+// part.
+constexpr std::array<std::string_view, 43> kImageExtensions = {
+    ".ppm", ".pgm", ".pbm",  ".pnm",  ".png",  ".tif",   ".tiff", ".tx",   ".env", ".sm",   ".vsm",
+    ".exr", ".sxr", ".mxr",  ".hdr",  ".rgbe", ".jpg",   ".jpe",  ".jpeg", ".jif", ".jfif", ".jfi",
+    ".jp2", ".j2k", ".webp", ".heic", ".heif", ".heics", ".avif", ".bmp",  ".tga", ".tpic", ".dpx",
+    ".sgi", ".rgb", ".rgba", ".bw",   ".int",  ".inta",  ".fits", ".iff",  ".z",   ".rla",
 };
 
 }  // namespace
@@ -31,15 +37,6 @@ bool hasImageExtension(const std::filesystem::path& path) {
          kImageExtensions.end();
 }
 
-std::string imageExtensionList() {
-  std::string list;
-  for (std::size_t i = 0; i < kImageExtensions.size(); ++i) {
-    if (i > 0) list += i + 1 == kImageExtensions.size() ? " or " : ", ";
-    list += kImageExtensions[i];
-  }
-  return list;
-}
-
 void checkOutputFileFormat(const scene::Scene& scene, scene::Severity severity,
                            scene::DiagnosticList& out) {
   if (!scene.outputFile || hasImageExtension(*scene.outputFile)) return;
@@ -49,7 +46,7 @@ void checkOutputFileFormat(const scene::Scene& scene, scene::Severity severity,
                         : "ends in '" + name.extension().string() + "', no image format";
   out.report(severity, scene::DiagnosticCode::OutputFileFormat, scene.outputFileSpan,
              "OUTPUT_FILE '" + *scene.outputFile + "' " + why + " sfrender can write")
-      .hint = "name the image with " + imageExtensionList();
+      .hint = "name the image with .ppm, .png, .tif or .exr (sfrender --help lists every format)";
 }
 
 }  // namespace tools

@@ -1,7 +1,8 @@
-// The image formats sfrender writes, by the output's extension: one list,
-// shared by sfrender (which writes them, through OpenImageIO but for .ppm)
-// and sfcheck (which warns of an OUTPUT_FILE that names none), so that
-// sfcheck needs no OpenImageIO to tell.
+// The image formats sfrender writes, by the output's extension, as a fixed
+// list: sfcheck warns of an OUTPUT_FILE that names none, and sfrender
+// refuses one, before it asks OpenImageIO (which sfcheck must not load) at
+// run time what it writes (tools/sfrender/image_formats.h); a test holds
+// the two lists together.
 #pragma once
 
 #include <filesystem>
@@ -14,14 +15,12 @@
 
 namespace tools {
 
-// The extensions, lower case with their dot: ".ppm", ".png", ...
+// The extensions, lower case with their dot: ".ppm", ".png", ... (those of
+// sfrender's --help with Debian 12's OpenImageIO).
 std::span<const std::string_view> imageExtensions();
 
 // Whether the name ends in one of them, in any case (".PNG" too).
 bool hasImageExtension(const std::filesystem::path& path);
-
-// The list for a message: ".ppm, .pnm, .png, ... or .hdr".
-std::string imageExtensionList();
 
 // Reports an OUTPUT_FILE with no image extension at its span
 // [output-file-format], with the given severity (a warning for sfcheck;

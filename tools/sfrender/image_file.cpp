@@ -3,23 +3,24 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tools/common/file_io.h"
-#include "tools/common/output_file_format.h"
+#include "tools/sfrender/oiio_module.h"
 
 namespace tools {
 
 namespace {
 
-// The functions of the OpenImageIO module (oiio_module.cpp).
+// The functions of the OpenImageIO module (oiio_module.h).
 struct OiioModule {
-  int (*format)(const char* path) = nullptr;
-  int (*write)(const char* path, int width, int height, int floating, const void* pixels,
-               char* error, std::size_t errorSize) = nullptr;
+  SfrenderOiioFormats formats = nullptr;
+  SfrenderOiioWrite write = nullptr;
 };
 
 #ifndef SFRENDER_MODULE_DIR
@@ -68,33 +69,164 @@ std::optional<OiioModule> loadOiio(std::string& error) {
     return std::nullopt;
   }
   OiioModule m;
-  m.format = reinterpret_cast<decltype(m.format)>(::dlsym(handle, "sfrender_oiio_format"));
-  m.write = reinterpret_cast<decltype(m.write)>(::dlsym(handle, "sfrender_oiio_write"));
-  if (!m.format || !m.write) {
+  m.formats = reinterpret_cast<SfrenderOiioFormats>(::dlsym(handle, SFRENDER_OIIO_FORMATS));
+  m.write = reinterpret_cast<SfrenderOiioWrite>(::dlsym(handle, SFRENDER_OIIO_WRITE));
+  if (!m.formats || !m.write) {
     error = moduleFailure(file, "it lacks its functions");
     return std::nullopt;
   }
   return m;
 }
 
-// Binary PPM (P6, 8-bit) is written here rather than through OpenImageIO:
-// the format is a header and the bytes, and OpenImageIO's writer, which
-// writes it a scanline at a time behind its plugin lookup, cost 0.15 to
-// 0.2 s on a 1920x1080 image. Only the exact extension ".ppm" is taken.
+// The formats sfrender can write: .ppm, and those of OpenImageIO when its
+// module loads (or why it did not, in `moduleError`).
+struct Writable {
+  std::optional<OiioModule> oiio;
+  std::vector<ImageFormat> formats;
+  std::string moduleError;
+};
+
+Writable writableFormats() {
+  Writable w;
+  w.oiio = loadOiio(w.moduleError);
+  std::string list;
+  if (w.oiio) {
+    list.resize(w.oiio->formats(nullptr, 0) + 1);
+    list.resize(w.oiio->formats(list.data(), list.size()));
+  }
+  w.formats = imageFormatsFrom(list);
+  return w;
+}
+
+// Binary PPM (P6) is written here rather than through OpenImageIO: the
+// format is a header and the bytes, and OpenImageIO's writer, which writes
+// it a scanline at a time behind its plugin lookup, cost 0.15 to 0.2 s on a
+// 1920x1080 image. ".ppm" in any case is taken.
 bool isPpm(const std::filesystem::path& path) {
-  return path.extension() == ".ppm";
+  std::string extension = path.extension().string();
+  return extension.size() == 4 && extension[0] == '.' &&
+         std::tolower(static_cast<unsigned char>(extension[1])) == 'p' &&
+         std::tolower(static_cast<unsigned char>(extension[2])) == 'p' &&
+         std::tolower(static_cast<unsigned char>(extension[3])) == 'm';
+}
+
+std::string ppmHeader(int width, int height, int bits) {
+  return "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n" +
+         (bits == 16 ? "65535" : "255") + "\n";
+}
+
+// The channels a pixel of the file: RGB, and alpha with --alpha.
+int channelsOf(const ImageOptions& options) {
+  return options.alpha ? 4 : 3;
+}
+
+// The display values as levels, a pixel's colour straight (divided by its
+// coverage) when the file gets alpha: integer formats store alpha straight
+// (PNG must; TIFF marks it unassociated), so that the levels of a covered
+// pixel are its colour's, whatever the coverage.
+template <typename Level, typename Quantize>
+std::vector<Level> displayLevels(const render::Image& image, const ImageOptions& options,
+                                 Quantize quantize) {
+  std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  int channels = channelsOf(options);
+  std::vector<Level> levels(pixels * channels);
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const float* rgb = &image.rgb[3 * p];
+    Level* out = &levels[channels * p];
+    if (!options.alpha) {
+      for (int c = 0; c < 3; ++c) out[c] = quantize(rgb[c]);
+      continue;
+    }
+    float a = image.coverage[p];
+    for (int c = 0; c < 3; ++c) out[c] = quantize(a > 0.0f ? rgb[c] / a : 0.0f);
+    out[3] = quantize(a);
+  }
+  return levels;
+}
+
+// The linear values (srgbToLinear), within `largest` (a half's range for a
+// half image: past it a half is infinite). With alpha they are
+// premultiplied, as EXR's are by convention: the coverage times the
+// decoding of the straight colour, which is what a colour-managed reader
+// that unpremultiplies, converts and premultiplies again (OpenImageIO,
+// Nuke) turns back into the straight display colour.
+std::vector<float> linearValues(const render::Image& image, const ImageOptions& options,
+                                float largest) {
+  std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  int channels = channelsOf(options);
+  auto linear = [largest](float v) { return std::clamp(srgbToLinear(v), -largest, largest); };
+  std::vector<float> values(pixels * channels);
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const float* rgb = &image.rgb[3 * p];
+    float* out = &values[channels * p];
+    if (!options.alpha) {
+      for (int c = 0; c < 3; ++c) out[c] = linear(rgb[c]);
+      continue;
+    }
+    float a = image.coverage[p];
+    for (int c = 0; c < 3; ++c) out[c] = a > 0.0f ? a * linear(rgb[c] / a) : 0.0f;
+    out[3] = a;
+  }
+  return values;
+}
+
+std::string ppmBytes(const render::Image& image, int bits) {
+  std::string header = ppmHeader(image.width, image.height, bits);
+  std::string bytes = header;
+  if (bits == 16) {
+    // Most significant byte first (Netpbm).
+    std::vector<std::uint16_t> levels = displayLevels<std::uint16_t>(image, {}, quantizeChannel16);
+    bytes.resize(header.size() + 2 * levels.size());
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      bytes[header.size() + 2 * i] = static_cast<char>(levels[i] >> 8);
+      bytes[header.size() + 2 * i + 1] = static_cast<char>(levels[i] & 0xff);
+    }
+    return bytes;
+  }
+  bytes.resize(header.size() + image.rgb.size());
+  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin() + header.size(),
+                 [](float v) { return static_cast<char>(quantizeChannel(v)); });
+  return bytes;
+}
+
+// Writes through the module, as `format` stores the image.
+bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const ImageFormat& format,
+                      const ImageOptions& options, const std::filesystem::path& temporary,
+                      std::string& error) {
+  int bits = storedBits(format, options);
+  SfrenderImageData data{
+      image.width, image.height, channelsOf(options), kSfrenderUint8, nullptr, 0, 1};
+  std::vector<unsigned char> bytes;
+  std::vector<std::uint16_t> words;
+  std::vector<float> floats;
+  if (format.linear) {
+    constexpr float kLargestHalf = 65504.0f;
+    data.pixelType = bits == 16 ? kSfrenderHalf : kSfrenderFloat;
+    floats =
+        linearValues(image, options, bits == 16 ? kLargestHalf : std::numeric_limits<float>::max());
+    data.pixels = floats.data();
+    data.linear = 1;
+    data.straightAlpha = 0;
+  } else if (bits == 16) {
+    data.pixelType = kSfrenderUint16;
+    words = displayLevels<std::uint16_t>(image, options, quantizeChannel16);
+    data.pixels = words.data();
+  } else {
+    bytes = displayLevels<unsigned char>(image, options, quantizeChannel);
+    data.pixels = bytes.data();
+  }
+  char message[512] = "";
+  if (!oiio.write(temporary.c_str(), &data, message, sizeof message)) {
+    error = message;
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
 
-std::string ppmImageBytes(const render::Image& image) {
-  std::string header =
-      "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
-  std::string bytes(header.size() + image.rgb.size(), '\0');
-  std::copy(header.begin(), header.end(), bytes.begin());
-  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin() + header.size(),
-                 [](float v) { return static_cast<char>(quantizeChannel(v)); });
-  return bytes;
+std::vector<ImageFormat> writableImageFormats() {
+  return writableFormats().formats;
 }
 
 unsigned char quantizeChannel(float value) {
@@ -102,14 +234,37 @@ unsigned char quantizeChannel(float value) {
   return static_cast<unsigned char>(std::lround(clamped * 255.0f));
 }
 
-std::optional<std::string> imageRefusal(const std::filesystem::path& path) {
-  std::string useInstead = "use " + imageExtensionList();
-  if (!hasImageExtension(path)) return useInstead;
-  if (isPpm(path)) return std::nullopt;
-  std::string error;
-  std::optional<OiioModule> oiio = loadOiio(error);
-  if (!oiio) return error + "; .ppm needs no module";
-  if (oiio->format(path.c_str()) < 0) return useInstead;
+std::uint16_t quantizeChannel16(float value) {
+  double clamped = std::clamp(static_cast<double>(value), 0.0, 1.0);
+  return static_cast<std::uint16_t>(std::lround(clamped * 65535.0));
+}
+
+float srgbToLinear(float value) {
+  double magnitude = std::abs(static_cast<double>(value));
+  double linear =
+      magnitude <= 0.04045 ? magnitude / 12.92 : std::pow((magnitude + 0.055) / 1.055, 2.4);
+  constexpr double kLargest = std::numeric_limits<float>::max();
+  return static_cast<float>(std::copysign(std::min(linear, kLargest), value));
+}
+
+std::optional<std::string> imageRefusal(const std::filesystem::path& path,
+                                        const ImageOptions& options) {
+  std::vector<ImageFormat> ppmOnly = {ppmFormat()};
+  // .ppm needs no module, unless to list the formats that take --alpha.
+  if (isPpm(path) && !imageOptionsRefusal(ppmOnly, ppmOnly.front(), options)) return std::nullopt;
+  Writable w = writableFormats();
+  const ImageFormat* format = isPpm(path) ? &w.formats.front() : findImageFormat(w.formats, path);
+  if (!format) {
+    return "cannot write images named '" + path.string() + "': " +
+           (w.oiio ? "use " + imageExtensionsOf(w.formats)
+                   : w.moduleError + "; .ppm needs no module");
+  }
+  if (std::optional<std::string> refusal = imageOptionsRefusal(w.formats, *format, options)) {
+    return "cannot write '" + path.string() + "' with " +
+           (options.alpha && !format->alpha ? "--alpha"
+                                            : "--bits " + std::to_string(options.bits)) +
+           ": " + *refusal;
+  }
   return std::nullopt;
 }
 
@@ -117,56 +272,77 @@ bool canWriteImage(const std::filesystem::path& path) {
   return !imageRefusal(path);
 }
 
-std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path) {
+void fitRenderToImage(const std::filesystem::path& path, const ImageOptions& options,
+                      render::RenderSettings& settings) {
+  settings.coverage = options.alpha;
+  std::optional<ImageFormat> format;
+  if (isPpm(path)) {
+    format = ppmFormat();
+  } else if (options.bits == 16) {
+    Writable w = writableFormats();
+    if (const ImageFormat* found = findImageFormat(w.formats, path)) format = *found;
+  }
+  if (format && !format->linear && storedBits(*format, options) == 16) {
+    settings.levels = 65535.0;
+    settings.pruneTolerance = 0.5 / settings.levels;
+  }
+}
+
+std::string imageFormatHelp() {
+  Writable w = writableFormats();
+  std::string help = "Image formats (by the extension of -o or OUTPUT_FILE):\n" +
+                     imageFormatTable(w.formats) +
+                     "  The first of the bits a channel is the default (16 in OpenEXR is half);\n"
+                     "  sRGB: the display values, tagged sRGB where the format can say so;\n"
+                     "  linear: their sRGB decoding.\n";
+  if (!w.oiio) help += "  (no other: " + w.moduleError + ")\n";
+  return help;
+}
+
+std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path,
+                          const ImageOptions& options) {
   if (!isPpm(path)) return 0;
-  std::string header = "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
-  return header.size() +
-         std::uint64_t{3} * static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  int bits = storedBits(ppmFormat(), options);
+  return ppmHeader(width, height, bits).size() + std::uint64_t{3} * (bits == 16 ? 2 : 1) *
+                                                     static_cast<std::uint64_t>(width) *
+                                                     static_cast<std::uint64_t>(height);
+}
+
+std::string ppmImageBytes(const render::Image& image, const ImageOptions& options) {
+  return ppmBytes(image, storedBits(ppmFormat(), options));
 }
 
 bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
-                    std::string& error, bool replace) {
-  if (!hasImageExtension(path)) {
-    error = "no image format for the extension '" + path.extension().string() + "'";
+                    std::string& error, const ImageOptions& options, bool replace) {
+  if (options.alpha &&
+      image.coverage.size() != static_cast<std::size_t>(image.width) * image.height) {
+    error = "the render has no coverage for --alpha";
     return false;
   }
   bool ppm = isPpm(path);
-  std::optional<OiioModule> oiio;
-  int format = 0;
-  if (!ppm) {
-    oiio = loadOiio(error);
-    if (!oiio) return false;
-    format = oiio->format(path.c_str());
-    if (format < 0) {
-      error = "no image format for the extension '" + path.extension().string() + "'";
-      return false;
-    }
+  Writable w;
+  if (!ppm) w = writableFormats();
+  const ImageFormat* format = ppm ? nullptr : findImageFormat(w.formats, path);
+  if (!ppm && !format) {
+    error = w.oiio ? "no image format for the extension '" + path.extension().string() + "'"
+                   : w.moduleError;
+    return false;
   }
-  bool floating = format == 1;
+  ImageFormat ownPpm = ppmFormat();
+  if (ppm) format = &ownPpm;
+  if (std::optional<std::string> refusal = imageOptionsRefusal(w.formats, *format, options)) {
+    error = *refusal;
+    return false;
+  }
 
   // The image goes to a temporary beside the target (file_io.h), which keeps
   // the target's extension so that OpenImageIO picks the same writer.
   StagedFile file;
   if (!file.open(path, true, error)) return false;
   if (ppm) {
-    if (!file.write(ppmImageBytes(image), error)) return false;
-  } else {
-    bool ok = false;
-    char message[512] = "";
-    std::string temporary = file.temporaryPath().string();
-    if (floating) {
-      ok = oiio->write(temporary.c_str(), image.width, image.height, 1, image.rgb.data(), message,
-                       sizeof message);
-    } else {
-      std::vector<unsigned char> bytes(image.rgb.size());
-      std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), quantizeChannel);
-      ok = oiio->write(temporary.c_str(), image.width, image.height, 0, bytes.data(), message,
-                       sizeof message);
-    }
-    if (!ok) {
-      error = message;
-      return false;
-    }
+    if (!file.write(ppmBytes(image, storedBits(*format, options)), error)) return false;
+  } else if (!writeThroughOiio(*w.oiio, image, *format, options, file.temporaryPath(), error)) {
+    return false;
   }
   return file.finish(error) && file.commit(error, replace);
 }

@@ -1,46 +1,80 @@
-// Writing a rendered image in the format its file name asks for.
+// Writing a rendered image in the format its file name asks for, so that
+// every format shows the same picture in a colour-managed viewer
+// (docs/RENDERING.md, "Image files").
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "renderer/render.h"
+#include "tools/sfrender/image_formats.h"
 
 namespace tools {
 
-// Whether files with this name's extension can be written: one of
-// tools/common/output_file_format.h's, ".ppm" here and every other through
-// OpenImageIO (whose module must load and take it).
+// The formats sfrender writes: .ppm, and those OpenImageIO's module
+// offers (oiio_module.h), or .ppm alone when the module cannot be loaded.
+std::vector<ImageFormat> writableImageFormats();
+
+// Whether files with this name's extension can be written: ".ppm" here and
+// every other through OpenImageIO (whose module must load and take it).
 bool canWriteImage(const std::filesystem::path& path);
 
-// Why canWriteImage is false for `path`, as the end of a sentence: which
-// extensions to use instead, or that OpenImageIO's module could not be
-// loaded, from where and why (.ppm needs none); nothing when it is true.
-std::optional<std::string> imageRefusal(const std::filesystem::path& path);
+// Why an image cannot be written to `path` as `options` ask, as a sentence
+// for "sfrender: error: ": an extension no writer takes (with the list of
+// those that do), OpenImageIO's module that could not be loaded (from where
+// and why; .ppm needs none), or a --bits or --alpha the format cannot hold;
+// nothing when it can.
+std::optional<std::string> imageRefusal(const std::filesystem::path& path,
+                                        const ImageOptions& options = {});
+
+// The render that the image at `path` needs: the coverage for --alpha, and
+// for a 16-bit integer image, retracing to its levels (and a tolerance of
+// half of one), so that each level is what full tracing gives, as for 8
+// bits (docs/RENDERING.md, "Cost").
+void fitRenderToImage(const std::filesystem::path& path, const ImageOptions& options,
+                      render::RenderSettings& settings);
+
+// The formats sfrender writes, for --help: from OpenImageIO's module, or
+// .ppm alone with why the module could not be loaded.
+std::string imageFormatHelp();
 
 // The bytes of a width x height image written to `path` when it is a ".ppm"
-// (the header and three bytes a pixel); 0 for another format, whose size
-// is known only once written.
-std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path);
+// (the header and three channels a pixel, one or two bytes each); 0 for
+// another format, whose size is known only once written.
+std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path,
+                          const ImageOptions& options = {});
 
-// Writes the image, as binary PPM (P6) by hand for ".ppm" and through
-// OpenImageIO for every other extension: floating-point formats (EXR) get the
-// linear values as they are; 8-bit formats (PPM, PNG, ...) get each channel
-// clamped to [0, 1] and rounded to the nearest of 256 levels, with no gamma.
-// The file is written beside the target under a temporary name and renamed,
-// so it appears whole or not at all.
+// Writes the image: integer formats get the display values (clamped to
+// [0, 1], rounded to the nearest level, no gamma) tagged sRGB; EXR and HDR
+// the linear values (srgbToLinear); with options.alpha a fourth channel
+// from the image's coverage, straight in integer formats, premultiplied in
+// floating-point ones. PPM is written by hand, every other format through
+// OpenImageIO. The file is written beside the target under a temporary
+// name and renamed, so it appears whole or not at all.
 // With `replace` false (--no-clobber), an existing file is kept and the
 // write fails.
 bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
-                    std::string& error, bool replace = true);
+                    std::string& error, const ImageOptions& options = {}, bool replace = true);
 
-// The bytes of the image as binary PPM (P6, 8-bit): what a ".ppm" file
-// holds, and what `sfrender -o -` writes to standard output.
-std::string ppmImageBytes(const render::Image& image);
+// The bytes of the image as binary PPM (P6, 8 or 16 bits as options.bits
+// says): what a ".ppm" file holds, and what `sfrender -o -` writes to
+// standard output.
+std::string ppmImageBytes(const render::Image& image, const ImageOptions& options = {});
 
-// The 8-bit level of a linear channel value: round(clamp(v, 0, 1) * 255).
+// The 8-bit level of a display value: round(clamp(v, 0, 1) * 255).
 unsigned char quantizeChannel(float value);
+
+// The 16-bit level of a display value: round(clamp(v, 0, 1) * 65535).
+std::uint16_t quantizeChannel16(float value);
+
+// The linear value of a display value: the sRGB decoding (IEC 61966-2-1),
+// extended past [0, 1] as in scRGB (IEC 61966-2-2) and extended sRGB: the
+// power segment goes on above 1, and a negative value decodes to minus the
+// decoding of its magnitude. Within the float range: the largest float
+// stands for anything larger.
+float srgbToLinear(float value);
 
 }  // namespace tools

@@ -2,55 +2,213 @@
 // image_file.cpp loads with dlopen only when an image is written in a format
 // other than PPM: linking OpenImageIO into the program made every run, even
 // `sfrender --version`, relocate its ~260 shared libraries (0.26 s of CPU).
-// A plain C interface, so that nothing of OpenImageIO crosses it.
-#include <OpenImageIO/imageio.h>
+// A plain C interface (oiio_module.h), so that nothing of OpenImageIO
+// crosses it. Little CMS, which makes the sRGB ICC profile, is one of those
+// libraries already.
+#include "tools/sfrender/oiio_module.h"
 
+#include <OpenImageIO/imageio.h>
+#include <lcms2.h>
+
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstring>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace {
 
-void copyError(const std::string& message, char* error, std::size_t errorSize) {
-  if (errorSize == 0) return;
-  std::size_t n = std::min(message.size(), errorSize - 1);
-  std::memcpy(error, message.data(), n);
-  error[n] = '\0';
+void copyText(const std::string& text, char* out, std::size_t size) {
+  if (size == 0) return;
+  std::size_t n = std::min(text.size(), size - 1);
+  std::memcpy(out, text.data(), n);
+  out[n] = '\0';
+}
+
+// Writers OpenImageIO has that cannot hold a rendered RGB image as it is:
+// GIF keeps 256 colours in all, ICO 256 pixels a side, a ZFile one channel
+// of depth. (Writers that make no file, "null" and "term", say so
+// themselves: supports("procedural").)
+constexpr std::array<std::string_view, 3> kUnfitWriters = {"gif", "ico", "zfile"};
+
+bool fitForRenders(const std::string& format) {
+  if (std::find(kUnfitWriters.begin(), kUnfitWriters.end(), format) != kUnfitWriters.end()) {
+    return false;
+  }
+  std::unique_ptr<OIIO::ImageOutput> writer = OIIO::ImageOutput::create(format);
+  return writer && !writer->supports("procedural");
+}
+
+// The line of sfrender_oiio_formats for one format of OpenImageIO's
+// extension_list ("tiff:tif,tiff,..."), or nothing when it writes no file
+// sfrender can use. An extension counts only if OpenImageIO finds this
+// format's writer by it: some of a format's extensions are for reading only
+// (.dib, .j2c, .pfm in OpenImageIO 2.4).
+std::string formatLine(const std::string& entry, const std::vector<std::string>& writers) {
+  std::size_t colon = entry.find(':');
+  if (colon == std::string::npos) return {};
+  std::string format = entry.substr(0, colon);
+  if (std::find(writers.begin(), writers.end(), format) == writers.end()) return {};
+  if (!fitForRenders(format)) return {};
+  std::string extensions;
+  bool alpha = false;
+  std::string_view rest = std::string_view(entry).substr(colon + 1);
+  while (!rest.empty()) {
+    std::size_t comma = rest.find(',');
+    std::string extension(rest.substr(0, comma));
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+    std::unique_ptr<OIIO::ImageOutput> writer = OIIO::ImageOutput::create("x." + extension);
+    if (!writer || writer->format_name() != format) continue;
+    alpha = writer->supports("alpha");
+    extensions += " " + extension;
+  }
+  if (extensions.empty()) return {};
+  return format + (alpha ? " 1" : " 0") + extensions + "\n";
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(separator, start);
+    if (end == std::string::npos) end = text.size();
+    if (end > start) parts.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return parts;
+}
+
+// An sRGB ICC profile from Little CMS: version 2.1, which every colour-
+// managed reader takes (Firefox, by default, ignores version 4), named as
+// the standard's, and dated 2000-01-01 rather than now, so that one render
+// makes the same bytes on any day. Empty if it cannot be made.
+std::vector<unsigned char> srgbProfile() {
+  std::vector<unsigned char> bytes;
+  cmsHPROFILE profile = cmsCreate_sRGBProfile();
+  if (!profile) return bytes;
+  cmsSetProfileVersion(profile, 2.1);
+  cmsSetHeaderFlags(profile, cmsEmbeddedProfileTrue);
+  if (cmsMLU* name = cmsMLUalloc(nullptr, 1)) {
+    cmsMLUsetASCII(name, "en", "US", "sRGB IEC61966-2.1");
+    cmsWriteTag(profile, cmsSigProfileDescriptionTag, name);
+    cmsMLUfree(name);
+  }
+  cmsUInt32Number size = 0;
+  if (cmsSaveProfileToMem(profile, nullptr, &size) && size >= 128) {
+    bytes.resize(size);
+    if (!cmsSaveProfileToMem(profile, bytes.data(), &size)) bytes.clear();
+  }
+  cmsCloseProfile(profile);
+  // The header's dateTimeNumber (ICC.1, 7.2.8): six big-endian 16-bit
+  // numbers at byte 24. A version 2 profile has no ID (an MD5 of the
+  // bytes) to keep in step.
+  constexpr std::array<unsigned char, 12> kDate = {0x07, 0xd0, 0, 1, 0, 1, 0, 0, 0, 0, 0, 0};
+  if (!bytes.empty()) std::copy(kDate.begin(), kDate.end(), bytes.begin() + 24);
+  return bytes;
+}
+
+OIIO::TypeDesc storedType(int pixelType) {
+  switch (pixelType) {
+    case kSfrenderUint16:
+      return OIIO::TypeDesc::UINT16;
+    case kSfrenderHalf:
+      return OIIO::TypeDesc::HALF;
+    case kSfrenderFloat:
+      return OIIO::TypeDesc::FLOAT;
+    default:
+      return OIIO::TypeDesc::UINT8;
+  }
+}
+
+// What the file says of its numbers (docs/RENDERING.md, "Colour"): sRGB
+// display values are tagged sRGB, which a PNG writer records as the sRGB
+// chunk (with gAMA and cHRM for readers that know no sRGB) and a TIFF, JPEG
+// or other writer as Exif's ColorSpace; those that can also get the ICC
+// profile (PNG does not: its standard wants sRGB or iCCP, not both). Linear
+// values are tagged linear, with their primaries and white (EXR's
+// chromaticities).
+bool describeColour(const SfrenderImageData& image, const std::string& format,
+                    OIIO::ImageSpec& spec, std::string& error) {
+  if (image.linear) {
+    spec.attribute("oiio:ColorSpace", "Linear");
+    // Rec. 709 / sRGB primaries and the D65 white, as x, y pairs.
+    static constexpr std::array<float, 8> kRec709 = {0.64f, 0.33f, 0.30f,   0.60f,
+                                                     0.15f, 0.06f, 0.3127f, 0.3290f};
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709.data());
+    return true;
+  }
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  if (format == "png") return true;
+  std::vector<unsigned char> profile = srgbProfile();
+  if (profile.empty()) {
+    error = "Little CMS could not make the sRGB ICC profile";
+    return false;
+  }
+  spec.attribute("ICCProfile", OIIO::TypeDesc(OIIO::TypeDesc::UINT8, profile.size()),
+                 profile.data());
+  return true;
 }
 
 }  // namespace
 
 extern "C" {
 
-// 1 for a floating-point format (EXR, HDR), 0 for an 8-bit one, -1 when no
-// writer takes the name's extension.
-__attribute__((visibility("default"))) int sfrender_oiio_format(const char* path) {
-  std::unique_ptr<OIIO::ImageOutput> probe = OIIO::ImageOutput::create(path);
-  if (!probe) return -1;
-  std::string name = probe->format_name();
-  return name == "openexr" || name == "hdr" ? 1 : 0;
+__attribute__((visibility("default"))) std::size_t sfrender_oiio_formats(char* list,
+                                                                         std::size_t size) {
+  std::string extensions, writers;
+  OIIO::getattribute("extension_list", extensions);
+  OIIO::getattribute("output_format_list", writers);
+  std::vector<std::string> writerList = split(writers, ',');
+  std::string lines;
+  for (const std::string& entry : split(extensions, ';')) lines += formatLine(entry, writerList);
+  copyText(lines, list, size);
+  return lines.size();
 }
 
-// Writes width x height RGB pixels, floats or bytes as `floating` says, to
-// `path`; returns 1 on success, or 0 with a message in `error`. `path` is
-// always image_file.cpp's temporary, which keeps the target's extension for
-// OpenImageIO to choose its writer by, and is renamed over the target only
-// once this returns: OpenImageIO writes the file in place, a part at a time.
-__attribute__((visibility("default"))) int sfrender_oiio_write(const char* path, int width,
-                                                               int height, int floating,
-                                                               const void* pixels, char* error,
-                                                               std::size_t errorSize) {
+// `path` is always image_file.cpp's temporary, which keeps the target's
+// extension for OpenImageIO to choose its writer by, and is renamed over the
+// target only once this returns: OpenImageIO writes the file in place, a
+// part at a time.
+__attribute__((visibility("default"))) int sfrender_oiio_write(const char* path,
+                                                               const SfrenderImageData* image,
+                                                               char* error, std::size_t errorSize) {
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-  OIIO::TypeDesc type = floating ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(width, height, 3, type);
+  if (!out) {
+    std::string message = OIIO::geterror();
+    copyText(message.empty() ? "no writer takes the name" : message, error, errorSize);
+    return 0;
+  }
+  // OpenImageIO 2.4's JPEG 2000 writer asks OpenJPEG for its default 6
+  // resolution levels, which need 32 pixels a side: below that it writes a
+  // file no reader opens, and reports nothing.
+  if (out->format_name() == std::string_view("jpeg2000") &&
+      (image->width < 32 || image->height < 32)) {
+    copyText("JPEG 2000 images (OpenImageIO's writer) need 32 pixels a side at least", error,
+             errorSize);
+    return 0;
+  }
+  OIIO::TypeDesc stored = storedType(image->pixelType);
+  // Halves are given as floats, which OpenImageIO rounds to the nearest half.
+  OIIO::TypeDesc given = stored == OIIO::TypeDesc::HALF ? OIIO::TypeDesc::FLOAT : stored;
+  OIIO::ImageSpec spec(image->width, image->height, image->channels, stored);
+  if (image->channels == 4) spec.alpha_channel = 3;
+  // Otherwise OpenImageIO divides colour by alpha on the way to a format
+  // that stores it straight (PNG), and marks a TIFF's alpha associated.
+  if (image->channels == 4 && image->straightAlpha) spec.attribute("oiio:UnassociatedAlpha", 1);
   spec.attribute("pnm:binary", 1);
-  bool ok = out && out->open(path, spec);
-  if (ok) ok = out->write_image(type, pixels);
-  if (out) ok = out->close() && ok;
+  std::string message;
+  bool ok = describeColour(*image, out->format_name(), spec, message);
+  if (ok) ok = out->open(path, spec);
+  if (ok) ok = out->write_image(given, image->pixels);
+  // geterror() empties the message, so it is taken before close() and after.
+  if (!ok && message.empty()) message = out->geterror();
+  ok = out->close() && ok;
+  if (!ok && message.empty()) message = out->geterror();
   if (!ok) {
-    std::string message = out ? out->geterror() : OIIO::geterror();
-    copyError(message.empty() ? "the image could not be written" : message, error, errorSize);
+    copyText(message.empty() ? "the image could not be written" : message, error, errorSize);
     return 0;
   }
   return 1;

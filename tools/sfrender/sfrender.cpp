@@ -71,7 +71,7 @@ std::string statisticsText(const render::RenderStatistics& s,
        << " million rays/s\n";
   // What adaptive depth control (docs/RENDERING.md, "Cost") left out.
   line << "sfrender: left out " << withThousands(s.rays.pruned)
-       << " branches (past the depth, or within their share of half an 8-bit level), traced "
+       << " branches (past the depth, or within their share of half a level of the image), traced "
        << withThousands(s.retracedPixels) << " pixels again\n";
   return line.str();
 }
@@ -193,6 +193,12 @@ void Renderer::chooseTarget() {
 // there and writable, the target no folder or device, room for a PPM).
 std::optional<int> Renderer::targetRefusal() {
   if (job_.toStdout) {
+    // A PPM: what --bits and --alpha ask of it holds as for a file.
+    if (std::optional<std::string> refusal =
+            imageOptionsRefusal({ppmFormat()}, ppmFormat(), o_.image)) {
+      output_.error("cannot write standard output as asked: " + *refusal);
+      return toInt(ExitCode::Usage);
+    }
     if (!output_.streams().outIsTerminal) return std::nullopt;
     output_.error("standard output is a terminal, and the image is binary",
                   "redirect it to a file or a pipe (-o - > image.ppm), or name the image");
@@ -214,8 +220,8 @@ std::optional<int> Renderer::targetRefusal() {
         .print(diagnostics);
     return toInt(ExitCode::InvalidInput);
   }
-  if (std::optional<std::string> refusal = imageRefusal(target)) {
-    output_.error("cannot write images named '" + printableText(target.string()) + "'", *refusal);
+  if (std::optional<std::string> refusal = imageRefusal(target, o_.image)) {
+    output_.error(printableText(*refusal));
     return toInt(ExitCode::Usage);
   }
   if (o_.noClobber && pathExists(target)) {
@@ -223,7 +229,8 @@ std::optional<int> Renderer::targetRefusal() {
     return toInt(ExitCode::IoError);
   }
   std::string error;
-  if (!checkCanWrite(target, true, ppmFileSize(settings_.width, settings_.height, target), error)) {
+  if (!checkCanWrite(target, true, ppmFileSize(settings_.width, settings_.height, target, o_.image),
+                     error)) {
     fileError(target, "cannot write the image: " + error);
     return toInt(ExitCode::IoError);
   }
@@ -233,8 +240,9 @@ std::optional<int> Renderer::targetRefusal() {
 // Whether the render fits in memory and its threads start: refused before
 // it starts rather than killed, or aborted, half-way.
 std::optional<int> Renderer::resourceRefusal() {
-  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
-      job_.scene.objects.size(), job_.scene.lights.size(), settings_.width, settings_.height);
+  render::RenderMemoryEstimate estimate =
+      render::estimateRenderMemory(job_.scene.objects.size(), job_.scene.lights.size(),
+                                   settings_.width, settings_.height, settings_.coverage);
   if (std::optional<std::string> refusal =
           render::renderMemoryRefusal(estimate, memory_ ? memory_() : std::nullopt)) {
     output_.error(*refusal);
@@ -260,7 +268,7 @@ int Renderer::writeImage(const render::Image& image, const render::RenderStatist
   std::string written;
   if (job_.toStdout) {
     stage_.set("writing to standard output");
-    output_.streams().out << ppmImageBytes(image);
+    output_.streams().out << ppmImageBytes(image, o_.image);
     if (!flushStandardOutput("sfrender", output_.streams().out, output_.err())) {
       return toInt(ExitCode::IoError);
     }
@@ -268,7 +276,7 @@ int Renderer::writeImage(const render::Image& image, const render::RenderStatist
   } else {
     stage_.set("writing " + printableText(job_.target.string()));
     std::string writeError;
-    if (!writeImageFile(image, job_.target, writeError, !o_.noClobber)) {
+    if (!writeImageFile(image, job_.target, writeError, o_.image, !o_.noClobber)) {
       fileError(job_.target, "cannot write the image: " + writeError);
       return toInt(ExitCode::IoError);
     }
@@ -315,6 +323,8 @@ int Renderer::run() {
   }
   chooseTarget();
   if (std::optional<int> refused = targetRefusal()) return *refused;
+  fitRenderToImage(job_.toStdout ? fs::path("standard output.ppm") : job_.target, o_.image,
+                   settings_);
   // Step 2: render, with a progress bar on a terminal, if it fits in memory
   // and its threads start.
   if (std::optional<int> refused = resourceRefusal()) return *refused;

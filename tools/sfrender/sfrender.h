@@ -13,6 +13,7 @@
 #include "scenefile/read.h"
 #include "tools/common/command_line.h"
 #include "tools/common/tool_streams.h"
+#include "tools/sfrender/image_formats.h"
 
 namespace tools {
 
@@ -36,6 +37,7 @@ struct SfrenderOptions {
   std::optional<int> height;
   std::optional<double> fov;
   render::RenderSettings settings;
+  ImageOptions image;  // --bits, --alpha
   bool stats = false;
   bool noClobber = false;
   RenderLimits limits;

@@ -1,6 +1,7 @@
 // sfrender's options: what --help, the man page and the completion show.
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
+#include "tools/sfrender/image_file.h"
 #include "tools/sfrender/sfrender.h"
 
 namespace tools {
@@ -61,11 +62,22 @@ std::unique_ptr<CLI::App> makeSfrenderCommandLine(SfrenderOptions& o) {
                   "the scene to render, its format recognised from its content; - reads standard "
                   "input");
   app->add_option("-o,--output", o.output,
-                  "the image to write; its extension picks the format (.ppm, .png, .exr, .tif, "
-                  "...); - writes PPM to standard output (default: the scene's name with .ppm, "
-                  "or an instruction file's OUTPUT_FILE)")
+                  "the image to write; its extension picks the format (listed at the end); - "
+                  "writes PPM to standard output (default: the scene's name with .ppm, or an "
+                  "instruction file's OUTPUT_FILE)")
       ->option_text("FILE");
   addImageOptions(*app, o);
+  app->add_option("--bits", o.image.bits,
+                  "bits a channel: 8 or 16 for integer images (PNG, TIFF, PPM), 16 (half) or 32 "
+                  "(float) for EXR (default: 8, EXR 32)")
+      ->default_str("")  // the description says it: it depends on the format
+      ->check(oneOf({"8", "16", "32"}));
+  app->add_flag("--alpha", o.image.alpha,
+                "a fourth channel: how much of each pixel objects cover, the background "
+                "transparent");
+  // The formats OpenImageIO writes, found when --help is printed; CLI11
+  // puts them before the exit statuses.
+  app->footer([] { return imageFormatHelp(); });
   app->add_flag("--stats", o.stats,
                 "print the time, the rays and the rays per second (also when quiet)");
   app->add_flag("--no-clobber", o.noClobber, "never write over an existing file");

@@ -1,0 +1,491 @@
+// What sfrender's image files hold (docs/RENDERING.md, "Image files"): the
+// levels and linear values, the colour tags of each format, --bits and
+// --alpha, read back with OpenImageIO and Little CMS.
+#include "tools/sfrender/image_file.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <lcms2.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tools/common/exit_code.h"
+#include "tools/common/file_io.h"
+#include "tools/tool_test_support.h"
+
+namespace tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A width x height image as renderImage makes it with coverage: a smooth
+// gradient with values below 0 and above 1 in the first row, coverage
+// stepping through 0, 1/4, ... 1, and the colour premultiplied by it (0
+// where nothing covers the pixel).
+render::Image testImage(int width = 24, int height = 10) {
+  render::Image image;
+  image.width = width;
+  image.height = height;
+  for (int j = 0; j < height; ++j) {
+    for (int i = 0; i < width; ++i) {
+      float a = static_cast<float>((i + j) % 5) / 4.0f;
+      float u = static_cast<float>(i) / (width - 1);
+      float v = static_cast<float>(j) / (height - 1);
+      glm::vec3 straight =
+          j == 0 ? glm::vec3(1.3f * u - 0.15f, 2.5f * u, -u) : glm::vec3(u, v, 1.0f - 0.5f * u * v);
+      image.rgb.insert(image.rgb.end(), {a * straight.x, a * straight.y, a * straight.z});
+      image.coverage.push_back(a);
+    }
+  }
+  return image;
+}
+
+struct ReadBack {
+  OIIO::ImageSpec spec;
+  std::vector<float> pixels;  // as stored, scaled to [0, 1] for integers
+};
+
+// The file's pixels as it stores them: alpha left straight where it is.
+ReadBack readBack(const fs::path& file) {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string(), &config);
+  ReadBack r;
+  if (!in) {
+    ADD_FAILURE() << file << ": " << OIIO::geterror();
+    return r;
+  }
+  r.spec = in->spec();
+  r.pixels.resize(r.spec.image_pixels() * r.spec.nchannels);
+  EXPECT_TRUE(in->read_image(0, 0, 0, r.spec.nchannels, OIIO::TypeDesc::FLOAT, r.pixels.data()))
+      << in->geterror();
+  return r;
+}
+
+class ImageFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = freshTestFolder("sfimage"); }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const ImageOptions& options,
+                 const render::Image& image = testImage()) {
+    fs::path file = dir_ / name;
+    std::string error;
+    EXPECT_TRUE(writeImageFile(image, file, error, options)) << name << ": " << error;
+    return file;
+  }
+  int sfrender(const std::vector<std::string>& args) {
+    std::vector<std::string> all = {"sfrender"};
+    all.insert(all.end(), args.begin(), args.end());
+    return runTool(tools::sfrender, all, out_, err_);
+  }
+
+  fs::path dir_;
+  std::ostringstream out_, err_;
+};
+
+TEST(ImageFile, SrgbDecodingIsTheStandardsExtendedPastOne) {
+  // The sRGB encoding (IEC 61966-2-1), which decoding must undo.
+  auto encode = [](double l) {
+    return l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
+  };
+  for (int i = 0; i <= 1000; ++i) {
+    float v = static_cast<float>(i) / 1000.0f;
+    EXPECT_NEAR(encode(srgbToLinear(v)), v, 2e-7) << v;
+  }
+  EXPECT_EQ(srgbToLinear(0.0f), 0.0f);
+  EXPECT_EQ(srgbToLinear(1.0f), 1.0f);
+  EXPECT_FLOAT_EQ(srgbToLinear(0.04045f), 0.04045f / 12.92f);
+  // Above 1 the power segment goes on; below 0 the curve is mirrored.
+  EXPECT_FLOAT_EQ(srgbToLinear(2.0f), static_cast<float>(std::pow(2.055 / 1.055, 2.4)));
+  EXPECT_EQ(srgbToLinear(-0.5f), -srgbToLinear(0.5f));
+  EXPECT_LT(srgbToLinear(1.0f), srgbToLinear(1.0001f));
+  // Never infinite.
+  constexpr float kLargest = std::numeric_limits<float>::max();
+  EXPECT_EQ(srgbToLinear(kLargest), kLargest);
+  EXPECT_EQ(srgbToLinear(-std::numeric_limits<float>::infinity()), -kLargest);
+}
+
+TEST(ImageFile, Quantizes16BitsToTheNearestLevel) {
+  EXPECT_EQ(quantizeChannel16(0.0f), 0);
+  EXPECT_EQ(quantizeChannel16(-2.0f), 0);
+  EXPECT_EQ(quantizeChannel16(1.0f), 65535);
+  EXPECT_EQ(quantizeChannel16(3.0f), 65535);
+  EXPECT_EQ(quantizeChannel16(0.5f), 32768);   // 32767.5 rounds up
+  EXPECT_EQ(quantizeChannel16(0.25f), 16384);  // 16383.75
+}
+
+// The expected stored value of channel c of pixel p: a display level, or a
+// linear value; straight colour with alpha in integer files, premultiplied
+// in floating-point ones.
+float expected(const render::Image& image, std::size_t p, int c, bool alpha, int bits,
+               bool linear) {
+  float a = alpha ? image.coverage[p] : 1.0f;
+  if (c == 3) return a;
+  float v = image.rgb[3 * p + c];
+  float straight = a > 0.0f ? v / a : 0.0f;
+  if (linear) return a * srgbToLinear(alpha ? straight : v);
+  return bits == 16 ? quantizeChannel16(straight) / 65535.0f : quantizeChannel(straight) / 255.0f;
+}
+
+TEST_F(ImageFileTest, IntegerImagesHoldTheLevelsOfTheDisplayValues) {
+  render::Image image = testImage();
+  for (const char* extension : {".png", ".tif", ".ppm"}) {
+    for (int bits : {8, 16}) {
+      for (bool alpha : {false, true}) {
+        // (OpenImageIO's PNM reader reads 16-bit samples one level off:
+        // SixteenBitPpmIsNetpbms checks those bytes.)
+        if (std::string(extension) == ".ppm" && (alpha || bits == 16)) continue;
+        std::string name = "i" + std::to_string(bits) + (alpha ? "a" : "") + extension;
+        ReadBack r = readBack(write(name, {bits, alpha}, image));
+        ASSERT_EQ(r.spec.nchannels, alpha ? 4 : 3) << name;
+        EXPECT_EQ(r.spec.format, bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8)
+            << name;
+        for (std::size_t p = 0; p < image.coverage.size(); ++p) {
+          for (int c = 0; c < r.spec.nchannels; ++c) {
+            float want = expected(image, p, c, alpha, bits, false);
+            if (c == 3)
+              want = (bits == 16 ? quantizeChannel16(want) / 65535.0f
+                                 : quantizeChannel(want) / 255.0f);
+            // Within a small part of a 16-bit level of the level expected.
+            ASSERT_NEAR(r.pixels[r.spec.nchannels * p + c], want, 1e-6)
+                << name << " " << p << "." << c;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_F(ImageFileTest, ExrHoldsTheLinearValuesWithTheirChromaticities) {
+  render::Image image = testImage();
+  for (int bits : {32, 16}) {
+    for (bool alpha : {false, true}) {
+      std::string name = "e" + std::to_string(bits) + (alpha ? "a" : "") + ".exr";
+      ReadBack r = readBack(write(name, {bits, alpha}, image));
+      ASSERT_EQ(r.spec.nchannels, alpha ? 4 : 3) << name;
+      EXPECT_EQ(r.spec.format, bits == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+      if (alpha) {
+        EXPECT_EQ(r.spec.channelnames.back(), "A");
+      }
+      EXPECT_EQ(r.spec.get_string_attribute("oiio:ColorSpace"), "Linear");
+      const OIIO::ParamValue* chromaticities = r.spec.find_attribute("chromaticities");
+      ASSERT_NE(chromaticities, nullptr) << name;
+      ASSERT_EQ(chromaticities->type(), OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8));
+      const float* xy = static_cast<const float*>(chromaticities->data());
+      // Rec. 709 (sRGB) red, green, blue and the D65 white.
+      const std::array<float, 8> rec709 = {0.64f, 0.33f, 0.30f,   0.60f,
+                                           0.15f, 0.06f, 0.3127f, 0.3290f};
+      for (int k = 0; k < 8; ++k) EXPECT_EQ(xy[k], rec709[k]) << k;
+      for (std::size_t p = 0; p < image.coverage.size(); ++p) {
+        for (int c = 0; c < r.spec.nchannels; ++c) {
+          float want = expected(image, p, c, alpha, bits, true);
+          float got = r.pixels[r.spec.nchannels * p + c];
+          // A half keeps 11 significant bits.
+          float slack = bits == 16 ? std::abs(want) * 0x1p-11f + 0x1p-24f : 0.0f;
+          ASSERT_NEAR(got, want, slack) << name << " " << p << "." << c;
+        }
+      }
+    }
+  }
+}
+
+// The chunk types of a PNG file, in order, with the IHDR's bit depth and
+// colour type.
+struct PngChunks {
+  std::vector<std::string> types;
+  int bitDepth = 0;
+  int colourType = 0;
+  std::uint32_t gamma = 0;  // gAMA's, times 100000
+};
+
+PngChunks pngChunks(const std::string& bytes) {
+  PngChunks chunks;
+  auto u32 = [&](std::size_t at) {
+    return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at]) << 24 |
+                                      static_cast<unsigned char>(bytes[at + 1]) << 16 |
+                                      static_cast<unsigned char>(bytes[at + 2]) << 8 |
+                                      static_cast<unsigned char>(bytes[at + 3]));
+  };
+  EXPECT_EQ(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
+  for (std::size_t at = 8; at + 8 <= bytes.size();) {
+    std::uint32_t length = u32(at);
+    std::string type = bytes.substr(at + 4, 4);
+    chunks.types.push_back(type);
+    if (type == "IHDR") {
+      chunks.bitDepth = static_cast<unsigned char>(bytes[at + 16]);
+      chunks.colourType = static_cast<unsigned char>(bytes[at + 17]);
+    }
+    if (type == "gAMA") chunks.gamma = u32(at + 8);
+    at += 12 + std::size_t{length};
+  }
+  return chunks;
+}
+
+TEST_F(ImageFileTest, PngIsTaggedSrgbByItsChunk) {
+  for (int bits : {8, 16}) {
+    for (bool alpha : {false, true}) {
+      std::string error;
+      std::string name = "p" + std::to_string(bits) + (alpha ? "a" : "") + ".png";
+      std::optional<std::string> bytes = readWholeFile(write(name, {bits, alpha}), error);
+      ASSERT_TRUE(bytes) << error;
+      PngChunks chunks = pngChunks(*bytes);
+      auto has = [&](const char* type) {
+        return std::find(chunks.types.begin(), chunks.types.end(), type) != chunks.types.end();
+      };
+      auto before = [&](const char* a, const char* b) {
+        return std::find(chunks.types.begin(), chunks.types.end(), a) <
+               std::find(chunks.types.begin(), chunks.types.end(), b);
+      };
+      EXPECT_EQ(chunks.bitDepth, bits) << name;
+      EXPECT_EQ(chunks.colourType, alpha ? 6 : 2) << name;  // RGB with alpha, RGB
+      // sRGB, with gAMA (1 / 2.2) and cHRM for readers that know no sRGB;
+      // never iCCP beside it (the PNG standard allows one of the two).
+      EXPECT_TRUE(has("sRGB") && has("gAMA") && has("cHRM")) << name;
+      EXPECT_FALSE(has("iCCP")) << name;
+      EXPECT_TRUE(before("sRGB", "IDAT")) << name;
+      EXPECT_EQ(chunks.gamma, 45455u) << name;
+    }
+  }
+}
+
+// The sRGB profile of Little CMS, against which an embedded one is judged.
+std::vector<std::uint8_t> convertedBy(const std::vector<std::uint8_t>& profile,
+                                      const std::vector<std::uint8_t>& rgb) {
+  cmsHPROFILE embedded = cmsOpenProfileFromMem(profile.data(), profile.size());
+  cmsHPROFILE srgb = cmsCreate_sRGBProfile();
+  std::vector<std::uint8_t> out(rgb.size());
+  if (embedded && srgb) {
+    cmsHTRANSFORM transform =
+        cmsCreateTransform(embedded, TYPE_RGB_8, srgb, TYPE_RGB_8, INTENT_RELATIVE_COLORIMETRIC, 0);
+    if (transform) {
+      cmsDoTransform(transform, rgb.data(), out.data(), rgb.size() / 3);
+      cmsDeleteTransform(transform);
+    }
+  }
+  if (embedded) cmsCloseProfile(embedded);
+  if (srgb) cmsCloseProfile(srgb);
+  return out;
+}
+
+TEST_F(ImageFileTest, TiffAndJpegCarryAnSrgbProfile) {
+  for (const char* name : {"t.tif", "t16.tif", "j.jpg"}) {
+    int bits = std::string(name) == "t16.tif" ? 16 : 8;
+    ReadBack r = readBack(write(name, {bits, false}));
+    EXPECT_EQ(r.spec.get_string_attribute("oiio:ColorSpace"), "sRGB") << name;
+    EXPECT_EQ(r.spec.get_int_attribute("Exif:ColorSpace"), 1) << name;  // sRGB
+    const OIIO::ParamValue* icc = r.spec.find_attribute("ICCProfile");
+    ASSERT_NE(icc, nullptr) << name;
+    const auto* begin = static_cast<const std::uint8_t*>(icc->data());
+    std::vector<std::uint8_t> profile(begin, begin + icc->type().size());
+    cmsHPROFILE opened = cmsOpenProfileFromMem(profile.data(), profile.size());
+    ASSERT_NE(opened, nullptr) << name;
+    char description[64] = "";
+    cmsGetProfileInfoASCII(opened, cmsInfoDescription, "en", "US", description, sizeof description);
+    EXPECT_STREQ(description, "sRGB IEC61966-2.1");
+    EXPECT_EQ(cmsGetProfileVersion(opened), 2.1);
+    EXPECT_EQ(cmsGetColorSpace(opened), cmsSigRgbData);
+    cmsCloseProfile(opened);
+    // Converted from it to sRGB, every colour stays what it was.
+    std::vector<std::uint8_t> rgb;
+    for (int v = 0; v < 256; v += 15)
+      rgb.insert(rgb.end(), {std::uint8_t(v), 128, std::uint8_t(255 - v)});
+    std::vector<std::uint8_t> converted = convertedBy(profile, rgb);
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+      EXPECT_NEAR(converted[i], rgb[i], 1) << name << " " << i;
+    }
+  }
+  // Made the same way each time: the profile carries no date of its own.
+  std::string error;
+  EXPECT_EQ(readWholeFile(write("a.jpg", {}), error), readWholeFile(write("b.jpg", {}), error));
+}
+
+TEST_F(ImageFileTest, TiffAlphaIsStraight) {
+  ReadBack r = readBack(write("a.tif", {8, true}));
+  EXPECT_EQ(r.spec.get_int_attribute("tiff:UnassociatedAlpha"), 1);
+  EXPECT_EQ(r.spec.alpha_channel, 3);
+}
+
+TEST_F(ImageFileTest, SixteenBitPpmIsNetpbms) {
+  // (OpenImageIO 2.4 writes no 16-bit PNM that reads back, which is why
+  // .pnm takes 8 bits only; its reader reads sfrender's .ppm, above.)
+  render::Image image = testImage(7, 5);
+  std::string error;
+  std::optional<std::string> bytes = readWholeFile(write("hand.ppm", {16, false}, image), error);
+  ASSERT_TRUE(bytes) << error;
+  const std::string header = "P6\n7 5\n65535\n";
+  EXPECT_EQ(bytes->compare(0, header.size(), header), 0);
+  EXPECT_EQ(bytes->size(), header.size() + 7 * 5 * 3 * 2);
+  EXPECT_EQ(bytes->size(), ppmFileSize(7, 5, "x.ppm", {16, false}));
+  // Each sample two bytes, the most significant first.
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    auto byte = [&](std::size_t k) { return static_cast<unsigned char>((*bytes)[k]); };
+    std::size_t at = header.size() + 2 * i;
+    ASSERT_EQ(byte(at) << 8 | byte(at + 1), quantizeChannel16(image.rgb[i])) << i;
+  }
+}
+
+// Every format sfrender lists writes the image at each --bits it takes, with
+// and without alpha where it has alpha, and reads back as that picture (to
+// within what its compression keeps).
+TEST_F(ImageFileTest, EveryListedFormatWritesWhatItPromises) {
+  // Smooth, for the lossy formats: gradients of straight colour and of
+  // coverage (never 0, where the colour is black).
+  render::Image image;
+  image.width = 64;
+  image.height = 48;
+  for (int j = 0; j < image.height; ++j) {
+    for (int i = 0; i < image.width; ++i) {
+      float a = 0.25f + 0.75f * static_cast<float>(i + j) / 110.0f;
+      float u = static_cast<float>(i) / 63.0f;
+      float v = static_cast<float>(j) / 47.0f;
+      image.rgb.insert(image.rgb.end(), {a * u, a * v, a * (1.0f - 0.5f * u)});
+      image.coverage.push_back(a);
+    }
+  }
+  std::vector<ImageFormat> formats = writableImageFormats();
+  ASSERT_GT(formats.size(), 1u) << "no OpenImageIO module";
+  for (const ImageFormat& format : formats) {
+    for (int bits : format.bits) {
+      for (bool alpha : {false, true}) {
+        if (alpha && !format.alpha) continue;
+        std::string name =
+            format.name + std::to_string(bits) + (alpha ? "a" : "") + format.extensions.front();
+        ReadBack r = readBack(write(name, {bits, alpha}, image));
+        ASSERT_EQ(r.spec.width, image.width) << name;
+        ASSERT_EQ(r.spec.nchannels, alpha ? 4 : 3) << name;
+        double error = 0.0;
+        for (std::size_t p = 0; p < image.coverage.size(); ++p) {
+          for (int c = 0; c < r.spec.nchannels; ++c) {
+            float want = expected(image, p, c, alpha, bits, format.linear);
+            float got = r.pixels[r.spec.nchannels * p + c];
+            // Linear values compared as display values, where a level means
+            // the same everywhere.
+            if (format.linear && c < 3) {
+              error += std::abs(std::cbrt(got) - std::cbrt(want)) / 3;
+            } else {
+              error += std::abs(got - std::clamp(want, 0.0f, 1.0f));
+            }
+          }
+        }
+        error /= static_cast<double>(image.coverage.size() * r.spec.nchannels);
+        EXPECT_LT(error, 2.0 / 255.0) << name << ": mean error " << error * 255 << " levels";
+      }
+    }
+  }
+}
+
+TEST_F(ImageFileTest, BitsAndAlphaAFormatCannotHoldAreUsageErrors) {
+  std::string scene = (dir_ / "s.sf").string();
+  std::string error;
+  ASSERT_TRUE(writeFileAtomically(scene, kValidScene, error)) << error;
+  struct Case {
+    std::vector<std::string> flags;
+    std::string name;
+    std::string message;
+    bool sfrenders = true;  // sfrender's message, not CLI11's
+  };
+  const Case cases[] = {
+      {{"--bits", "16"},
+       "x.jpg",
+       "cannot write '" + (dir_ / "x.jpg").string() +
+           "' with --bits 16: JPEG images take --bits 8"},
+      {{"--bits", "32"}, "x.png", "with --bits 32: PNG images take --bits 8 or 16"},
+      {{"--bits", "32"}, "x.tif", "with --bits 32: TIFF images take --bits 8 or 16"},
+      {{"--bits", "8"}, "x.exr", "OpenEXR images take --bits 32 (float) or 16 (half)"},
+      {{"--bits", "16"}, "x.hdr", "Radiance HDR images take --bits 32 (float)"},
+      {{"--alpha"}, "x.ppm", "with --alpha: PPM images have no alpha channel; --alpha takes .png"},
+      {{"--alpha"}, "x.jpg", "JPEG images have no alpha channel"},
+      {{"--alpha"}, "x.hdr", "Radiance HDR images have no alpha channel"},
+      {{"--bits", "12"}, "x.png", "--bits", false},
+      {{},
+       "x.jxl",
+       "cannot write images named '" + (dir_ / "x.jxl").string() +
+           "': use .ppm, .pgm, .pbm, .pnm, .png,"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = {scene,      "-o", (dir_ / c.name).string(), "--width", "8",
+                                     "--height", "6"};
+    args.insert(args.end(), c.flags.begin(), c.flags.end());
+    EXPECT_EQ(sfrender(args), toInt(ExitCode::Usage)) << c.name;
+    EXPECT_NE(err_.str().find(c.message), std::string::npos) << err_.str();
+    if (c.sfrenders) {
+      EXPECT_EQ(err_.str().rfind("sfrender: error: ", 0), 0u) << err_.str();
+    }
+  }
+  EXPECT_EQ(fileNamesIn(dir_), std::vector<std::string>{"s.sf"});
+  // What they take.
+  for (const auto& [name, flags] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"a.png", {"--bits", "16", "--alpha"}},
+           {"a.ppm", {"--bits", "16"}},
+           {"a.exr", {"--bits", "16", "--alpha"}},
+           {"a.tif", {"--alpha"}}}) {
+    std::vector<std::string> args = {
+        scene, "-o", (dir_ / name).string(), "--width", "8", "--height", "6", "--quiet"};
+    args.insert(args.end(), flags.begin(), flags.end());
+    EXPECT_EQ(sfrender(args), 0) << name << ": " << err_.str();
+  }
+}
+
+TEST_F(ImageFileTest, HelpListsWhatOpenImageIOWrites) {
+  EXPECT_EQ(sfrender({"--help"}), 0);
+  std::string help = out_.str();
+  for (const ImageFormat& format : writableImageFormats()) {
+    for (const std::string& extension : format.extensions) {
+      EXPECT_NE(help.find(" " + extension + " "), std::string::npos) << extension << "\n" << help;
+    }
+  }
+  EXPECT_NE(help.find("Image formats"), std::string::npos) << help;
+  EXPECT_NE(help.find("--alpha"), std::string::npos) << help;
+}
+
+// Rendered with --alpha, a wall whose edge runs down the middle of the
+// middle column of a 9-pixel-wide image: that column half covered, the
+// background transparent, the wall opaque, in PNG and EXR alike.
+TEST_F(ImageFileTest, AlphaIsTheCoverageOfEachPixel) {
+  std::string scene = (dir_ / "wall.sf").string();
+  std::string error;
+  ASSERT_TRUE(writeFileAtomically(scene,
+                                  "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n"
+                                  "LIGHT\n1 1 1\n1 0 0 0\n0 1 0 30\n0 0 1 0\n0 0 0 1\n"
+                                  "CUBE\n0.8 0.4 0.2\n10 0 0 10\n0 10 0 0\n0 0 1 -5\n0 0 0 1\n",
+                                  error))
+      << error;
+  for (const char* name : {"wall.png", "wall.exr"}) {
+    ASSERT_EQ(sfrender({scene, "-o", (dir_ / name).string(), "--width", "9", "--height", "5",
+                        "--spp", "16", "--alpha", "--quiet"}),
+              0)
+        << err_.str();
+    ReadBack r = readBack(dir_ / name);
+    ASSERT_EQ(r.spec.nchannels, 4);
+    for (int j = 0; j < 5; ++j) {
+      for (int i = 0; i < 9; ++i) {
+        float alpha = r.pixels[4 * (j * 9 + i) + 3];
+        float covered = i < 4 ? 0.0f : i == 4 ? 0.5f : 1.0f;
+        // 0.5 is level 127.5 of 8 bits, which rounds up.
+        if (std::string(name) == "wall.png" && i == 4) covered = 128.0f / 255.0f;
+        EXPECT_EQ(alpha, covered) << name << " " << i << "," << j;
+        if (i < 4) {
+          EXPECT_EQ(r.pixels[4 * (j * 9 + i)], 0.0f) << name;
+        }
+      }
+    }
+    // The half-covered pixel's straight colour is the wall's (in the PNG),
+    // and the EXR's is premultiplied.
+    // (Lit from high above, the wall's shading changes little from one
+    // pixel to the next, and has no highlight.)
+    float red = r.pixels[4 * (2 * 9 + 4)];
+    float wallRed = std::string(name) == "wall.png" ? r.pixels[4 * (2 * 9 + 5)]
+                                                    : 0.5f * r.pixels[4 * (2 * 9 + 5)];
+    EXPECT_NEAR(red, wallRed, 0.03f * wallRed) << name;
+  }
+}
+
+}  // namespace
+}  // namespace tools

@@ -1,0 +1,46 @@
+// The plain C interface between sfrender (image_file.cpp) and its
+// OpenImageIO module (oiio_module.cpp), which image_file.cpp loads with
+// dlopen: nothing of OpenImageIO crosses it. Both sides include this file,
+// and the two are built together, so that they cannot disagree.
+#pragma once
+
+#include <cstddef>
+
+extern "C" {
+
+// How the file stores a channel.
+enum SfrenderPixelType {
+  kSfrenderUint8 = 0,   // `pixels` holds bytes, the levels to store
+  kSfrenderUint16 = 1,  // `pixels` holds uint16_t levels
+  kSfrenderHalf = 2,    // `pixels` holds floats, stored as half (within its range)
+  kSfrenderFloat = 3,   // `pixels` holds floats
+};
+
+// An image to write, row by row from the top.
+struct SfrenderImageData {
+  int width;
+  int height;
+  int channels;   // 3 (RGB) or 4 (RGBA)
+  int pixelType;  // SfrenderPixelType
+  const void* pixels;
+  int linear;         // 1: linear values, Rec. 709 primaries and D65 white; 0: sRGB display values
+  int straightAlpha;  // 1: the colour of a pixel is not multiplied by its alpha; 0: it is
+};
+
+// The formats sfrender can write through OpenImageIO, one a line: the
+// format's name in OpenImageIO, 1 or 0 for whether its writer stores alpha,
+// and the extensions its writer is found by, without their dot
+// ("openexr 1 exr sxr mxr\n"). Writes at most `size` bytes, the last a
+// '\0', and returns the length of the whole list, as snprintf does.
+typedef std::size_t (*SfrenderOiioFormats)(char* list, std::size_t size);
+
+// Writes the image to `path` in the format of its extension; returns 1 on
+// success, or 0 with a message in `error`.
+typedef int (*SfrenderOiioWrite)(const char* path, const SfrenderImageData* image, char* error,
+                                 std::size_t errorSize);
+
+// Their names in the module.
+#define SFRENDER_OIIO_FORMATS "sfrender_oiio_formats"
+#define SFRENDER_OIIO_WRITE "sfrender_oiio_write"
+
+}  // extern "C"
