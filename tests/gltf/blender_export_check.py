@@ -1,7 +1,8 @@
 # Blender exports a scene of a UV sphere, a cube, a cylinder, a plane, a
 # camera and a point light as glTF (.gltf with its buffer beside it, and
 # .glb); sfconvert must recover each primitive with its place, size and
-# rotation, the camera, the light and the colours.
+# rotation, the camera, the light and the colours. The light's colour is
+# what sfrender must show to match Cycles at the reference distance.
 #
 # blender -b --factory-startup --python-exit-code 1 --python THIS -- SFCONVERT WORKDIR
 import math
@@ -69,15 +70,33 @@ camera.data.angle = math.radians(40)
 
 bpy.ops.object.light_add(type="POINT", location=(4, -4, 6))
 light = bpy.context.object
-light.data.energy = 2.5
+light.data.energy = 1000.0  # watts, Blender's default point light
 light.data.color = (1.0, 0.8, 0.6)
 bpy.context.view_layer.update()
+
+# Where the camera looks, by Blender's own ray cast (on the tessellated
+# meshes, so within their facets of sfconvert's fitted primitives), or on
+# the plane's infinite extension, which is what a PLANE is.
+eye = camera.matrix_world.translation
+forward = -camera.matrix_world.to_3x3().col[2].normalized()
+hits = []
+hit, location, *_ = bpy.context.scene.ray_cast(bpy.context.evaluated_depsgraph_get(), eye,
+                                               forward)
+if hit:
+    hits.append((location - eye).length)
+normal = plane.matrix_world.to_3x3().col[2]
+if abs(normal.dot(forward)) > 0:
+    t = normal.dot(plane.matrix_world.translation - eye) / normal.dot(forward)
+    if t > 0:
+        hits.append(t)
+looked_at = TO_GLTF @ (eye + min(hits) * forward) if hits else None
 
 outputs = {}
 for name, fmt in (("blender.gltf", "GLTF_SEPARATE"), ("blender.glb", "GLB")):
     path = os.path.join(work, name)
+    # The default lighting mode, "Standard": W / (4 pi) * 683 candela.
     bpy.ops.export_scene.gltf(filepath=path, export_format=fmt, export_cameras=True,
-                              export_lights=True, convert_lighting_mode="RAW")
+                              export_lights=True)
     sf = os.path.join(work, name + ".sf")
     run = subprocess.run([sfconvert, path, sf], capture_output=True, text=True)
     print(run.stderr)
@@ -104,10 +123,10 @@ def worst(a, b):
 failures = []
 
 
-def check(what, error):
+def check(what, error, tolerance=TOLERANCE):
     print(f"{what}: largest error {error:.3g}")
-    if not error <= TOLERANCE:
-        failures.append(f"{what}: error {error:.3g} above {TOLERANCE}")
+    if not error <= tolerance:
+        failures.append(f"{what}: error {error:.3g} above {tolerance}")
 
 
 kinds = [r[0] for r in records]
@@ -139,8 +158,28 @@ else:
     _, got_colour, got = lights[0]
     position = TO_GLTF @ light.matrix_world.translation
     check("LIGHT position", max(abs(got[r][3] - position[r]) for r in range(3)))
-    want_colour = [c * 2.5 for c in (1.0, 0.8, 0.6)]
-    check("LIGHT colour", max(abs(a - b) for a, b in zip(got_colour, want_colour)))
+    # The note states the reference distance and the point the camera looks
+    # at (to six digits), which must be Blender's own within a facet.
+    note = re.search(r"reference distance ([0-9.e+-]+), from the light to the point the camera "
+                     r"looks at, on the first object its forward ray meets, \(([^)]*)\)",
+                     diagnostics)
+    if not note or looked_at is None:
+        failures.append(f"no reference point where the camera looks (Blender: {looked_at}): "
+                        + diagnostics)
+    else:
+        distance = float(note.group(1))
+        point = Vector([float(x) for x in note.group(2).split()])
+        # The note gives six digits; a facet of the meshes is further off.
+        check("reference point", (point - looked_at).length, 1e-2)
+        check("reference distance", abs((position - point).length - distance) / distance, 1e-5)
+        # What Cycles shows on a surface of 0.8 facing the light there (W / (4
+        # pi^2 d^2), sRGB-encoded) is what sfrender shows under the LIGHT.
+        def encode(v):
+            return 12.92 * v if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055
+        linear = [c * 1000.0 / (4 * math.pi ** 2 * distance ** 2) for c in (1.0, 0.8, 0.6)]
+        want_colour = [encode(0.8 * v) / 0.8 for v in linear]
+        print(f"LIGHT colour {got_colour}, from Cycles' view {want_colour}")
+        check("LIGHT colour", max(abs(a - b) / b for a, b in zip(got_colour, want_colour)), 1e-5)
 
 if failures:
     sys.exit("\n".join(failures))

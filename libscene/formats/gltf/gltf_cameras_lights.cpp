@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "libscene/formats/gltf/gltf_reference_point.h"
 #include "libscene/text/number.h"
 #include "scenefile/transform.h"
 
@@ -36,7 +37,11 @@ bool CamerasAndLights::lightFromExtras(int node, const glm::dmat4& world,
       matrixDistance(withinFloatRange(lightNodeMatrix(extras.matrix)), world) > kExtrasAgreement) {
     return false;
   }
-  PointLight want = pointLightFromColour(extras.colour);
+  // Files written before the reference distance hold none, and their
+  // intensity is the colour's largest channel.
+  PointLight want = extras.referenceDistance
+                        ? pointLightFromColour(extras.colour, *extras.referenceDistance)
+                        : unscaledPointLightFromColour(extras.colour);
   PointLight have = pointLight(c_.model.lights[light]);
   double d =
       std::max(glm::length(want.color - have.color),
@@ -112,18 +117,22 @@ void CamerasAndLights::addLight(int node, int lightIndex, const glm::dmat4& worl
   const tinygltf::Light& light = c_.model.lights[lightIndex];
   std::string label = "light" + quoted(light.name) + " on " + nodeLabel(c_.model, node);
   PointLight point = pointLight(light);
-  glm::dvec3 colour = colourFromPointLight(point);
-  if (!std::isfinite(colour.x + colour.y + colour.z)) colour = glm::dvec3(0.0);
   glm::dmat4 m(1.0);
   m[3] = glm::dvec4(glm::dvec3(world[3]), 1.0);
   if (light.type == "directional") {
+    // Illuminance, which falls off no more than a scene file's light.
+    glm::dvec3 colour = colourFromDirectionalLight(point);
+    if (!std::isfinite(colour.x + colour.y + colour.z)) colour = glm::dvec3(0.0);
     glm::dvec3 direction = -glm::dvec3(world[2]);
     pendingDirectional_.push_back({c_.scene.lights.size(), direction});
     c_.out.report(c_.loss, DiagnosticCode::GltfLightApproximated, {},
                   "directional " + label +
                       " becomes a point light far away against its direction: a scene file has "
                       "point lights only");
-  } else if (light.type == "spot") {
+    c_.scene.lights.push_back(Light{m, colour, {}});
+    return;
+  }
+  if (light.type == "spot") {
     c_.out.report(c_.loss, DiagnosticCode::GltfLightApproximated, {},
                   "spot " + label + " becomes a point light: its cone is dropped");
   } else if (light.type != "point") {
@@ -131,17 +140,39 @@ void CamerasAndLights::addLight(int node, int lightIndex, const glm::dmat4& worl
         c_.loss, DiagnosticCode::GltfLightApproximated, {},
         label + " has the unknown type '" + light.type + "'; it is read as a point light");
   }
-  c_.out.note(DiagnosticCode::LightFalloff, {},
-              label +
-                  " falls off with the square of the distance; a scene file's LIGHT of colour " +
-                  formatNumber(colour.x) + " " + formatNumber(colour.y) + " " +
-                  formatNumber(colour.z) + " (colour times intensity) does not fall off");
-  c_.scene.lights.push_back(Light{m, colour, {}});
+  pendingPoint_.push_back({c_.scene.lights.size(), point, label});
+  c_.scene.lights.push_back(Light{m, glm::dvec3(0.0), {}});
 }
 
 void CamerasAndLights::finish() {
   placeDirectionalLights();
   if (!haveCamera_) makeDefaultCamera();
+  colourPointLights();
+}
+
+void CamerasAndLights::colourPointLights() {
+  if (pendingPoint_.empty()) return;
+  ReferencePoint reference = referencePoint(c_.scene);
+  std::string where = describeReferencePoint(reference);
+  for (const PendingPoint& pending : pendingPoint_) {
+    Light& light = c_.scene.lights[pending.light];
+    double distance = referenceDistance(light.position(), reference);
+    glm::dvec3 colour = colourFromPointLight(pending.point, distance);
+    if (!std::isfinite(colour.x + colour.y + colour.z)) {
+      c_.out.error(DiagnosticCode::ValueNotFinite, {},
+                   pending.label + " at its reference distance " + approximateNumber(distance) +
+                       " gives a LIGHT colour beyond the largest number");
+      continue;
+    }
+    light.colour = colour;
+    c_.out.note(DiagnosticCode::LightFalloff, {},
+                pending.label +
+                    " falls off with the square of the distance where a scene file's LIGHT does "
+                    "not: LIGHT colour " +
+                    approximateNumber(colour.x) + " " + approximateNumber(colour.y) + " " +
+                    approximateNumber(colour.z) + " matches it at the reference distance " +
+                    approximateNumber(distance) + ", from the light to " + where);
+  }
 }
 
 void CamerasAndLights::placeDirectionalLights() {

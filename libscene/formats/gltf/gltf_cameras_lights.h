@@ -9,11 +9,13 @@
 #include <cstddef>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "libscene/formats/gltf/gltf_extras.h"
 #include "libscene/formats/gltf/gltf_import_context.h"
+#include "libscene/formats/gltf/gltf_light_units.h"
 #include "libscene/formats/gltf/gltf_mapping.h"
 
 namespace scene::gltf {
@@ -34,14 +36,16 @@ class CamerasAndLights {
   bool lightFromExtras(int node, const glm::dmat4& world, const RecordExtras& extras);
 
   // After the walk, when every object is known: directional lights are
-  // placed beyond the scene, and a file without a camera gets one that sees
-  // every object.
+  // placed beyond the scene, a file without a camera gets one that sees
+  // every object, and the point and spot lights get their colours at their
+  // reference distances in the scene read (gltf_reference_point.h).
   void finish();
 
  private:
   void reportFov(int camera);
   void placeDirectionalLights();
   void makeDefaultCamera();
+  void colourPointLights();
   static PointLight pointLight(const tinygltf::Light& light);
 
   const ImportContext& c_;
@@ -49,6 +53,14 @@ class CamerasAndLights {
   // Directional lights (the index of each in scene.lights, and the
   // direction it shines in), placed once the scene's extent is known.
   std::vector<std::pair<std::size_t, glm::dvec3>> pendingDirectional_;
+  // Point and spot lights (the index of each in scene.lights, its glTF
+  // values and its name for messages), coloured once the scene is known.
+  struct PendingPoint {
+    std::size_t light = 0;
+    PointLight point;
+    std::string label;
+  };
+  std::vector<PendingPoint> pendingPoint_;
 };
 
 }  // namespace scene::gltf

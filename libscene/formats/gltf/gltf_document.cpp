@@ -36,8 +36,8 @@ const std::map<std::string, std::set<std::string>> kReadExtensions = {
 // The keys of our own extras (gltf_writer.cpp) that the reader reads, of
 // nodes and of materials.
 const std::set<std::string> kOwnExtrasKeys = {
-    "record",  "colour",   "matrix",    "lookAt",       "transforms",   "view",  "ambient",
-    "diffuse", "specular", "shininess", "reflectivity", "transparency", "ri",
+    "record",  "colour",   "matrix",    "lookAt",       "transforms",   "view", "ambient",
+    "diffuse", "specular", "shininess", "reflectivity", "transparency", "ri",   "referenceDistance",
 };
 
 // A JSON pointer's reference token: '~' and '/' escaped (RFC 6901).

@@ -117,6 +117,10 @@ std::optional<RecordExtras> recordExtras(const std::string& extrasText) {
     if (!view.is_boolean()) return std::nullopt;
     out.noView = !view.get<bool>();
   }
+  if (out.record == "LIGHT" && sf->contains("referenceDistance")) {
+    out.referenceDistance = number((*sf)["referenceDistance"]);
+    if (!out.referenceDistance || !(*out.referenceDistance > 0.0)) return std::nullopt;
+  }
   if (sf->contains("transforms")) {
     out.transforms = transformsFromJson((*sf)["transforms"]);
     // The operations are kept only while they still make the matrix.

@@ -34,6 +34,9 @@ struct RecordExtras {
   // CAMERA: the scene had no View, and the camera's yfov is only the
   // writer's default ("view": false), so that reading back gives no View.
   bool noView = false;
+  // LIGHT: the distance at which the writer matched the glTF light to the
+  // colour (gltf_light_units.h); files written before it have none.
+  std::optional<double> referenceDistance;
 };
 
 // The record of a node's extras (JSON text), when they hold a whole one;

@@ -46,19 +46,6 @@ Material materialFromPbr(const PbrMaterial& pbr) {
   return m;
 }
 
-PointLight pointLightFromColour(const glm::dvec3& colour) {
-  double peak = std::max({colour.x, colour.y, colour.z});
-  if (!(peak > 0.0)) return {glm::dvec3(1.0), 0.0};
-  PointLight light;
-  light.intensity = peak;
-  light.color = glm::clamp(colour / peak, 0.0, 1.0);
-  return light;
-}
-
-glm::dvec3 colourFromPointLight(const PointLight& light) {
-  return glm::max(light.color * light.intensity, glm::dvec3(0.0));
-}
-
 glm::dmat4 cameraNodeMatrix(const glm::dmat4& camera) {
   glm::dvec3 right(camera[0]), up(camera[1]), back(camera[2]);
   auto unit = [](const glm::dvec3& v) { return std::abs(glm::length(v) - 1.0) <= 1e-9; };

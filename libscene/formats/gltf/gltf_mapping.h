@@ -50,15 +50,6 @@ PbrMaterial pbrFromMaterial(const Material& material, ObjectKind kind);
 // their defaults.
 Material materialFromPbr(const PbrMaterial& pbr);
 
-// A .sf light colour as a KHR_lights_punctual colour (each channel in
-// [0, 1]) and intensity: the intensity is the largest channel.
-struct PointLight {
-  glm::dvec3 color{1.0};
-  double intensity = 1.0;
-};
-PointLight pointLightFromColour(const glm::dvec3& colour);
-glm::dvec3 colourFromPointLight(const PointLight& light);
-
 // The matrix of the node that carries a camera: the camera matrix itself
 // when it is a rotation and a translation, else the rigid camera that the
 // renderer uses (right, up, back orthonormalised from forward and up).

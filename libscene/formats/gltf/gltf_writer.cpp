@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "libscene/formats/gltf/glb.h"
+#include "libscene/formats/gltf/gltf_light_units.h"
+#include "libscene/formats/gltf/gltf_reference_point.h"
 #include "libscene/text/number.h"
 
 namespace scene {
@@ -359,19 +361,56 @@ void reportBeyondFloat(const glm::dmat4& m, const std::string& label, SourceSpan
       .hint = "the exact matrix rides in extras";
 }
 
-void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize, DiagnosticList& out) {
+// Each LIGHT's glTF light: matched to the scene's light at its reference
+// distance (gltf_light_units.h, gltf_reference_point.h).
+struct LightPlan {
+  double distance = 1.0;
+  gltf::PointLight point;
+};
+
+std::vector<LightPlan> planLights(const Scene& scene, const gltf::ReferencePoint& reference) {
+  std::vector<LightPlan> plans;
+  plans.reserve(scene.lights.size());
+  for (const Light& light : scene.lights) {
+    double distance = gltf::referenceDistance(light.position(), reference);
+    plans.push_back({distance, gltf::pointLightFromColour(light.colour, distance)});
+  }
+  return plans;
+}
+
+void reportLightLosses(const Scene& scene, Severity lossSeverity,
+                       const gltf::ReferencePoint& reference, const std::vector<LightPlan>& plans,
+                       DiagnosticList& out) {
+  std::string where = gltf::describeReferencePoint(reference);
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    std::string label = "LIGHT " + std::to_string(i + 1);
+    const LightPlan& plan = plans[i];
+    reportBeyondFloat(gltf::lightNodeMatrix(scene.lights[i].matrix), label, scene.lights[i].span,
+                      lossSeverity, out);
+    if (plan.point.clamped) {
+      out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
+                 "the intensity that matches " + label + " at its reference distance " +
+                     gltf::approximateNumber(plan.distance) +
+                     " is beyond single precision, where glTF readers hold it: it is clamped to " +
+                     gltf::approximateNumber(plan.point.intensity) + " cd")
+          .hint = "the exact colour rides in extras";
+    }
+    out.note(DiagnosticCode::LightFalloff, scene.lights[i].span,
+             label +
+                 " becomes a KHR_lights_punctual point light, whose light falls off with the "
+                 "square of the distance where a scene file's does not: its intensity, " +
+                 gltf::approximateNumber(plan.point.intensity) + " cd, matches " + label +
+                 " at the reference distance " + gltf::approximateNumber(plan.distance) +
+                 ", from the light to " + where);
+  }
+}
+
+void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize,
+                  const gltf::ReferencePoint& reference, const std::vector<LightPlan>& lights,
+                  DiagnosticList& out) {
   reportBeyondFloat(gltf::cameraNodeMatrix(scene.camera.matrix), "the CAMERA", scene.camera.span,
                     lossSeverity, out);
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    reportBeyondFloat(gltf::lightNodeMatrix(scene.lights[i].matrix),
-                      "LIGHT " + std::to_string(i + 1), scene.lights[i].span, lossSeverity, out);
-  }
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    out.note(DiagnosticCode::LightFalloff, scene.lights[i].span,
-             "LIGHT " + std::to_string(i + 1) +
-                 " becomes a KHR_lights_punctual point light, whose light falls off with the "
-                 "square of the distance; a scene file's light does not fall off");
-  }
+  reportLightLosses(scene, lossSeverity, reference, lights, out);
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     const Material& m = object.material;
@@ -470,13 +509,13 @@ void addCamera(const Scene& scene, const GltfWriteOptions& options, Json& doc, P
   parts.nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
 }
 
-void addLights(const Scene& scene, Json& doc, Parts& parts) {
+void addLights(const Scene& scene, const std::vector<LightPlan>& plans, Json& doc, Parts& parts) {
   if (scene.lights.empty()) return;
   Json lights = Json::array();
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     std::string name = "LIGHT " + std::to_string(i + 1);
-    gltf::PointLight point = gltf::pointLightFromColour(light.colour);
+    const gltf::PointLight& point = plans[i].point;
     lights.push_back({{"name", name},
                       {"type", "point"},
                       {"color", vec3Json(point.color)},
@@ -487,7 +526,8 @@ void addLights(const Scene& scene, Json& doc, Parts& parts) {
     parts.nodes[node]["extras"] = {{gltf::kExtrasKey,
                                     {{"record", "LIGHT"},
                                      {"colour", vec3Json(light.colour)},
-                                     {"matrix", rowsJson(light.matrix)}}}};
+                                     {"matrix", rowsJson(light.matrix)},
+                                     {"referenceDistance", plans[i].distance}}}};
   }
   parts.extensions.insert("KHR_lights_punctual");
   doc["extensions"] = {{"KHR_lights_punctual", {{"lights", std::move(lights)}}}};
@@ -593,7 +633,10 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
   const GltfWriteOptions& options = conversion.gltf;
   std::size_t errorsBefore = out.errorCount();
   float planeSize = planeHalfSize(scene);
-  reportLosses(scene, conversion.noLoss ? Severity::Error : Severity::Warning, planeSize, out);
+  gltf::ReferencePoint reference = gltf::referencePoint(scene);
+  std::vector<LightPlan> lights = planLights(scene, reference);
+  reportLosses(scene, conversion.noLoss ? Severity::Error : Severity::Warning, planeSize, reference,
+               lights, out);
   if (out.errorCount() != errorsBefore) return std::nullopt;
 
   Json doc;
@@ -602,7 +645,7 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
   doc["asset"] = std::move(asset);
   Parts parts;
   addCamera(scene, options, doc, parts);
-  addLights(scene, doc, parts);
+  addLights(scene, lights, doc, parts);
   addObjects(scene, options, planeSize, parts);
   assemble(doc, parts);
   if (std::optional<std::string> where = firstNonFinite(doc, "")) {

@@ -8,8 +8,8 @@
 
 #include "libscene/formats/gltf/glb.h"
 #include "libscene/formats/gltf/gltf_reader.h"
-#include "scenefile/read.h"
 #include "libscene/testing/test_support.h"
+#include "scenefile/read.h"
 
 namespace scene {
 namespace {
@@ -171,10 +171,29 @@ TEST(GltfWriter, CameraLightsAndMaterialsMapAsDocumented) {
   const Json& perspective = w.doc["cameras"][0]["perspective"];
   EXPECT_DOUBLE_EQ(perspective["yfov"].get<double>(), 45 * std::acos(-1.0) / 180);
   EXPECT_DOUBLE_EQ(perspective["aspectRatio"].get<double>(), 640.0 / 480.0);
+  // The light at (1, 2, 3) is matched 3 from where the camera's ray meets
+  // the sphere, (0, 0, 1), for a surface of COLOUR 0.8: each channel is
+  // decoded from sRGB there, and 683 * pi lux shows as 1 (docs/GLTF.md).
   const Json& light = w.doc["extensions"]["KHR_lights_punctual"]["lights"][0];
   EXPECT_EQ(light["type"], "point");
-  EXPECT_EQ(light["intensity"].get<double>(), 2.0);
-  EXPECT_EQ(light["color"], Json::array({1.0, 0.5, 0.25}));
+  auto decode = [](double v) {
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  EXPECT_NEAR(light["intensity"].get<double>() / (decode(1.6) / 0.8 * 683 * std::acos(-1.0) * 9),
+              1.0, 1e-12);
+  EXPECT_NEAR(light["color"][0].get<double>(), 1.0, 1e-15);
+  EXPECT_NEAR(light["color"][1].get<double>(), decode(0.8) / decode(1.6), 1e-15);
+  EXPECT_NEAR(light["color"][2].get<double>(), decode(0.4) / decode(1.6), 1e-15);
+  const Json& lightNode = nodeNamed(w.doc, "LIGHT 1");
+  EXPECT_EQ(lightNode["extras"]["sf"]["colour"], Json::array({2.0, 1.0, 0.5}));
+  EXPECT_EQ(lightNode["extras"]["sf"]["referenceDistance"].get<double>(), 3.0);
+  std::vector<Diagnostic> falloff = withCode(w.diagnostics, DiagnosticCode::LightFalloff);
+  ASSERT_EQ(falloff.size(), 1u);
+  EXPECT_NE(falloff[0].message.find("reference distance 3, from the light to the point the "
+                                    "camera looks at, on the first object its forward ray meets, "
+                                    "(0 0 1)"),
+            std::string::npos)
+      << falloff[0].message;
   const Json& m = w.doc["materials"][0];
   EXPECT_EQ(m["pbrMetallicRoughness"]["baseColorFactor"], Json::array({1.0, 0.25, 0.0, 1.0}));
   EXPECT_EQ(m["pbrMetallicRoughness"]["metallicFactor"].get<double>(), 0.0);
