@@ -18,6 +18,11 @@ void ToolOutput::error(std::string_view message, std::string_view hint) const {
   if (!hint.empty()) streams_.err << "  " << style_.location("hint:") << ' ' << hint << '\n';
 }
 
+void ToolOutput::fileError(std::string_view file, std::string_view message) const {
+  streams_.err << printableText(file) << ": " << style_.severity(scene::Severity::Error, "error:")
+               << ' ' << message << '\n';
+}
+
 void ToolOutput::warning(std::string_view message) const {
   if (flags_.quiet) return;
   streams_.err << tool_ << ": " << style_.severity(scene::Severity::Warning, "warning:") << ' '

@@ -31,6 +31,9 @@ class ToolOutput {
 
   // "TOOL: error: MESSAGE", then "  hint: HINT" when there is one.
   void error(std::string_view message, std::string_view hint = {}) const;
+  // "FILE: error: MESSAGE", for a file that cannot be read or written; FILE
+  // as it is safe to show (printableText).
+  void fileError(std::string_view file, std::string_view message) const;
   // "TOOL: warning: MESSAGE", unless quiet.
   void warning(std::string_view message) const;
   // "TOOL: MESSAGE", unless quiet: what the tool did ("wrote out.png").

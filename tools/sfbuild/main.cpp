@@ -153,9 +153,7 @@ std::optional<int> openScene(const sfbuild::SfbuildOptions& o, const tools::Tool
   }
   std::string shown = tools::inputDisplayName(o.input);
   if (!text.text) {
-    output.err() << tools::printableText(shown) << ": "
-                 << output.style().severity(scene::Severity::Error, "error:")
-                 << " cannot read the file: " << tools::printableText(text.readError) << "\n";
+    output.fileError(shown, "cannot read the file: " + tools::printableText(text.readError));
     return tools::toInt(tools::ExitCode::IoError);
   }
   scene::ReadResult result = scene::parseScene(*text.text, shown, o.read);

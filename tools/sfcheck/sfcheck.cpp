@@ -108,9 +108,7 @@ void Checker::check(const std::string& file) {
                                   {"diagnostics", nlohmann::json::array()},
                                   {"readError", printableText(input.readError)}});
     } else {
-      output_.err() << printableText(shown) << ": "
-                    << output_.style().severity(scene::Severity::Error, "error:")
-                    << " cannot read the file: " << printableText(input.readError) << "\n";
+      output_.fileError(shown, "cannot read the file: " + printableText(input.readError));
     }
     return;
   }

@@ -128,9 +128,7 @@ std::optional<int> Converter::plan() {
   if (o_.noClobber && !plan_.toStdout) {
     for (const std::filesystem::path& path : {std::filesystem::path(o_.output), plan_.bufferPath}) {
       if (!path.empty() && pathExists(path)) {
-        output_.err() << printableText(path.string()) << ": "
-                      << output_.style().severity(scene::Severity::Error, "error:") << ' '
-                      << kNoClobberMessage << "\n";
+        output_.fileError(path.string(), kNoClobberMessage);
         return toInt(ExitCode::IoError);
       }
     }
@@ -178,9 +176,7 @@ std::optional<scene::ReadResult> Converter::read(int& status) {
     return std::nullopt;
   }
   if (!text.text) {
-    output_.err() << printableText(shown) << ": "
-                  << output_.style().severity(scene::Severity::Error, "error:")
-                  << " cannot read the file: " << printableText(text.readError) << "\n";
+    output_.fileError(shown, "cannot read the file: " + printableText(text.readError));
     status = toInt(ExitCode::IoError);
     return std::nullopt;
   }
@@ -267,9 +263,7 @@ int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene&
   std::string writeError;
   std::filesystem::path failed;
   if (!writeFilesAtomically(files, writeError, &failed, !o_.noClobber)) {
-    output_.err() << printableText(failed.string()) << ": "
-                  << output_.style().severity(scene::Severity::Error, "error:")
-                  << " cannot write the file: " << writeError << "\n";
+    output_.fileError(failed.string(), "cannot write the file: " + writeError);
     if (namesStandardOutput(o_.output)) {
       output_.err() << "  hint: sfconvert writes regular files; name the output - for standard "
                        "output\n";

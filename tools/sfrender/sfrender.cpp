@@ -119,7 +119,6 @@ class Renderer {
   std::optional<int> targetRefusal();
   std::optional<int> resourceRefusal();
   int writeImage(const render::Image& image, const render::RenderStatistics& statistics);
-  void fileError(const fs::path& path, const std::string& message) const;
 
   SfrenderOptions& o_;
   ToolOutput& output_;
@@ -128,12 +127,6 @@ class Renderer {
   render::RenderSettings settings_;
   SceneAndTarget job_;
 };
-
-void Renderer::fileError(const fs::path& path, const std::string& message) const {
-  output_.err() << printableText(path.string()) << ": "
-                << output_.style().severity(scene::Severity::Error, "error:") << ' ' << message
-                << "\n";
-}
 
 // Step 1: the scene, from the file, standard input or the built-in one.
 std::optional<int> Renderer::readScene() {
@@ -150,7 +143,7 @@ std::optional<int> Renderer::readScene() {
     return toInt(ExitCode::InvalidInput);
   }
   if (!text.text) {
-    fileError(shown, "cannot read the file: " + printableText(text.readError));
+    output_.fileError(shown, "cannot read the file: " + printableText(text.readError));
     return toInt(ExitCode::IoError);
   }
   scene::ReadResult result = scene::parseScene(*text.text, shown, o_.read);
@@ -225,13 +218,13 @@ std::optional<int> Renderer::targetRefusal() {
     return toInt(ExitCode::Usage);
   }
   if (o_.noClobber && pathExists(target)) {
-    fileError(target, kNoClobberMessage);
+    output_.fileError(target.string(), kNoClobberMessage);
     return toInt(ExitCode::IoError);
   }
   std::string error;
   if (!checkCanWrite(target, true, ppmFileSize(settings_.width, settings_.height, target, o_.image),
                      error)) {
-    fileError(target, "cannot write the image: " + error);
+    output_.fileError(target.string(), "cannot write the image: " + error);
     return toInt(ExitCode::IoError);
   }
   return std::nullopt;
@@ -277,7 +270,7 @@ int Renderer::writeImage(const render::Image& image, const render::RenderStatist
     stage_.set("writing " + printableText(job_.target.string()));
     std::string writeError;
     if (!writeImageFile(image, job_.target, writeError, o_.image, !o_.noClobber)) {
-      fileError(job_.target, "cannot write the image: " + writeError);
+      output_.fileError(job_.target.string(), "cannot write the image: " + writeError);
       return toInt(ExitCode::IoError);
     }
     written = printableText(job_.target.string());
