@@ -21,8 +21,6 @@ packages=(
   gnuplot-nox
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).
   blender python3-numpy
-  # f3d, a second glTF viewer for tests/gltf/f3d_brightness.sh (in Xvfb).
-  f3d
   # sfbuild: GLFW and epoxy for OpenGL 3.3; its X11 test runs it in Xvfb on
   # Mesa's software OpenGL, types with xdotool and takes screenshots with xwd
   # and netpbm.

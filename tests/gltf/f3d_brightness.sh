@@ -7,14 +7,16 @@
 #
 # f3d_brightness.sh SFCONVERT SFRENDER WORKDIR WIDTH HEIGHT SCENE...
 # (a SCENE written "default=FILE.txt" as for blender_brightness_check.py)
-# Exits 77 when f3d or xvfb-run is missing (scripts/install-deps.sh installs
-# both). f3d needs an OpenGL context: Xvfb and Mesa's software rasteriser.
+# Exits 77 when f3d or xvfb-run is missing: install-deps.sh installs
+# xvfb-run, but not f3d (`apt-get install f3d`), whose VTK and OpenCASCADE
+# would cost every CI run their download for a measurement no test makes. f3d needs an OpenGL context: Xvfb and Mesa's software rasteriser.
 set -euo pipefail
 sfconvert=$1 sfrender=$2 work=$3 width=$4 height=$5
 shift 5
 for tool in f3d xvfb-run pngtopnm python3; do
   if ! command -v "$tool" >/dev/null 2>&1; then
-    echo "SKIP: $tool is not installed (scripts/install-deps.sh installs it)"; exit 77
+    echo "SKIP: $tool is not installed (apt-get install f3d; install-deps.sh installs the rest)"
+    exit 77
   fi
 done
 mkdir -p "$work"
