@@ -122,22 +122,26 @@ void onFramebufferSize(GLFWwindow* window, int width, int height) {
   appOf(window)->state.height = height;
 }
 
-// Why GLFW failed, from its error callback, for the message that says so.
-std::string& glfwFailure() {
-  static std::string failure;  // GLFW's callback takes no user pointer
-  return failure;
-}
-
-void onGlfwError(int, const char* description) {
-  glfwFailure() = description ? description : "";
-}
-
-// GLFW's reason, in the house style: lower case, no final period.
+// Why GLFW's last call failed (glfwGetError), in the house style: lower
+// case, no final period ("X11: The DISPLAY environment variable is
+// missing." becomes "x11: the DISPLAY environment variable is missing").
 std::string glfwReason() {
-  std::string reason = glfwFailure();
+  const char* description = nullptr;
+  glfwGetError(&description);
+  std::string reason = description ? description : "";
   while (!reason.empty() && (reason.back() == '.' || reason.back() == '\n')) reason.pop_back();
-  if (!reason.empty()) {
+  auto lower = [&reason](std::size_t at) {
+    // Only a capital that starts a word of lower-case letters: DISPLAY stays.
+    if (at + 1 < reason.size() && std::isupper(static_cast<unsigned char>(reason[at])) &&
+        std::islower(static_cast<unsigned char>(reason[at + 1]))) {
+      reason[at] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[at])));
+    }
+  };
+  if (!reason.empty())
     reason[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[0])));
+  for (std::size_t at = reason.find(": "); at != std::string::npos;
+       at = reason.find(": ", at + 2)) {
+    lower(at + 2);
   }
   return reason;
 }
@@ -169,7 +173,6 @@ std::optional<int> openScene(const sfbuild::SfbuildOptions& o, const tools::Tool
 // none that GLFW can use) and no OpenGL 3.3 there are the environment's
 // lack, not the input's (ExitCode::NoDisplay).
 GLFWwindow* openWindow(const sfbuild::SfbuildOptions& o, const tools::ToolOutput& output) {
-  glfwSetErrorCallback(onGlfwError);
   if (!glfwInit()) {
     std::string reason = glfwReason();
     output.error("no display to open a window on" + (reason.empty() ? "" : ": " + reason),
