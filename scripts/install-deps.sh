@@ -26,8 +26,9 @@ packages=(
   # it, and its add-on (blender/io_scene_sf) is tested there.
   pybind11-dev python3-pybind11 python3-dev python3-pytest
   # The render test reads sfrender's float EXR with OpenImageIO's Python
-  # module, to compare it with the module's numbers exactly.
-  python3-openimageio
+  # module, to compare it with the module's numbers exactly; the typing test
+  # holds the package's annotations and stubs to mypy --strict.
+  python3-openimageio mypy
   # f3d, a second glTF viewer for tests/gltf/f3d_brightness.sh (in Xvfb).
   f3d
   # sfbuild: GLFW and epoxy for OpenGL 3.3; its X11 test runs it in Xvfb on

@@ -17,7 +17,7 @@ import scenefile
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def main():
+def main() -> int:
     files = sys.argv[2:] or sorted(glob.glob(os.path.join(HERE, "..", "*.sf")) +
                                    glob.glob(os.path.join(HERE, "..", "*.txt")))
     errors = warnings = 0

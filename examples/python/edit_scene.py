@@ -19,7 +19,7 @@ import scenefile
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def main():
+def main() -> None:
     folder = sys.argv[1] if len(sys.argv) > 1 else "."
     source = sys.argv[2] if len(sys.argv) > 2 else os.path.join(HERE, "..", "blue-cube.txt")
     os.makedirs(folder, exist_ok=True)
@@ -45,7 +45,7 @@ def main():
     for before, after in zip(scene.objects, edited.objects):
         assert abs(before.matrix - after.matrix).max() < 1e-12
     print(f"edited.txt: {len(cubes)} cubes lifted, written with "
-          f"{[op.kind.value for op in edited.objects[-1].transforms]}")
+          f"{[op.kind.value for op in edited.objects[-1].transforms or ()]}")
 
     losses = scenefile.write(scene, os.path.join(folder, "edited.glb"))
     for d in losses:

@@ -23,7 +23,7 @@ import scenefile
 from scenefile import Camera, Light, Material, Object, Scene, TransformOp
 
 
-def spiral(count=24):
+def spiral(count: int = 24) -> Scene:
     scene = Scene(Camera.looking_at(location=(0.0, 4.0, 11.0), look_at=(0.0, 1.6, 0.0)))
     scene.output_file = "spiral.ppm"
     scene.lights.append(Light(position=(6.0, 9.0, 8.0), colour=(0.9, 0.9, 0.9)))
@@ -45,7 +45,7 @@ def spiral(count=24):
     return scene
 
 
-def write_ppm(image, path):
+def write_ppm(image: "np.typing.NDArray[np.float32]", path: str) -> None:
     """An 8-bit binary PPM of the image, each channel round(clamp(v, 0, 1) * 255)."""
     levels = np.floor(np.clip(image, 0.0, 1.0).astype(np.float32) * np.float32(255) + 0.5)
     height, width, _ = image.shape
@@ -54,7 +54,7 @@ def write_ppm(image, path):
         f.write(levels.astype(np.uint8).tobytes())
 
 
-def main():
+def main() -> None:
     folder = sys.argv[1] if len(sys.argv) > 1 else "."
     os.makedirs(folder, exist_ok=True)
     scene = spiral()

@@ -150,6 +150,7 @@ def loads(data: Union[str, bytes], name: str = "<string>", format: Optional[str]
                                                     options)
     found = _diagnostics(diagnostics)
     _raise_on_errors(found)
+    assert scene_data is not None, "no scene, yet no error"
     scene = Scene._from_data(scene_data)
     scene.source, scene.format, scene.diagnostics = name, detected, found
     return scene
@@ -175,6 +176,7 @@ def _read(path: PathLike, format: Optional[str], options: Dict[str, Any]) -> Sce
     scene_data, diagnostics, detected = _core.parse(data, name, _format_name(format), options)
     found = _diagnostics(diagnostics)
     _raise_on_errors(found)
+    assert scene_data is not None, "no scene, yet no error"
     scene = Scene._from_data(scene_data)
     scene.source, scene.format, scene.diagnostics = name, detected, found
     return scene

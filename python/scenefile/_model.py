@@ -17,7 +17,7 @@ then describe the matrix anew.
 from __future__ import annotations
 
 import enum
-from typing import Any, Iterable, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -109,23 +109,56 @@ def _kind(value: Any, enum_type: Any, what: str) -> Any:
         raise ValueError(f"{value!r} is no {what}: {names}{did_you_mean}") from None
 
 
+def _span(value: Any) -> Span:
+    line, column, length = value
+    return (int(line), int(column), int(length))
+
+
 def _same(a: Optional[Matrix], b: Optional[Matrix]) -> bool:
     return a is not None and b is not None and bool(np.array_equal(a, b))
+
+
+class _Number:
+    """A float attribute of a Material, checked as a number when set."""
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self._public, self._private = name, "_" + name
+
+    @overload
+    def __get__(self, obj: None, owner: type) -> _Number: ...
+
+    @overload
+    def __get__(self, obj: object, owner: type) -> float: ...
+
+    def __get__(self, obj: Optional[object], owner: type) -> Union[_Number, float]:
+        return self if obj is None else float(getattr(obj, self._private))
+
+    def __set__(self, obj: object, value: float) -> None:
+        setattr(obj, self._private, _number(value, self._public))
 
 
 class Material:
     """The Phong material of FORMATS.md; scene files carry only the colour."""
 
-    __slots__ = ("_colour", "_values")
     _NAMES = ("ambient", "diffuse", "specular", "shininess", "reflectivity", "transparency", "ri")
+    __slots__ = ("_colour",) + tuple("_" + n for n in _NAMES)
     _DEFAULTS = (0.1, 0.9, 0.9, 200.0, 0.0, 0.0, 1.0)
+
+    ambient = _Number()  #: AMBIENT, in [0, 1]
+    diffuse = _Number()  #: DIFFUSE, in [0, 1]
+    specular = _Number()  #: SPECULAR, in [0, 1]
+    shininess = _Number()  #: SHININESS, above 0
+    reflectivity = _Number()  #: REFLECTIVITY, in [0, 1]
+    transparency = _Number()  #: TRANSPARENCY, in [0, 1]
+    ri = _Number()  #: RI, the refractive index, above 0
 
     def __init__(self, colour: VectorLike = (1.0, 1.0, 1.0), ambient: float = 0.1,
                  diffuse: float = 0.9, specular: float = 0.9, shininess: float = 200.0,
                  reflectivity: float = 0.0, transparency: float = 0.0, ri: float = 1.0) -> None:
         self._colour = _vector(colour, "colour")
-        values = (ambient, diffuse, specular, shininess, reflectivity, transparency, ri)
-        self._values = [_number(v, n) for v, n in zip(values, self._NAMES)]
+        self.ambient, self.diffuse, self.specular = ambient, diffuse, specular
+        self.shininess, self.reflectivity = shininess, reflectivity
+        self.transparency, self.ri = transparency, ri
 
     @property
     def colour(self) -> Colour:
@@ -136,30 +169,13 @@ class Material:
     def colour(self, value: VectorLike) -> None:
         self._colour = _vector(value, "colour")
 
-    def _get(self, i: int) -> float:
-        return self._values[i]
-
-    def _set(self, i: int, value: float) -> None:
-        self._values[i] = _number(value, self._NAMES[i])
-
-    ambient = property(lambda self: self._get(0), lambda self, v: self._set(0, v),
-                       doc="AMBIENT, in [0, 1]")
-    diffuse = property(lambda self: self._get(1), lambda self, v: self._set(1, v),
-                       doc="DIFFUSE, in [0, 1]")
-    specular = property(lambda self: self._get(2), lambda self, v: self._set(2, v),
-                        doc="SPECULAR, in [0, 1]")
-    shininess = property(lambda self: self._get(3), lambda self, v: self._set(3, v),
-                         doc="SHININESS, above 0")
-    reflectivity = property(lambda self: self._get(4), lambda self, v: self._set(4, v),
-                            doc="REFLECTIVITY, in [0, 1]")
-    transparency = property(lambda self: self._get(5), lambda self, v: self._set(5, v),
-                            doc="TRANSPARENCY, in [0, 1]")
-    ri = property(lambda self: self._get(6), lambda self, v: self._set(6, v),
-                  doc="RI, the refractive index, above 0")
+    @property
+    def _values(self) -> Tuple[float, ...]:
+        return tuple(getattr(self, n) for n in self._NAMES)
 
     def is_default(self) -> bool:
         """Whether every value but the colour is the default (what a scene file holds)."""
-        return tuple(self._values) == self._DEFAULTS
+        return self._values == self._DEFAULTS
 
     def copy(self) -> Material:
         return Material(self._colour, *self._values)
@@ -173,13 +189,13 @@ class Material:
         values = ", ".join(f"{n}={v!r}" for n, v in zip(self._NAMES, self._values))
         return f"Material(colour={self._colour!r}, {values})"
 
-    def _to_data(self) -> dict:
-        data: dict = dict(zip(self._NAMES, self._values))
+    def _to_data(self) -> Dict[str, Any]:
+        data: Dict[str, Any] = dict(zip(self._NAMES, self._values))
         data["colour"] = self._colour
         return data
 
     @classmethod
-    def _from_data(cls, data: dict) -> Material:
+    def _from_data(cls, data: Dict[str, Any]) -> Material:
         return cls(data["colour"], *(data[n] for n in cls._NAMES))
 
 
@@ -193,7 +209,7 @@ class TransformOp:
     __slots__ = ("_kind", "_value", "_span")
 
     def __init__(self, kind: Union[TransformKind, str], value: Union[float, VectorLike]) -> None:
-        self._kind = _kind(kind, TransformKind, "transform kind")
+        self._kind: TransformKind = _kind(kind, TransformKind, "transform kind")
         if self._kind in (TransformKind.SCALE, TransformKind.TRANSLATE):
             self._value = _vector(value, f"{self._kind.value}'s value")
         elif isinstance(value, (int, float, np.number)) and not isinstance(value, bool):
@@ -259,14 +275,14 @@ class TransformOp:
             return f"TransformOp.{self._kind.value.lower()}{self._value!r}"
         return f"TransformOp.{self._kind.value.lower()}({self._value[0]!r})"
 
-    def _to_data(self) -> tuple:
+    def _to_data(self) -> Tuple[Any, ...]:
         return (self._kind.value, self._value, self._span)
 
     @classmethod
-    def _from_data(cls, data: tuple) -> TransformOp:
+    def _from_data(cls, data: Tuple[Any, ...]) -> TransformOp:
         op = cls(data[0], data[1])
         if len(data) > 2:
-            op._span = tuple(data[2])
+            op._span = _span(data[2])
         return op
 
 
@@ -389,17 +405,17 @@ class Camera:
         look_at = f", look_at={self.look_at!r}" if self.look_at is not None else ""
         return f"Camera(eye={self.eye!r}, forward={self.forward!r}{look_at})"
 
-    def _to_data(self) -> dict:
+    def _to_data(self) -> Dict[str, Any]:
         return {"matrix": self._matrix, "colour": self._colour, "look_at": self.look_at,
                 "span": self._span}
 
     @classmethod
-    def _from_data(cls, data: dict) -> Camera:
+    def _from_data(cls, data: Dict[str, Any]) -> Camera:
         camera = cls(data["matrix"], data["colour"])
         if data.get("look_at") is not None:
             camera._look_at = _vector(data["look_at"], "look_at")
             camera._look_at_matrix = camera._matrix.copy()
-        camera._span = tuple(data.get("span", _NO_SPAN))
+        camera._span = _span(data.get("span", _NO_SPAN))
         return camera
 
 
@@ -450,13 +466,13 @@ class Light:
     def __repr__(self) -> str:
         return f"Light(position={self.position!r}, colour={self._colour!r})"
 
-    def _to_data(self) -> dict:
+    def _to_data(self) -> Dict[str, Any]:
         return {"matrix": self._matrix, "colour": self._colour, "span": self._span}
 
     @classmethod
-    def _from_data(cls, data: dict) -> Light:
+    def _from_data(cls, data: Dict[str, Any]) -> Light:
         light = cls(colour=data["colour"], matrix=data["matrix"])
-        light._span = tuple(data.get("span", _NO_SPAN))
+        light._span = _span(data.get("span", _NO_SPAN))
         return light
 
 
@@ -472,17 +488,17 @@ class Object:
     def __init__(self, kind: Union[ObjectKind, str], matrix: Optional[MatrixLike] = None, *,
                  colour: Optional[VectorLike] = None, material: Optional[Material] = None,
                  transforms: Optional[Iterable[TransformOp]] = None) -> None:
-        self._kind = _kind(kind, ObjectKind, "object kind")
+        self._kind: ObjectKind = _kind(kind, ObjectKind, "object kind")
         self._material = Material() if material is None else _material(material)
         if colour is not None:
-            self._material.colour = colour
+            self._material.colour = _vector(colour, "colour")
         self._transforms: Optional[Tuple[TransformOp, ...]] = None
         self._transforms_matrix: Optional[Matrix] = None
         self._matrix = np.identity(4) if matrix is None else _matrix(matrix, "an object's matrix")
         self._span = _NO_SPAN
         if transforms is not None:
             given = self._matrix
-            self.transforms = transforms
+            self._set_transforms(transforms)
             if matrix is not None and not np.array_equal(given, self._matrix):
                 raise ValueError("the matrix is not the one the transforms make")
 
@@ -518,7 +534,7 @@ class Object:
 
     @colour.setter
     def colour(self, value: VectorLike) -> None:
-        self._material.colour = value
+        self._material.colour = _vector(value, "colour")
 
     @property
     def transforms(self) -> Optional[Tuple[TransformOp, ...]]:
@@ -527,6 +543,9 @@ class Object:
 
     @transforms.setter
     def transforms(self, value: Optional[Iterable[TransformOp]]) -> None:
+        self._set_transforms(value)
+
+    def _set_transforms(self, value: Optional[Iterable[TransformOp]]) -> None:
         if value is None:
             self._transforms = self._transforms_matrix = None
             return
@@ -548,7 +567,7 @@ class Object:
         return (f"Object({self._kind.value}, translation={_vector(self._matrix[:3, 3], 't')!r}, "
                 f"colour={self.colour!r})")
 
-    def _to_data(self) -> dict:
+    def _to_data(self) -> Dict[str, Any]:
         transforms = self.transforms
         return {"kind": self._kind.value, "matrix": self._matrix,
                 "material": self._material._to_data(),
@@ -556,12 +575,12 @@ class Object:
                 "span": self._span}
 
     @classmethod
-    def _from_data(cls, data: dict) -> Object:
+    def _from_data(cls, data: Dict[str, Any]) -> Object:
         obj = cls(data["kind"], data["matrix"], material=Material._from_data(data["material"]))
         if data.get("transforms") is not None:
             obj._transforms = tuple(TransformOp._from_data(t) for t in data["transforms"])
             obj._transforms_matrix = obj._matrix.copy()
-        obj._span = tuple(data.get("span", _NO_SPAN))
+        obj._span = _span(data.get("span", _NO_SPAN))
         return obj
 
 
@@ -613,7 +632,7 @@ class Diagnostic:
         self.severity = Severity(severity)
         self.code, self.file, self.line, self.column = code, file, line, column
         self.length, self.message, self.hint = length, message, hint
-        self.notes = list(notes)
+        self.notes: List[Note] = list(notes)
         self.fix_it = fix_it
 
     @property
@@ -635,7 +654,7 @@ class Diagnostic:
                              "hint"))
 
     @classmethod
-    def _from_data(cls, data: dict) -> Diagnostic:
+    def _from_data(cls, data: Dict[str, Any]) -> Diagnostic:
         line, column, length = data["span"]
         notes = [Note(s[0], s[1], s[2], message) for s, message in data["notes"]]
         fix_it = None
@@ -646,7 +665,7 @@ class Diagnostic:
                    data["hint"], length, notes, fix_it)
 
 
-def _diagnostics(data: Iterable[dict]) -> list:
+def _diagnostics(data: Iterable[Dict[str, Any]]) -> List[Diagnostic]:
     return [Diagnostic._from_data(d) for d in data]
 
 
@@ -665,14 +684,14 @@ class Scene:
                  objects: Optional[Iterable[Object]] = None, output_file: Optional[str] = None,
                  view: Optional[View] = None) -> None:
         self.camera: Camera = Camera() if camera is None else camera
-        self.lights: list = [] if lights is None else list(lights)
-        self.objects: list = [] if objects is None else list(objects)
+        self.lights: List[Light] = [] if lights is None else list(lights)
+        self.objects: List[Object] = [] if objects is None else list(objects)
         self.output_file = output_file
         self._output_file_span = _NO_SPAN
         self.view: Optional[View] = view
         self.source: Optional[str] = None
         self.format: Optional[str] = None
-        self.diagnostics: list = []
+        self.diagnostics: List[Diagnostic] = []
 
     @property
     def output_file(self) -> Optional[str]:
@@ -686,7 +705,7 @@ class Scene:
         self._output_file = value
 
     @property
-    def warnings(self) -> list:
+    def warnings(self) -> List[Diagnostic]:
         """The warnings among ``diagnostics``."""
         return [d for d in self.diagnostics if d.severity == Severity.WARNING]
 
@@ -708,10 +727,12 @@ class Scene:
         source = f", from {self.source!r}" if self.source else ""
         return f"<Scene: {len(self.objects)} objects, {len(self.lights)} lights{source}>"
 
-    def _to_data(self) -> dict:
+    def _to_data(self) -> Dict[str, Any]:
         if not isinstance(self.camera, Camera):
             raise TypeError(f"the camera must be a Camera, not {type(self.camera).__name__}")
-        for what, items, cls in (("light", self.lights, Light), ("object", self.objects, Object)):
+        checks: Tuple[Tuple[str, Sequence[object], type], ...] = (
+            ("light", self.lights, Light), ("object", self.objects, Object))
+        for what, items, cls in checks:
             for i, item in enumerate(items):
                 if not isinstance(item, cls):
                     raise TypeError(f"{what}s[{i}] is a {type(item).__name__}, not a {cls.__name__}")
@@ -724,13 +745,13 @@ class Scene:
                 "output_file_span": self._output_file_span, "view": view}
 
     @classmethod
-    def _from_data(cls, data: dict) -> Scene:
+    def _from_data(cls, data: Dict[str, Any]) -> Scene:
         scene = cls(Camera._from_data(data["camera"]),
                     [Light._from_data(x) for x in data["lights"]],
                     [Object._from_data(x) for x in data["objects"]], data["output_file"])
-        scene._output_file_span = tuple(data.get("output_file_span", _NO_SPAN))
+        scene._output_file_span = _span(data.get("output_file_span", _NO_SPAN))
         if data.get("view") is not None:
             view = data["view"]
             scene.view = View(view["fov"], view["aspect_ratio"])
-            scene.view._span = tuple(view.get("span", _NO_SPAN))
+            scene.view._span = _span(view.get("span", _NO_SPAN))
         return scene
