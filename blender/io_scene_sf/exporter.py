@@ -168,6 +168,9 @@ def build_scene(scenefile, context, use_selection=False):
             made = mesh_object(scenefile, obj, depsgraph, notes)
             if made is not None:
                 scene.objects.append(made)
+        elif obj.type == "EMPTY" and obj.instance_type == "COLLECTION" and obj.instance_collection:
+            notes.append(("WARNING", f"{obj.name}: skipped, a collection instance is not "
+                                     f"expanded"))
         elif obj.type == "CAMERA" and obj != blender_scene.camera:
             notes.append(("WARNING", f"{obj.name}: skipped, a scene has one camera, the "
                                      f"scene's ({blender_scene.camera.name})"))

@@ -55,6 +55,13 @@ def build():
         obj.data.materials.append(principled(obj.name, colour))
     bpy.ops.object.light_add(type="POINT", location=(3.0, -4.0, 6.0))
     bpy.context.object.data.energy = 1000.0
+    # What a scene cannot hold: a sun and a collection instance, reported.
+    bpy.ops.object.light_add(type="SUN", location=(0.0, 0.0, 20.0))
+    bpy.context.object.data.energy = 0.0  # not to light Cycles' flat picture
+    group = bpy.data.collections.new("group")
+    instance = bpy.data.objects.new("instance", None)
+    instance.instance_type, instance.instance_collection = "COLLECTION", group
+    bpy.context.scene.collection.objects.link(instance)
     bpy.ops.object.camera_add(location=(3.0, -3.6, 4.8))
     camera = bpy.context.object
     camera.rotation_euler = (-Vector(camera.location)).to_track_quat("-Z", "Y").to_euler()
@@ -124,7 +131,10 @@ kinds = [o.kind.value for o in scene.objects]
 failures.check(kinds == ["CUBE", "CYLINDER", "PLANE", "SPHERE"], f"the objects are {kinds}")
 failures.check(any("Suzanne" in m and "no primitive" in m for _, m in notes),
                f"the monkey is not reported: {notes}")
-failures.check(len(scene.lights) == 1, "the light is not exported")
+failures.check(len(scene.lights) == 1, "the point light alone is exported")
+failures.check(any("Sun" in m and "sun light" in m for _, m in notes), "the sun is not reported")
+failures.check(any("instance" in m and "not expanded" in m for _, m in notes),
+               "the collection instance is not reported")
 for fmt, name in (("SF", "built.sf"), ("INSTRUCTIONS", "built.txt")):
     path = os.path.join(work, name)
     result, error = common.operator(bpy.ops.export_scene.sf, filepath=path, format=fmt)
