@@ -159,7 +159,8 @@ std::uint64_t Image::bytesFor(int width, int height, bool withCoverage) {
 }
 
 Image renderImage(const RenderScene& scene, const RenderSettings& settings,
-                  RenderStatistics* statistics, const ProgressCallback& progress) {
+                  RenderStatistics* statistics, const ProgressCallback& progress,
+                  const CancelFlag* cancel) {
   auto start = std::chrono::steady_clock::now();
   Image image;
   image.width = settings.width;
@@ -223,6 +224,8 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
           return sum;
         };
         for (int j = y0; j < y1; ++j) {
+          // forEachTile stops handing out tiles at the first exception.
+          if (cancel && cancel->requested()) throw RenderCancelled();
           for (int i = x0; i < x1; ++i) {
             double slack = 0.0;
             int hits = 0;

@@ -2,7 +2,9 @@
 // with a seed, tiles spread over threads.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -97,8 +99,32 @@ struct RenderStatistics {
 // Called after each finished tile with the tiles done and the total.
 using ProgressCallback = std::function<void(int done, int total)>;
 
+// Asks a render to stop before it is done: set from any thread, or from a
+// signal handler (the atomic is lock-free), and read by the render before
+// each row of pixels, so that a render stops within a row's time whatever
+// the image's size (the Python module's Ctrl+C). Once set it stays set.
+class CancelFlag {
+ public:
+  void request() noexcept { requested_.store(true, std::memory_order_relaxed); }
+  bool requested() const noexcept { return requested_.load(std::memory_order_relaxed); }
+
+ private:
+  static_assert(std::atomic<bool>::is_always_lock_free);
+  std::atomic<bool> requested_{false};
+};
+
+// What renderImage throws when its CancelFlag is set: there is no image,
+// since a part of one would look finished where it is not.
+class RenderCancelled : public std::exception {
+ public:
+  const char* what() const noexcept override { return "the render was cancelled"; }
+};
+
+// The image of `scene`. With `cancel`, stops once it is requested: every
+// thread leaves its row, and RenderCancelled is thrown when all are joined.
 Image renderImage(const RenderScene& scene, const RenderSettings& settings,
-                  RenderStatistics* statistics = nullptr, const ProgressCallback& progress = {});
+                  RenderStatistics* statistics = nullptr, const ProgressCallback& progress = {},
+                  const CancelFlag* cancel = nullptr);
 
 // The index of the object each pixel's centre ray meets first, or -1: the
 // picture that geometry tests compare.

@@ -35,6 +35,36 @@ TEST(Render, TheSameImageAtAnyThreadCount) {
   EXPECT_NE(renderImage(compiled, settings).rgb, one.rgb);
 }
 
+TEST(Render, ACancelFlagStopsTheRenderAndNothingComesBack) {
+  RenderScene compiled(defaultScene());
+  RenderSettings settings;
+  settings.width = 256;
+  settings.height = 192;  // 8 x 6 tiles of 32
+  settings.threads = 2;
+  // Set before the render: no tile is finished.
+  CancelFlag before;
+  before.request();
+  int finished = 0;
+  auto count = [&finished](int, int) { ++finished; };
+  EXPECT_THROW(renderImage(compiled, settings, nullptr, count, &before), RenderCancelled);
+  EXPECT_EQ(finished, 0);
+  // Set from the progress callback after the first tile: the threads stop
+  // at their next row, well before the 48 tiles are done.
+  CancelFlag during;
+  finished = 0;
+  auto cancelAtFirst = [&](int, int) {
+    ++finished;
+    during.request();
+  };
+  EXPECT_THROW(renderImage(compiled, settings, nullptr, cancelAtFirst, &during), RenderCancelled);
+  EXPECT_GE(finished, 1);
+  EXPECT_LE(finished, 2) << "a tile finished after the request";
+  // A flag that is never set changes nothing.
+  CancelFlag never;
+  EXPECT_EQ(renderImage(compiled, settings, nullptr, {}, &never).rgb,
+            renderImage(compiled, settings).rgb);
+}
+
 TEST(Render, OneSamplePassesThroughThePixelCentre) {
   EXPECT_EQ(samplePosition(3, 7, 0, 1, 99), glm::dvec2(3.5, 7.5));
   // The camera ray of pixel (i, j) at the centre of a 2x2 image looks along

@@ -12,9 +12,16 @@
 # 3. runs each on a scene file, a glTF file and a POV-Ray file ("N objects,
 #    M lights", exit 0) and on an invalid file (FILE:LINE:COLUMN: lines,
 #    exit 1), and once with no file (exit 2);
-# 4. moves the prefix elsewhere and renders a PNG with the moved sfrender
+# 4. where the build has the Python module: imports the installed package
+#    with the build's python (Debian's /usr/bin/python3) from the prefix's
+#    Python folder (PYTHONPATH) and reads and renders a scene; installs the
+#    Blender add-on's zip into a fresh Blender user folder and, with no
+#    PYTHONPATH, imports a scene through it (the module found where the
+#    install's _site.py says);
+# 5. moves the prefix elsewhere and renders a PNG with the moved sfrender
 #    (its OpenImageIO module found relative to the program), then a lone
-#    copy of sfrender, which cannot find the module, must say so.
+#    copy of sfrender, which cannot find the module, must say so; the moved
+#    Python package still imports, and the moved add-on folder finds it.
 # Everything happens under a temporary folder, removed at the end.
 set -euo pipefail
 
@@ -153,7 +160,70 @@ else
   cat "$work/pc-static.log" >&2
 fi
 
-# --- 4. A moved prefix --------------------------------------------------------
+# --- 4. The Python module and the Blender add-on ------------------------------
+python=$(cache_value SCENEFILE_PYTHON_EXECUTABLE)
+pydir=$(cache_value SCENEFILE_PYTHON_INSTALL_DIR)
+# One call of the installed package: read a scene, render a few pixels.
+check_python() {
+  local where=$1 out status=0
+  out=$(cd "$work" && PYTHONPATH=$where "$python" -c "
+import scenefile
+assert scenefile.__file__.startswith('$where/'), scenefile.__file__
+scene = scenefile.read('$valid_sf')
+image = scenefile.render(scene, width=8, height=6)
+print(f'{len(scene.objects)} objects, an image of {image.shape}, from {scenefile.__file__}')
+" 2>&1) || status=$?
+  if [[ $status -ne 0 ]]; then
+    fail "the Python package in $where: exit $status, $out"
+  else
+    echo "python3: $out"
+  fi
+}
+# The add-on, loaded as Blender loads one, imports a scene; PYTHONPATH unset,
+# so that only the add-on's own way to the module counts.
+check_addon() {
+  local label=$1 script=$2 status=0 out
+  out=$(cd "$work" && env -u PYTHONPATH BLENDER_USER_SCRIPTS="$work/blender-user-$label" \
+        blender -b --factory-startup --python-exit-code 1 --python "$script" -- \
+        "$valid_sf" 2>&1) || status=$?
+  if [[ $status -ne 0 ]] || ! grep -q '^ADDON: ' <<<"$out"; then
+    fail "the Blender add-on ($label): exit $status, $(tail -n 5 <<<"$out")"
+  else
+    echo "blender ($label): $(grep '^ADDON: ' <<<"$out" | sed 's/^ADDON: //')"
+  fi
+}
+addon_import='
+import bpy, numpy, sys
+numpy.bool = bool  # Debian 12: Blender 3.4 and numpy 1.24 (see tests/gltf)
+args = sys.argv[sys.argv.index("--") + 1:]
+assert bpy.ops.import_scene.sf(filepath=args[0]) == {"FINISHED"}
+import scenefile
+meshes = [o for o in bpy.data.objects if o.type == "MESH"]
+print(f"ADDON: imported {len(meshes)} objects with scenefile from {scenefile.__file__}")
+'
+if [[ -n $python && -n $pydir ]]; then
+  step "the Python package in $prefix/$pydir, and the Blender add-on"
+  for file in "$pydir/scenefile/__init__.py" "$pydir/scenefile/_model.py" \
+              "$pydir/scenefile/_core.pyi" "$pydir/scenefile/py.typed" \
+              share/scenefile/io_scene_sf.zip share/scenefile/blender/addons/io_scene_sf/__init__.py \
+              share/scenefile/blender/addons/io_scene_sf/_site.py; do
+    [[ -e $prefix/$file ]] || fail "the install has no $file"
+  done
+  compgen -G "$prefix/$pydir/scenefile/_core.*.so" >/dev/null || fail "the install has no _core module"
+  check_python "$prefix/$pydir"
+  if command -v blender >/dev/null 2>&1; then
+    # Factory settings first: they would disable the add-on enabled after.
+    printf '%s\n' 'import addon_utils, bpy' 'bpy.ops.wm.read_factory_settings(use_empty=True)' \
+      "bpy.ops.preferences.addon_install(filepath=\"$prefix/share/scenefile/io_scene_sf.zip\")" \
+      'addon_utils.enable("io_scene_sf", default_set=True, handle_error=None)' \
+      "$addon_import" >"$work/zip.py"
+    check_addon zip "$work/zip.py"
+  else
+    echo "blender is not installed: the add-on is not tried"
+  fi
+fi
+
+# --- 5. A moved prefix --------------------------------------------------------
 moved=$work/elsewhere/moved-prefix
 mkdir -p "$(dirname "$moved")"
 mv "$prefix" "$moved"
@@ -187,9 +257,20 @@ else
 fi
 "$work/lone/sfrender" --width 8 --height 8 --quiet -o "$work/lone.ppm" ||
   fail "a lone sfrender cannot write a PPM"
+# The Python package needs nothing from where it was installed, and the
+# add-on's folder finds it relative to itself.
+if [[ -n $python && -n $pydir ]]; then
+  check_python "$moved/$pydir"
+  if command -v blender >/dev/null 2>&1; then
+    printf '%s\n' 'import bpy, sys' 'bpy.ops.wm.read_factory_settings(use_empty=True)' \
+      "sys.path.insert(0, \"$moved/share/scenefile/blender/addons\")" \
+      'import io_scene_sf' 'io_scene_sf.register()' "$addon_import" >"$work/moved.py"
+    check_addon moved "$work/moved.py"
+  fi
+fi
 
 if ((failures > 0)); then
   echo "FAIL: $failures checks of the installed package" >&2
   exit 1
 fi
-echo "PASS: the installed package builds and runs count-objects four ways, and a moved prefix renders a PNG"
+echo "PASS: the installed package builds and runs count-objects four ways, a moved prefix renders a PNG${python:+, and the Python package and the Blender add-on work from it}"

@@ -21,6 +21,14 @@ packages=(
   gnuplot-nox
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).
   blender python3-numpy
+  # The Python module (python/): pybind11 and Python's headers to build it,
+  # pytest to test it; Blender runs the same Debian Python 3.11 that imports
+  # it, and its add-on (blender/io_scene_sf) is tested there.
+  pybind11-dev python3-pybind11 python3-dev python3-pytest
+  # The render test reads sfrender's float EXR with OpenImageIO's Python
+  # module, to compare it with the module's numbers exactly; the typing test
+  # holds the package's annotations and stubs to mypy --strict.
+  python3-openimageio mypy
   # sfbuild: GLFW and epoxy for OpenGL 3.3; its X11 test runs it in Xvfb on
   # Mesa's software OpenGL, types with xdotool and takes screenshots with xwd
   # and netpbm.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <string_view>
 
 #include <glm/mat4x4.hpp>
@@ -56,6 +57,11 @@ void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticLis
 /// RI > 0 with a warning below 1.
 void checkMaterialValue(MaterialProperty property, double value, SourceSpan where,
                         DiagnosticList& out);
+
+/// OUTPUT_FILE is one name of printable ASCII without blanks, as an
+/// instruction file holds it: a name set in memory may be anything
+/// (output-file-name).
+void checkOutputFileName(const std::string& name, SourceSpan where, DiagnosticList& out);
 
 /// Rules about the scene as a whole: a warning when nothing is lit.
 void checkSceneLevel(const Scene& scene, DiagnosticList& out);

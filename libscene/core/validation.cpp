@@ -245,6 +245,17 @@ void checkSceneLevel(const Scene& scene, DiagnosticList& out) {
   }
 }
 
+void checkOutputFileName(const std::string& name, SourceSpan where, DiagnosticList& out) {
+  bool printable = !name.empty();
+  for (char c : name) printable = printable && c > ' ' && c < 0x7F;
+  if (printable) return;
+  out.error(DiagnosticCode::OutputFileName, where,
+            name.empty() ? "OUTPUT_FILE is empty"
+                         : "OUTPUT_FILE holds a blank, a control character or a byte that is not "
+                           "ASCII, which an instruction file cannot hold in a name")
+      .hint = "name the image with printable ASCII and no blanks";
+}
+
 DiagnosticList validateScene(const Scene& scene, std::string file) {
   DiagnosticList out(std::move(file));
   RecordSpans cameraSpans = RecordSpans::uniform(scene.camera.span);
@@ -264,6 +275,7 @@ DiagnosticList validateScene(const Scene& scene, std::string file) {
       checkMaterialValue(p, materialValue(object.material, p), object.span, out);
     }
   }
+  if (scene.outputFile) checkOutputFileName(*scene.outputFile, scene.outputFileSpan, out);
   checkSceneLevel(scene, out);
   return out;
 }

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "libscene/formats/gltf/gltf_import_context.h"
-#include "libscene/formats/gltf/mesh_fit.h"
+#include "scenefile/mesh_fit.h"
 #include "scenefile/read.h"
 
 namespace scene::gltf {

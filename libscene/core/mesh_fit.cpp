@@ -1,4 +1,4 @@
-#include "libscene/formats/gltf/mesh_fit.h"
+#include "scenefile/mesh_fit.h"
 
 #include <algorithm>
 #include <array>
@@ -9,6 +9,8 @@
 #include <glm/matrix.hpp>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace scene {
@@ -537,11 +539,35 @@ Attempt fitSphere(const Mesh& m, double tol) {
   return out;
 }
 
+// Why the triangles cannot be fitted at all, or nothing: the fitting sorts
+// and indexes the vertices, which an index past them or a NaN would break.
+std::optional<std::string> unusable(std::span<const glm::dvec3> positions,
+                                    std::span<const std::uint32_t> indices) {
+  if (indices.size() % 3 != 0) {
+    return std::to_string(indices.size()) + " indices are not whole triangles";
+  }
+  for (std::uint32_t i : indices) {
+    if (i >= positions.size()) {
+      return "index " + std::to_string(i) + " is past the " + std::to_string(positions.size()) +
+             " vertices";
+    }
+    const glm::dvec3& p = positions[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      return "vertex " + std::to_string(i) + " is not finite";
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 FitResult fitPrimitive(std::span<const glm::dvec3> positions,
                        std::span<const std::uint32_t> indices, double tolerance) {
   FitResult result;
+  if (std::optional<std::string> why = unusable(positions, indices)) {
+    result.reason = *why;
+    return result;
+  }
   Mesh m = prepare(positions, indices);
   if (m.points.size() < 3 || !(m.size > 0.0) || !std::isfinite(m.size)) {
     result.reason = "it has no area";

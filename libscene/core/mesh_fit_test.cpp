@@ -1,4 +1,4 @@
-#include "libscene/formats/gltf/mesh_fit.h"
+#include "scenefile/mesh_fit.h"
 
 #include <gtest/gtest.h>
 
@@ -167,6 +167,27 @@ TEST(MeshFit, RejectsWhatIsNoPrimitive) {
   EXPECT_FALSE(fitPrimitive(bumpy.points, bumpy.indices).fit);
   // Nothing at all.
   EXPECT_FALSE(fitPrimitive({}, {}).fit);
+}
+
+TEST(MeshFit, RefusesTrianglesItCannotRead) {
+  // The public API takes anyone's arrays (the Python module's): an index
+  // past the vertices, a NaN or a broken triangle is a reason, not a crash.
+  Positions cube = placed(cubeMesh(), glm::dmat4(1.0));
+  ASSERT_TRUE(fitPrimitive(cube.points, cube.indices).fit);
+  std::vector<std::uint32_t> past = cube.indices;
+  past[4] = static_cast<std::uint32_t>(cube.points.size());
+  FitResult r = fitPrimitive(cube.points, past);
+  EXPECT_FALSE(r.fit);
+  EXPECT_EQ(r.reason, "index 24 is past the 24 vertices");
+  std::vector<glm::dvec3> nan = cube.points;
+  nan[3].y = std::nan("");
+  r = fitPrimitive(nan, cube.indices);
+  EXPECT_FALSE(r.fit);
+  EXPECT_EQ(r.reason, "vertex 3 is not finite");
+  std::vector<std::uint32_t> broken(cube.indices.begin(), cube.indices.end() - 1);
+  r = fitPrimitive(cube.points, broken);
+  EXPECT_FALSE(r.fit);
+  EXPECT_EQ(r.reason, "35 indices are not whole triangles");
 }
 
 }  // namespace

@@ -1,0 +1,452 @@
+"""scenefile: read, check, write, convert and render ray-tracing scenes.
+
+The Python face of libscene, the library under the tools sfcheck, sfconvert
+and sfrender: the same readers, writers, diagnostics and renderer, so that
+what a script does is what the tools do. docs/PYTHON.md is the manual.
+
+    import scenefile
+    scene = scenefile.read("examples/blue-cube.txt")
+    scene.objects[0].colour = (1.0, 0.5, 0.0)
+    losses = scenefile.write(scene, "orange-cube.sf")   # AMBIENT, ... are lost
+    image = scenefile.render(scene, width=320, height=240)   # (240, 320, 3) float32
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from . import _core
+from ._model import (Camera, Colour, Diagnostic, FixIt, Light, Material, Matrix, Note, Object,
+                     ObjectKind, Scene, Severity, TransformKind, TransformOp, Vector, View,
+                     _diagnostics, _kind, compose_transform)
+
+__version__: str = _core.__version__
+
+PLANE = ObjectKind.PLANE
+SPHERE = ObjectKind.SPHERE
+CYLINDER = ObjectKind.CYLINDER
+CUBE = ObjectKind.CUBE
+#: The largest deviation fit_primitive accepts, relative to the shape's size.
+FIT_TOLERANCE: float = _core.FIT_TOLERANCE
+
+__all__ = [
+    "CUBE", "CYLINDER", "Camera", "Colour", "Diagnostic", "FIT_TOLERANCE", "FixIt", "Light",
+    "Material", "Matrix", "MeshFit", "Note", "Object", "ObjectKind", "PLANE", "SPHERE", "Scene",
+    "SceneError", "Severity", "TransformKind", "TransformOp", "Vector", "View", "check",
+    "compose_transform", "convert", "decompose_transform", "default_scene", "fit_primitive",
+    "formats", "loads", "primitive_mesh", "read", "render", "validate", "write",
+]
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+# The keyword arguments each function takes beyond its own, by what they
+# are for: reading (the tools' limits and reading flags) and writing
+# (sfconvert's flags), each with its type and, for numbers, the range the
+# tools' flags take.
+_BIG = (1 << 63) - 1
+_READ_OPTIONS: Dict[str, Tuple[type, float, float]] = {
+    "max_file_size": (int, 1, _BIG), "max_objects": (int, 1, _BIG),
+    "max_vertices": (int, 1, _BIG), "max_nodes": (int, 1, _BIG), "error_limit": (int, 1, _BIG),
+    "no_loss": (bool, 0, 1), "transpose_matrices": (bool, 0, 1),
+    "skip_unsupported": (bool, 0, 1),
+}
+_WRITE_OPTIONS: Dict[str, Tuple[type, float, float]] = {
+    "no_loss": (bool, 0, 1), "approximate": (bool, 0, 1), "output_file": (str, 0, 0),
+    "fov": (float, 0.0, 180.0), "width": (int, 1, 1 << 30), "height": (int, 1, 1 << 30),
+    "tessellation": (int, 3, 1024), "external_buffers": (bool, 0, 1), "flat": (bool, 0, 1),
+    "depth": (int, 0, 1000),
+}
+
+
+class SceneError(Exception):
+    """A scene could not be read, checked as valid, or written as asked.
+
+    ``diagnostics`` holds every diagnostic (errors first found first, with
+    the warnings and notes among them); ``str()`` is the first error in the
+    tools' form, ``file:line:column: error: message [code]``.
+    """
+
+    def __init__(self, diagnostics: Sequence[Diagnostic]) -> None:
+        self.diagnostics: List[Diagnostic] = list(diagnostics)
+        errors = self.errors
+        first = str(errors[0]) if errors else "the scene is invalid"
+        more = f" (and {len(errors) - 1} more errors)" if len(errors) > 1 else ""
+        super().__init__(first + more)
+
+    @property
+    def errors(self) -> List[Diagnostic]:
+        """The errors among ``diagnostics``."""
+        return [d for d in self.diagnostics if d.severity == Severity.ERROR]
+
+
+def _options(given: Dict[str, Any], known: Dict[str, Tuple[type, float, float]],
+             function: str) -> Dict[str, Any]:
+    """The keyword arguments checked by name, type and range, as the tools check their flags."""
+    out: Dict[str, Any] = {}
+    for name, value in given.items():
+        if name not in known:
+            hint = _core.suggest_spelling(name, sorted(known))
+            did_you_mean = f"; did you mean {hint!r}?" if hint else ""
+            raise TypeError(f"{function}() got an unexpected keyword argument {name!r}"
+                            f"{did_you_mean}")
+        if value is None:
+            continue
+        kind, lowest, highest = known[name]
+        if kind is bool:
+            if not isinstance(value, (bool, np.bool_)):
+                raise TypeError(f"{name} must be True or False, not {value!r}")
+            value = bool(value)
+        elif kind is int:
+            if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+                raise TypeError(f"{name} must be a whole number, not {value!r}")
+            if not lowest <= value <= highest:
+                raise ValueError(f"{name} must lie between {lowest} and {highest}, not {value}")
+            value = int(value)
+        elif kind is float:
+            if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float,
+                                                                             np.number)):
+                raise TypeError(f"{name} must be a number, not {value!r}")
+            value = float(value)
+            if not lowest < value < highest:
+                raise ValueError(f"{name} must lie between {lowest:g} and {highest:g}, both "
+                                 f"excluded, not {value:g}")
+        elif not isinstance(value, kind):
+            raise TypeError(f"{name} must be a {kind.__name__}, not {value!r}")
+        out[name] = value
+    return out
+
+
+def _format_name(format: Optional[str]) -> Optional[str]:
+    if format is None:
+        return None
+    names = [row["name"] for row in _core.formats()]
+    name = str(format).lower()
+    if name not in names:
+        hint = _core.suggest_spelling(str(format), names)
+        did_you_mean = f"; did you mean {hint!r}?" if hint else ""
+        raise ValueError(f"{format!r} is no format: {', '.join(names)}{did_you_mean}")
+    return name
+
+
+def _raise_on_errors(diagnostics: List[Diagnostic]) -> None:
+    if any(d.severity == Severity.ERROR for d in diagnostics):
+        raise SceneError(diagnostics)
+
+
+def loads(data: Union[str, bytes], name: str = "<string>", format: Optional[str] = None,
+          **limits: Any) -> Scene:
+    """The scene in ``data`` (text or bytes), as read() reads a file named ``name``."""
+    options = _options(limits, _READ_OPTIONS, "loads")
+    if isinstance(data, str):
+        data = data.encode("utf-8", "surrogateescape")
+    size_diagnostics = _diagnostics(_core.check_file_size(len(data), name, options))
+    _raise_on_errors(size_diagnostics)
+    scene_data, diagnostics, detected = _core.parse(bytes(data), name, _format_name(format),
+                                                    options)
+    found = _diagnostics(diagnostics)
+    _raise_on_errors(found)
+    assert scene_data is not None, "no scene, yet no error"
+    scene = Scene._from_data(scene_data)
+    scene.source, scene.format, scene.diagnostics = name, detected, found
+    return scene
+
+
+def _read_bytes(path: PathLike, options: Dict[str, Any]) -> Tuple[str, bytes, List[Diagnostic]]:
+    """The file's name as diagnostics give it, its bytes, and file-too-large if it is."""
+    name = os.fspath(path)
+    if not isinstance(name, str):
+        name = os.fsdecode(name)
+    with open(name, "rb") as f:
+        size = os.fstat(f.fileno()).st_size
+        refused = _diagnostics(_core.check_file_size(size, name, options))
+        if any(d.severity == Severity.ERROR for d in refused):
+            return name, b"", refused
+        limit = options.get("max_file_size", 1 << 30)
+        return name, f.read(limit + 1), refused
+
+
+def _read(path: PathLike, format: Optional[str], options: Dict[str, Any]) -> Scene:
+    name, data, refused = _read_bytes(path, options)
+    _raise_on_errors(refused)
+    scene_data, diagnostics, detected = _core.parse(data, name, _format_name(format), options)
+    found = _diagnostics(diagnostics)
+    _raise_on_errors(found)
+    assert scene_data is not None, "no scene, yet no error"
+    scene = Scene._from_data(scene_data)
+    scene.source, scene.format, scene.diagnostics = name, detected, found
+    return scene
+
+
+def read(path: PathLike, format: Optional[str] = None, **limits: Any) -> Scene:
+    """The scene in the file at ``path``, in any format the tools read.
+
+    The format is recognised from the content unless ``format`` names one
+    ("sf", "instructions", "gltf", "glb", "pov"). ``limits`` are the tools'
+    reading flags: max_file_size, max_objects, max_vertices, max_nodes,
+    error_limit, no_loss, transpose_matrices, skip_unsupported.
+
+    Raises SceneError (with every diagnostic) when the file is invalid, and
+    OSError (FileNotFoundError, ...) when it cannot be read. The warnings
+    and notes are in the scene's ``diagnostics``.
+    """
+    return _read(path, format, _options(limits, _READ_OPTIONS, "read"))
+
+
+def check(path: PathLike, **limits: Any) -> List[Diagnostic]:
+    """Every diagnostic of the file at ``path``, as sfcheck finds them.
+
+    Errors, warnings and notes, in the order found; an empty list is a valid
+    file. sfcheck also warns about an OUTPUT_FILE that would leave its folder
+    or is not an image: that is the tool's policy, not the library's, and
+    not here. OSError when the file cannot be read.
+    """
+    options = _options(limits, _READ_OPTIONS, "check")
+    name, data, refused = _read_bytes(path, options)
+    if any(d.severity == Severity.ERROR for d in refused):
+        return refused
+    return _diagnostics(_core.parse(data, name, None, options)[1])
+
+
+def validate(scene: Scene) -> List[Diagnostic]:
+    """Every rule of FORMATS.md on a scene built or edited in Python.
+
+    The diagnostics point at records (their lines, for a scene read from a
+    file); an error here is one write() and render() would refuse.
+    """
+    return _diagnostics(_core.validate(scene._to_data(), scene.source or ""))
+
+
+def _format_for(path: str, format: Optional[str]) -> str:
+    if format is not None:
+        return _format_name(format)  # type: ignore[return-value]
+    found = _core.format_by_extension(path)
+    if found is None:
+        names = ", ".join(row["name"] for row in _core.formats())
+        raise ValueError(f"cannot tell the format of {path!r} from its extension; "
+                         f"name it with format=: {names}")
+    return found
+
+
+def _umask() -> int:
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except OSError:
+        pass
+    return 0o022
+
+
+def _write_whole(files: Sequence[Tuple[str, bytes]]) -> None:
+    """Each file written beside its target and renamed: whole or not at all."""
+    temporaries: List[Tuple[str, str]] = []
+    try:
+        for path, data in files:
+            folder = os.path.dirname(os.path.abspath(path))
+            fd, temporary = tempfile.mkstemp(dir=folder, prefix=f".{os.path.basename(path)}.",
+                                             suffix=".tmp")
+            temporaries.append((temporary, path))
+            with os.fdopen(fd, "wb") as f:
+                os.fchmod(f.fileno(), 0o666 & ~_umask())
+                f.write(data)
+                f.flush()
+                os.fsync(f.fileno())
+        # In the order given: a .gltf's buffer before the file that names it.
+        for temporary, path in temporaries:
+            os.replace(temporary, path)
+    except BaseException:
+        for temporary, _ in temporaries:
+            try:
+                os.unlink(temporary)
+            except FileNotFoundError:
+                pass
+        raise
+
+
+def _converted(scene: Scene, path: str, format: str, options: Dict[str, Any]) -> Tuple[
+        bytes, bytes, str, List[Diagnostic]]:
+    """The bytes of the scene in ``format``, for ``path``, and the losses."""
+    source = scene.source or ""
+    problems = _diagnostics(_core.validate(scene._to_data(), source))
+    _raise_on_errors(problems)
+    core_options = dict(options)
+    core_options["generator"] = f"scenefile {__version__} (Python)"
+    if "output_file" not in core_options:
+        # As sfconvert: the image is named after the instruction file.
+        core_options["output_file"] = os.path.splitext(os.path.basename(path))[0] + ".ppm"
+    buffer = ""
+    if core_options.pop("external_buffers", False):
+        if format != "gltf":
+            raise ValueError("external_buffers needs a .gltf output (format 'gltf')")
+        buffer = os.path.splitext(os.path.basename(path))[0] + ".bin"
+        core_options["external_buffer"] = buffer
+    main, sidecar, diagnostics = _core.convert(scene._to_data(), format, core_options, source)
+    losses = _diagnostics(diagnostics)
+    if main is None:
+        raise SceneError(losses)
+    return main, sidecar, buffer, losses
+
+
+def write(scene: Scene, path: PathLike, format: Optional[str] = None, no_loss: bool = False,
+          **options: Any) -> List[Diagnostic]:
+    """Writes ``scene`` to ``path``; returns the losses.
+
+    The format follows the extension (.sf, .txt for an instruction file,
+    .gltf, .glb, .pov) unless ``format`` names one. What the format cannot
+    hold is reported as a warning in the list returned, or with ``no_loss``
+    raises SceneError and writes nothing. ``options`` are sfconvert's:
+    approximate, output_file, fov, width, height, tessellation,
+    external_buffers (a .gltf's buffer in NAME.bin beside it), flat, depth.
+    An invalid scene raises SceneError (validate() gives its warnings too).
+    The file is written whole or not at all.
+    """
+    checked = _options(dict(options, no_loss=no_loss), _WRITE_OPTIONS, "write")
+    target = os.fspath(path)
+    if not isinstance(target, str):
+        target = os.fsdecode(target)
+    fmt = _format_for(target, format)
+    main, sidecar, buffer, losses = _converted(scene, target, fmt, checked)
+    files = []
+    if buffer:
+        files.append((os.path.join(os.path.dirname(target), buffer), sidecar))
+    files.append((target, main))
+    _write_whole(files)
+    return losses
+
+
+def convert(src: PathLike, dst: PathLike, format: Optional[str] = None,
+            **options: Any) -> List[Diagnostic]:
+    """sfconvert SRC DST: reads any format, writes the one of ``dst``'s extension.
+
+    ``format`` names the output's format instead (sfconvert's --to);
+    ``options`` take read()'s limits and write()'s options, ``no_loss``
+    applying to both, and ``width`` and ``height`` also giving a POV-Ray
+    input's image size, as sfconvert takes them. Returns what reading noted
+    and what writing lost. Never writes over ``src`` (ValueError).
+    """
+    checked = _options(options, dict(_READ_OPTIONS, **_WRITE_OPTIONS), "convert")
+    read_options = {k: v for k, v in checked.items() if k in _READ_OPTIONS}
+    if "width" in checked and "height" in checked:
+        read_options["width"], read_options["height"] = checked["width"], checked["height"]
+    write_options = {k: v for k, v in checked.items() if k in _WRITE_OPTIONS}
+    target = os.fsdecode(os.fspath(dst))
+    if os.path.exists(target) and os.path.samefile(os.fspath(src), target):
+        raise ValueError(f"the output {target!r} is the input file; convert never writes over "
+                         "its input")
+    fmt = _format_for(target, format)
+    scene = _read(src, None, read_options)
+    losses = write(scene, target, fmt, **write_options)
+    return scene.diagnostics + losses
+
+
+def render(scene: Scene, width: int = 640, height: int = 480, spp: int = 1, depth: int = 5,
+           fov: Optional[float] = None, threads: int = 0, seed: int = 0) -> npt.NDArray[np.float32]:
+    """The image sfrender computes, as a float32 array of shape (height, width, 3).
+
+    Rows from the top, red, green, blue: the numbers sfrender writes before
+    it rounds them to an image's levels (``round(clamp(v, 0, 1) * 255)`` is
+    its 8-bit PNG or PPM). ``fov`` is the vertical field of view in degrees;
+    None takes the scene's own (a glTF or POV-Ray camera's), else 60.
+    ``threads`` 0 uses every core. The GIL is released while it renders, and
+    Ctrl+C (KeyboardInterrupt) stops it. An invalid scene raises SceneError,
+    a render that does not fit in free memory MemoryError.
+    """
+    settings = {"width": (width, 1, 32768), "height": (height, 1, 32768), "spp": (spp, 1, 65536),
+                "depth": (depth, 0, 1000), "threads": (threads, 0, 1024),
+                "seed": (seed, 0, (1 << 63) - 1)}
+    for name, (value, lowest, highest) in settings.items():
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+            raise TypeError(f"{name} must be a whole number, not {value!r}")
+        if not lowest <= value <= highest:
+            raise ValueError(f"{name} must lie between {lowest} and {highest}, not {value}")
+    if fov is None:
+        # As sfrender: the scene's own view, within what --fov takes.
+        fov = min(max(scene.view.fov, 0.001), 179.999) if scene.view is not None else 60.0
+    fov = float(fov)
+    if not 0.0 < fov < 180.0:
+        raise ValueError(f"fov must lie between 0 and 180 degrees, both excluded, not {fov}")
+    data = scene._to_data()
+    _raise_on_errors(_diagnostics(_core.validate(data, scene.source or "")))
+    return _core.render(data, int(width), int(height), int(spp), int(depth), fov, int(threads),
+                        int(seed))
+
+
+def default_scene() -> Scene:
+    """The scene sfrender draws when it is given none."""
+    return Scene._from_data(_core.default_scene())
+
+
+def decompose_transform(matrix: npt.ArrayLike) -> Tuple[List[TransformOp], bool]:
+    """The operations an instruction file writes for ``matrix`` (SCALE,
+    ROTATE_X, ROTATE_Y, ROTATE_Z, TRANSLATE, those that do nothing left out),
+    and whether they give it back exactly (False for a matrix with shear,
+    whose nearest rotation and scale they are)."""
+    ops, exact = _core.decompose_transform(np.asarray(matrix, dtype=np.float64))
+    return [TransformOp(kind, value) for kind, value in ops], bool(exact)
+
+
+class MeshFit:
+    """What fit_primitive recognised: ``kind`` (None when nothing fits), the
+    ``matrix`` that takes the unit primitive onto the mesh, the largest
+    deviation ``error`` (relative to the shape's size), and ``reason``,
+    which says why nothing fits."""
+
+    __slots__ = ("kind", "matrix", "error", "reason")
+
+    def __init__(self, kind: Optional[ObjectKind], matrix: Optional[Matrix],
+                 error: Optional[float], reason: str) -> None:
+        self.kind, self.matrix, self.error, self.reason = kind, matrix, error, reason
+
+    def __bool__(self) -> bool:
+        return self.kind is not None
+
+    def __repr__(self) -> str:
+        if self.kind is None:
+            return f"MeshFit(None, reason={self.reason!r})"
+        return f"MeshFit({self.kind.value}, error={self.error!r})"
+
+
+def fit_primitive(positions: npt.ArrayLike, triangles: npt.ArrayLike,
+                  tolerance: float = FIT_TOLERANCE) -> MeshFit:
+    """Recognises one of the four primitives in a triangle mesh.
+
+    ``positions`` is an (n, 3) array, ``triangles`` three vertex indices a
+    triangle (an (m, 3) array, or flat), counter-clockwise seen from
+    outside. The rules are the glTF reader's (docs/GLTF.md, "Other
+    programs' meshes"): a flat rectangle or disc is a PLANE facing its
+    winding's normal, then a box, a capped cylinder, a sphere.
+    """
+    indices = np.asarray(triangles)
+    if indices.size and (not np.issubdtype(indices.dtype, np.integer) or indices.min() < 0):
+        raise ValueError("the triangles must be vertex indices: whole numbers from 0")
+    if indices.size and indices.max() > np.iinfo(np.uint32).max:
+        raise ValueError("a vertex index is past 2^32")
+    kind, matrix, error, reason = _core.fit_primitive(
+        np.asarray(positions, dtype=np.float64).reshape(-1, 3),
+        indices.astype(np.uint32).reshape(-1), float(tolerance))
+    return MeshFit(None if kind is None else ObjectKind(kind), matrix, error, reason)
+
+
+def primitive_mesh(kind: Union[ObjectKind, str], segments: int = 32,
+                   plane_half_size: float = 1.0) -> Tuple[npt.NDArray[np.float32],
+                                                          npt.NDArray[np.float32],
+                                                          npt.NDArray[np.uint32]]:
+    """The triangle mesh that stands for ``kind`` (the one the glTF writer and
+    sfbuild draw), in the primitive's local space: positions (n, 3), unit
+    normals (n, 3) and triangles (m, 3), counter-clockwise seen from outside;
+    a PLANE is the square [-plane_half_size, plane_half_size]^2 of y = 0."""
+    name = _kind(kind, ObjectKind, "object kind").value
+    return _core.primitive_mesh(name, int(segments), float(plane_half_size))
+
+
+def formats() -> List[Dict[str, Any]]:
+    """The formats, in the registry's order: name, singular, extensions,
+    binary, and what each holds (materials, transform_lists, output_file,
+    view)."""
+    return _core.formats()

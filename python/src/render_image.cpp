@@ -1,0 +1,95 @@
+#include "python/src/render_image.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "renderer/render_memory.h"
+#include "renderer/render_scene.h"
+
+namespace scenefile_python {
+
+namespace {
+
+// How often the waiting thread lets Python look at its signals: Ctrl+C
+// stops a render within this and one row of pixels.
+constexpr std::chrono::milliseconds kSignalPoll{50};
+
+// The image's floats, handed to numpy without a copy: the array owns them.
+py::array_t<float> toArray(render::Image&& image) {
+  auto* rgb = new std::vector<float>(std::move(image.rgb));
+  py::capsule owner(rgb, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+  std::vector<py::ssize_t> shape = {image.height, image.width, 3};
+  return py::array_t<float>(shape, rgb->data(), owner);
+}
+
+// Runs `work` on a thread of its own and waits for it without the GIL,
+// taking the GIL every kSignalPoll to run Python's signal handlers; when one
+// raises, `cancel` is set and, once `work` is done, the exception goes on.
+template <typename Work>
+void runInterruptibly(Work&& work, render::CancelFlag& cancel) {
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    std::thread worker([&] {
+      work();
+      std::lock_guard<std::mutex> lock(mutex);
+      done = true;
+      finished.notify_one();
+    });
+    std::unique_lock<std::mutex> lock(mutex);
+    while (!finished.wait_for(lock, kSignalPoll, [&] { return done; })) {
+      if (interrupted) continue;
+      lock.unlock();
+      {
+        py::gil_scoped_acquire gil;
+        // Only the main thread runs handlers; elsewhere this returns 0.
+        if (PyErr_CheckSignals() != 0) interrupted = true;
+      }
+      if (interrupted) cancel.request();
+      lock.lock();
+    }
+    lock.unlock();
+    worker.join();
+  }
+  // The handler's exception is still set on this thread: raise it.
+  if (interrupted) throw py::error_already_set();
+}
+
+}  // namespace
+
+py::array_t<float> renderScene(const scene::Scene& scene, const render::RenderSettings& settings) {
+  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
+      scene.objects.size(), scene.lights.size(), settings.width, settings.height);
+  if (std::optional<std::string> refusal =
+          render::renderMemoryRefusal(estimate, render::readAvailableMemory())) {
+    PyErr_SetString(PyExc_MemoryError, refusal->c_str());
+    throw py::error_already_set();
+  }
+  render::CancelFlag cancel;
+  std::optional<render::Image> image;
+  std::exception_ptr failure;
+  runInterruptibly(
+      [&] {
+        try {
+          render::RenderScene compiled(scene);
+          image = render::renderImage(compiled, settings, nullptr, {}, &cancel);
+        } catch (...) {
+          failure = std::current_exception();
+        }
+      },
+      cancel);
+  // std::bad_alloc becomes MemoryError, std::system_error (threads that
+  // cannot start) RuntimeError.
+  if (failure) std::rethrow_exception(failure);
+  return toArray(std::move(*image));
+}
+
+}  // namespace scenefile_python
