@@ -346,13 +346,14 @@ def convert(src: PathLike, dst: PathLike, format: Optional[str] = None,
 
 
 def render(scene: Scene, width: int = 640, height: int = 480, spp: int = 1, depth: int = 5,
-           fov: Optional[float] = None, threads: int = 0, seed: int = 0) -> npt.NDArray[np.float32]:
+           fov: Optional[float] = 60.0, threads: int = 0, seed: int = 0) -> npt.NDArray[np.float32]:
     """The image sfrender computes, as a float32 array of shape (height, width, 3).
 
     Rows from the top, red, green, blue: the numbers sfrender writes before
     it rounds them to an image's levels (``round(clamp(v, 0, 1) * 255)`` is
-    its 8-bit PNG or PPM). ``fov`` is the vertical field of view in degrees;
-    None takes the scene's own (a glTF or POV-Ray camera's), else 60.
+    its 8-bit PNG or PPM). ``fov`` is the vertical field of view in degrees,
+    60 as the issue that made the module names it; None takes the scene's
+    own (a glTF or POV-Ray camera's), else 60, as sfrender without --fov.
     ``threads`` 0 uses every core. The GIL is released while it renders, and
     Ctrl+C (KeyboardInterrupt) stops it. An invalid scene raises SceneError,
     a render that does not fit in free memory MemoryError.

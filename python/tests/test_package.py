@@ -49,7 +49,8 @@ def test_the_interfaces_named_in_the_issue_keep_their_names():
     render = inspect.signature(scenefile.render).parameters
     assert list(render)[:7] == ["scene", "width", "height", "spp", "depth", "fov", "threads"]
     assert (render["width"].default, render["height"].default, render["spp"].default,
-            render["depth"].default, render["threads"].default) == (640, 480, 1, 5, 0)
+            render["depth"].default, render["fov"].default,
+            render["threads"].default) == (640, 480, 1, 5, 60, 0)
     assert issubclass(scenefile.SceneError, Exception)
     assert {k.value for k in scenefile.ObjectKind} == {"SPHERE", "CUBE", "CYLINDER", "PLANE"}
     diagnostic = scenefile.check(__file__)[0]

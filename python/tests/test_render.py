@@ -20,8 +20,8 @@ CASES = [
      {"spp": 4, "seed": 3}),
     (os.path.join(SOURCE, "bench", "scenes", "glass-mirror.txt"), ["--depth", "7", "--fov", "50"],
      {"depth": 7, "fov": 50.0}),
-    # A POV-Ray scene renders at its own field of view unless told otherwise.
-    (os.path.join(TESTDATA, "view", "wide-angle.pov"), [], {}),
+    # A POV-Ray scene at its own field of view: fov=None, as sfrender without --fov.
+    (os.path.join(TESTDATA, "view", "wide-angle.pov"), [], {"fov": None}),
 ]
 WIDTH, HEIGHT = 64, 48
 
