@@ -146,8 +146,12 @@ def loads(data: Union[str, bytes], name: str = "<string>", format: Optional[str]
         data = data.encode("utf-8", "surrogateescape")
     size_diagnostics = _diagnostics(_core.check_file_size(len(data), name, options))
     _raise_on_errors(size_diagnostics)
-    scene_data, diagnostics, detected = _core.parse(bytes(data), name, _format_name(format),
-                                                    options)
+    return _parse(bytes(data), name, format, options)
+
+
+def _parse(data: bytes, name: str, format: Optional[str], options: Dict[str, Any]) -> Scene:
+    """The scene in ``data``, named ``name``, or SceneError with every diagnostic."""
+    scene_data, diagnostics, detected = _core.parse(data, name, _format_name(format), options)
     found = _diagnostics(diagnostics)
     _raise_on_errors(found)
     assert scene_data is not None, "no scene, yet no error"
@@ -173,13 +177,7 @@ def _read_bytes(path: PathLike, options: Dict[str, Any]) -> Tuple[str, bytes, Li
 def _read(path: PathLike, format: Optional[str], options: Dict[str, Any]) -> Scene:
     name, data, refused = _read_bytes(path, options)
     _raise_on_errors(refused)
-    scene_data, diagnostics, detected = _core.parse(data, name, _format_name(format), options)
-    found = _diagnostics(diagnostics)
-    _raise_on_errors(found)
-    assert scene_data is not None, "no scene, yet no error"
-    scene = Scene._from_data(scene_data)
-    scene.source, scene.format, scene.diagnostics = name, detected, found
-    return scene
+    return _parse(data, name, format, options)
 
 
 def read(path: PathLike, format: Optional[str] = None, **limits: Any) -> Scene:
