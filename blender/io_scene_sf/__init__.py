@@ -30,6 +30,15 @@ def _scenefile(context):
     return _module.load(folder)
 
 
+def _scenefile_or_report(operator, context):
+    """The scenefile module, or None after telling the user why it cannot be loaded."""
+    try:
+        return _scenefile(context)
+    except ImportError as error:
+        operator.report({"ERROR"}, str(error))
+        return None
+
+
 def _report_diagnostics(operator, diagnostics):
     for d in diagnostics:
         level = {"error": "ERROR", "warning": "WARNING"}.get(d.severity.value, "INFO")
@@ -47,10 +56,8 @@ class ImportSceneFile(bpy.types.Operator, ImportHelper):
     filter_glob: StringProperty(default="*.sf;*.txt", options={"HIDDEN"})
 
     def execute(self, context):
-        try:
-            scenefile = _scenefile(context)
-        except ImportError as error:
-            self.report({"ERROR"}, str(error))
+        scenefile = _scenefile_or_report(self, context)
+        if scenefile is None:
             return {"CANCELLED"}
         from . import importer
         try:
@@ -101,10 +108,8 @@ class ExportSceneFile(bpy.types.Operator, ExportHelper):
         return changed
 
     def execute(self, context):
-        try:
-            scenefile = _scenefile(context)
-        except ImportError as error:
-            self.report({"ERROR"}, str(error))
+        scenefile = _scenefile_or_report(self, context)
+        if scenefile is None:
             return {"CANCELLED"}
         from . import exporter
         try:

@@ -6,6 +6,14 @@
 
 namespace tools {
 
+std::string countOf(std::size_t n, std::string_view word) {
+  return std::to_string(n) + " " + std::string(word) + (n == 1 ? "" : "s");
+}
+
+std::string sceneContents(const scene::Scene& scene) {
+  return countOf(scene.objects.size(), "object") + ", " + countOf(scene.lights.size(), "light");
+}
+
 ToolOutput::ToolOutput(std::string tool, const ToolStreams& streams, const CommonFlags& flags)
     : tool_(std::move(tool)),
       streams_(streams),

@@ -13,11 +13,18 @@
 #include <string>
 #include <string_view>
 
+#include "scenefile/scene.h"
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/tool_streams.h"
 
 namespace tools {
+
+// "1 file", "3 errors": a count and its word, plural but for one.
+std::string countOf(std::size_t n, std::string_view word);
+
+// What a scene holds, as the tools say it: "3 objects, 1 light".
+std::string sceneContents(const scene::Scene& scene);
 
 class ToolOutput {
  public:

@@ -38,10 +38,6 @@ std::string formatName(std::optional<scene::Format> detected) {
   return "unknown";
 }
 
-std::string count(std::size_t n, const char* word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
-
 // What the checks of all files add up to.
 struct Tally {
   std::size_t errors = 0;
@@ -127,8 +123,7 @@ void Checker::check(const std::string& file) {
   checkOutputFileFormat(result.scene, scene::Severity::Warning, result.diagnostics);
   if (detected) {
     output_.detail(printableText(shown) + ": " + formatName(detected) + ", " +
-                   count(result.scene.objects.size(), "object") + ", " +
-                   count(result.scene.lights.size(), "light"));
+                   sceneContents(result.scene));
   }
   SourceExcerpts sources;
   if (format_ == DiagnosticFormat::Text) sources.capture(shown, text, result.diagnostics);
@@ -151,10 +146,11 @@ int Checker::finish() {
       return toInt(ExitCode::IoError);
     }
   } else {
-    std::string summary = count(options_.files.size(), "file") + " checked, " +
-                          count(tally_.errors, "error") + ", " + count(tally_.warnings, "warning");
+    std::string summary = countOf(options_.files.size(), "file") + " checked, " +
+                          countOf(tally_.errors, "error") + ", " +
+                          countOf(tally_.warnings, "warning");
     if (tally_.unreadable)
-      summary += " (" + count(tally_.unreadable, "file") + " could not be read)";
+      summary += " (" + countOf(tally_.unreadable, "file") + " could not be read)";
     output_.info(summary);
   }
   if (tally_.unreadable) return toInt(ExitCode::IoError);

@@ -39,10 +39,6 @@ bool namesStandardOutput(const std::string& path) {
   return path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
 }
 
-std::string count(std::size_t n, const char* word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
-
 // A conversion's plan, worked out from the command line before anything is
 // read: the output format, and the buffer file a .gltf may get.
 struct Plan {
@@ -209,8 +205,7 @@ std::optional<scene::ReadResult> Converter::read(int& status) {
   }
   output_.detail("read " + printableText(shown) + " (" +
                  std::string(detected ? scene::formatInfo(*detected).singular : "a scene") + ", " +
-                 count(result.scene.objects.size(), "object") + ", " +
-                 count(result.scene.lights.size(), "light") + ")");
+                 sceneContents(result.scene) + ")");
   output_.step("reading");
   return result;
 }
@@ -242,9 +237,8 @@ scene::ConversionOptions Converter::conversionOptions() const {
 }
 
 int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene& scene) {
-  std::string what = std::string(scene::formatInfo(plan_.format).singular) + ", " +
-                     count(scene.objects.size(), "object") + ", " +
-                     count(scene.lights.size(), "light");
+  std::string what =
+      std::string(scene::formatInfo(plan_.format).singular) + ", " + sceneContents(scene);
   if (plan_.toStdout) {
     stage_.set("writing to standard output");
     output_.streams().out << converted.main;

@@ -158,9 +158,7 @@ std::optional<int> Renderer::readScene() {
   DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format), &sources)
       .print(result.diagnostics);
   if (!result.ok()) return toInt(ExitCode::InvalidInput);
-  output_.detail("read " + printableText(shown) + " (" +
-                 std::to_string(result.scene.objects.size()) + " objects, " +
-                 std::to_string(result.scene.lights.size()) + " lights)");
+  output_.detail("read " + printableText(shown) + " (" + sceneContents(result.scene) + ")");
   job_.scene = std::move(result.scene);
   return std::nullopt;
 }
