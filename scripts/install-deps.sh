@@ -19,6 +19,10 @@ packages=(
   doxygen help2man man-db bash-completion
   # make bench draws the plots of docs/PERFORMANCE.md with gnuplot.
   gnuplot-nox
+  # Optional, for the benchmarks only: bench/embree_trace traces sfrender's
+  # primary rays with Embree 3 ("Against Embree" in docs/PERFORMANCE.md);
+  # without it CMake leaves that target out and the rest builds as before.
+  libembree-dev
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).
   blender python3-numpy
   # The Python module (python/): pybind11 and Python's headers to build it,
