@@ -84,18 +84,6 @@ load() { cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo unknown; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# replace_section NAME FILE: FILE's text between NAME's markers in the doc.
-replace_section() {
-  if grep -q "^<!-- BEGIN $1" "$doc"; then
-    awk -v section="$2" -v name="$1" '
-      $0 ~ "^<!-- BEGIN " name { while ((getline line < section) > 0) print line; skip = 1; next }
-      $0 ~ "^<!-- END " name { skip = 0; next }
-      !skip { print }' "$doc" >"$work/doc.md"
-    cat "$work/doc.md" >"$doc"
-  else
-    { echo; cat "$2"; } >>"$doc"
-  fi
-}
 
 cpu=$(cpu_model)
 mem_total=$(memory_total)
