@@ -193,8 +193,8 @@ count=$(wc -w <<<"$scenes")
     echo "set title '$s'"
     echo "plot '$dat' using (strcol(1) eq '$s' && strcol(2) eq 'sfrender' ? \$4 : 1/0):5 with linespoints lw 2 pt 7 title 'sfrender --spp ${spps// /,}', \\"
     echo "  '' using (strcol(1) eq '$s' && strcol(2) eq 'sfrender-adaptive' ? \$4 : 1/0):5 with points pt 9 ps 1.5 title 'sfrender --adaptive', \\"
-    echo "  '' using (strcol(1) eq '$s' && strcol(2) eq 'povray' ? \$4 : 1/0):5 with points pt 5 ps 1.2 lc rgb 'black' title 'POV-Ray +A +AM +R', \\"
-    echo "  '' using (strcol(1) eq '$s' && strcol(2) eq 'povray' ? \$4 : 1/0):5:(substr(strcol(3), 2, strlen(strcol(3)))) with labels offset 0,-0.8 font ',7' notitle"
+    echo "  '' using (strcol(1) eq '$s' && strcol(2) eq 'povray' ? \$4 : 1/0):5 with points pt 5 ps 1.2 lc rgb 'black' title 'POV-Ray +A +AM +R (table)', \\"
+    echo "  '' using (strcol(1) eq '$s' && strcol(3) eq '+A0.3_+AM2_+R3' ? \$4 : 1/0):5:('+A0.3 +AM2 +R3') with labels offset 0,-0.9 font ',8' notitle"
   done
   echo "unset multiplot"
 } >"$work/plot.gp"

@@ -11,6 +11,9 @@
 //       render::renderObjectIds, the lit points whose shadow ray meets their
 //       own object, and the RMSE of the direct-lit image against the double
 //       one (channels clamped to [0, 1], as an image stores them).
+//   float_trace scene SCENE --only TRACER [--width W --height H]
+//       One pass of one tracer (double, float_fixed or float_bound) and
+//       nothing else, for an instruction count under callgrind.
 //   float_trace hard
 //       The same, untimed, on the hard scenes: the acne scene of
 //       docs/ACCURACY.md at each of its layouts (1e-6 to 1e6, and moved 1e6
@@ -161,6 +164,23 @@ void printAccuracy(const std::string& key, const Pass& pass, const Pass& referen
   std::printf("%s_rmse: %.8f\n", key.c_str(), rmse(pass.rgb, reference.rgb));
 }
 
+// One pass of one tracer and nothing else (no reference ids, no other
+// tracer): what an instruction count (callgrind, toggled on the pass) sees.
+int traceOnly(const std::string& path, render::RenderSettings settings, const std::string& only) {
+  std::optional<scene::Scene> loaded = bench::loadScene(path, "float_trace");
+  if (!loaded) return 1;
+  render::RenderScene scene(*loaded);
+  for (Variant v : kVariants) {
+    if (only != name(v)) continue;
+    Pass pass = trace(v, scene, settings, false);
+    std::printf("%s_seconds: %.6f\n%s_rays: %llu\n", name(v), pass.seconds, name(v),
+                static_cast<unsigned long long>(pass.primary + pass.shadow));
+    return 0;
+  }
+  std::fprintf(stderr, "float_trace: error: no tracer %s\n", only.c_str());
+  return 1;
+}
+
 int timeScene(const std::string& path, render::RenderSettings settings, int runs) {
   std::optional<scene::Scene> loaded = bench::loadScene(path, "float_trace");
   if (!loaded) return 1;
@@ -278,8 +298,11 @@ int main(int argc, char** argv) {
   sceneCmd->add_option("--width", settings.width)->check(CLI::Range(1, 1 << 15));
   sceneCmd->add_option("--height", settings.height)->check(CLI::Range(1, 1 << 15));
   sceneCmd->add_option("--runs", runs)->check(CLI::Range(1, 100));
+  std::string only;
+  sceneCmd->add_option("--only", only, "one pass of one tracer: double, float_fixed, float_bound");
   auto* hardCmd = app.add_subcommand("hard", "accuracy and acne on the hard scenes");
   CLI11_PARSE(app, argc, argv);
   if (*hardCmd) return hardScenes();
+  if (!only.empty()) return traceOnly(input, settings, only);
   return timeScene(input, settings, runs);
 }

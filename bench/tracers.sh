@@ -145,6 +145,21 @@ if has_part float; then
   log "float: floor-1000, $runs runs"
   "$bin/float_trace" scene "$f" --width "$width" --height "$height" --runs "$runs" \
     >"$work/float-floor.txt" || die "float_trace scene failed"
+  # Instructions of one pass of each tracer (callgrind, counting inside the
+  # pass only), at a quarter of the width and height: a figure the other
+  # work on a shared machine does not move.
+  : >"$work/float-instructions.txt"
+  if command -v valgrind >/dev/null 2>&1; then
+    for x in double float_fixed float_bound; do
+      log "float: instructions of $x"
+      valgrind --tool=callgrind --callgrind-out-file="$work/cg.$x" --toggle-collect='*traceDouble*' \
+        --toggle-collect='*traceFloat*' "$bin/float_trace" scene "$f" --only "$x" \
+        --width $((width / 4)) --height $((height / 4)) >"$work/cg-$x.txt" 2>"$work/cg-$x.log" ||
+        die "callgrind on float_trace failed: $(tail -n 3 "$work/cg-$x.log")"
+      echo "$x $(sed -n 's/.*Collected : \([0-9]*\).*/\1/p' "$work/cg-$x.log") $(value ${x}_rays "$work/cg-$x.txt")" \
+        >>"$work/float-instructions.txt"
+    done
+  fi
   log "float: the hard scenes"
   "$bin/float_trace" hard >"$work/float-hard.txt" || die "float_trace hard failed"
   load_end=$(load)
@@ -170,6 +185,7 @@ if has_part float; then
         print row
       }
     }' "$work/float-hard.txt" >"$work/float-hard.md"
+  ins_saving=""
   float_errors=$(awk -F': ' '/^float_(fixed|bound)_(ids_differing|drawn_dark|drawn_lit|self_shadowed): / { s += $2 } END { print s + 0 }' "$work/float-hard.txt")
   double_errors=$(awk -F': ' '/^double_(ids_differing|drawn_dark|drawn_lit): / { s += $2 } END { print s + 0 }' "$work/float-hard.txt")
   gain_fixed=$(awk -v a="$(value double_ns_per_ray "$t")" -v b="$(value float_fixed_ns_per_ray "$t")" 'BEGIN { printf "%.2f", a / b }')
@@ -211,8 +227,24 @@ if has_part float; then
         "$(fmt 5 "$(value ${x}_rmse "$t")") |"
     done
     echo
-    echo "Per ray, double takes ${gain_fixed}× the time of float with the fixed offset and" \
-      "${gain_bound}× that of float with the error bound."
+    echo "Per ray, double took ${gain_fixed}× the time of float with the fixed offset and" \
+      "${gain_bound}× that of float with the error bound (wall time on a shared machine: a few" \
+      "percent either way is noise)."
+    if [[ -s $work/float-instructions.txt ]]; then
+      echo
+      echo "Instructions, which other work does not move: one pass of each tracer alone at" \
+        "$((width / 4))x$((height / 4)) (\`float_trace scene --only\`), counted by \`valgrind" \
+        "--tool=callgrind\` inside the pass only:"
+      echo
+      echo "| tracer | instructions | per ray | against double |"
+      echo "|---|---|---|---|"
+      base=$(awk '$1 == "double" { print $2 }' "$work/float-instructions.txt")
+      while read -r x ins rays; do
+        echo "| ${x/_/, } | $(thousands "$ins") | $(fmt 0 "$(awk -v i="$ins" -v r="$rays" 'BEGIN { print i / r }')") |" \
+          "$(fmt 3 "$(awk -v i="$ins" -v b="$base" 'BEGIN { print i / b }')") |"
+      done <"$work/float-instructions.txt"
+      ins_saving=$(awk '$1 == "double" { b = $2 } $1 != "double" { if (!m || $2 < m) m = $2 } END { printf "%.0f%%", (1 - m / b) * 100 }' "$work/float-instructions.txt")
+    fi
     echo
     echo "### Accuracy: the hard scenes, 160x120"
     echo
@@ -235,7 +267,8 @@ if has_part float; then
     if [[ $float_errors -gt 0 && $double_errors -eq 0 ]]; then
       echo "**Double stays the default.** Float saves $(awk -v g="$gain_fixed" -v h="$gain_bound" \
         'BEGIN { a = (1 - 1 / g) * 100; b = (1 - 1 / h) * 100; printf "%.0f%% to %.0f%%", (a < b ? a : b), (a < b ? b : a) }')" \
-        "of the time per ray on the floor scene (a negative figure: it costs more), where its" \
+        "of the time per ray on the floor scene (a negative figure: it costs more)${ins_saving:+, and at" \
+        "most $ins_saving of the instructions}, where its" \
         "object ids are $(value float_fixed_ids_differing "$t") and $(value float_bound_ids_differing "$t")" \
         "pixels off. On the hard scenes, summed over them, the two float tracers get $float_errors" \
         "object ids, self-intersections, acne pixels and light leaks wrong, where double gets" \
