@@ -264,11 +264,12 @@ if has_part float; then
     echo
     echo "### The decision"
     echo
+    ins_phrase=""
+    [[ -n $ins_saving ]] && ins_phrase=" and at most $ins_saving of the instructions"
     if [[ $float_errors -gt 0 && $double_errors -eq 0 ]]; then
       echo "**Double stays the default.** Float saves $(awk -v g="$gain_fixed" -v h="$gain_bound" \
         'BEGIN { a = (1 - 1 / g) * 100; b = (1 - 1 / h) * 100; printf "%.0f%% to %.0f%%", (a < b ? a : b), (a < b ? b : a) }')" \
-        "of the time per ray on the floor scene (a negative figure: it costs more)${ins_saving:+, and at" \
-        "most $ins_saving of the instructions}, where its" \
+        "of the time per ray on the floor scene (a negative figure: it costs more)${ins_phrase}, where its" \
         "object ids are $(value float_fixed_ids_differing "$t") and $(value float_bound_ids_differing "$t")" \
         "pixels off. On the hard scenes, summed over them, the two float tracers get $float_errors" \
         "object ids, self-intersections, acne pixels and light leaks wrong, where double gets" \

@@ -39,7 +39,8 @@ packages=(
   libglfw3-dev libepoxy-dev libgl1-mesa-dri xvfb xauth xdotool x11-apps netpbm
   # The hostile-input tests measure sfcheck's peak memory with GNU time.
   time
-  # make test-valgrind runs the tools' end-to-end tests under valgrind.
+  # make test-valgrind runs the tools' end-to-end tests under valgrind;
+  # bench/tracers.sh counts instructions with its callgrind.
   valgrind
   # make fuzz builds the libFuzzer targets with clang and its runtime.
   clang libclang-rt-14-dev
