@@ -185,8 +185,12 @@ std::uint32_t planTop(const BuildInput& in, std::uint32_t largest, std::vector<S
 void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int threads) {
   std::vector<std::uint32_t> order(subtrees.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return subtrees[a].end - subtrees[a].begin > subtrees[b].end - subtrees[b].begin;
+  // Largest first, ties by place: std::sort, which needs no buffer of its
+  // own (Bvh::bytesFor).
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    std::uint32_t sizeA = subtrees[a].end - subtrees[a].begin;
+    std::uint32_t sizeB = subtrees[b].end - subtrees[b].begin;
+    return sizeA != sizeB ? sizeA > sizeB : a < b;
   });
   std::atomic<std::size_t> next{0};
   auto work = [&] {
@@ -196,6 +200,7 @@ void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int thr
     }
   };
   std::vector<std::thread> helpers;
+  helpers.reserve(static_cast<std::size_t>(threads) - 1);
   for (int t = 1; t < threads; ++t) {
     try {
       helpers.emplace_back(work);
@@ -248,12 +253,15 @@ std::uint32_t closeGaps(std::vector<BvhNode>& nodes, const std::vector<Subtree>&
 std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
   // The vectors of the constructor below, each sized or reserved once. With
   // more than one thread the build also holds its list of subtrees, with the
-  // order it builds them in and closeGaps's two lists: at most
-  // kMaxSubtrees, and only for kMinParallelBoxes boxes or more, so a share
-  // of a few bytes a box covers them.
+  // order it builds them in and closeGaps's two lists (at most
+  // kMaxSubtrees each) and its threads (at most kMaxBuildThreads), and only
+  // for kMinParallelBoxes boxes or more, so a share of a few bytes a box
+  // covers them.
   constexpr std::uint64_t kSubtreeBytes = sizeof(Subtree) + 3 * sizeof(std::uint32_t);
+  constexpr std::uint64_t kParallelBytes =
+      kMaxSubtrees * kSubtreeBytes + kMaxBuildThreads * sizeof(std::thread);
   constexpr std::uint64_t kSubtreeShare =
-      (kMaxSubtrees * kSubtreeBytes + kMinParallelBoxes - 1) / kMinParallelBoxes;
+      (kParallelBytes + kMinParallelBoxes - 1) / kMinParallelBoxes;
   std::uint64_t perBox =
       kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(glm::dvec3) + kSubtreeShare;
   return saturatingProduct(boxes, perBox);
