@@ -16,6 +16,10 @@
 //       RMSE and PSNR of A against B (B the reference), through OpenImageIO's
 //       ImageBufAlgo::compare, on the images' values in [0, 1]. Prints rmse,
 //       psnr_db, max_error.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,20 +28,18 @@
 #include <sstream>
 #include <string>
 
-#include <CLI/CLI.hpp>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include "libscene/formats/instruction/instruction_writer.h"
-#include "scenefile/read.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "scenefile/read.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 long peakRssBytes() {
   std::ifstream status("/proc/self/status");
@@ -66,7 +68,7 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
     return 1;
   }
   t0 = Clock::now();
-  render::RenderScene compiled(result.scene);
+  render::RenderScene compiled(result.scene, settings.threads);
   const double build = since(t0);
   render::RenderStatistics stats;
   t0 = Clock::now();

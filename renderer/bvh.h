@@ -37,14 +37,24 @@ class Bvh {
   /// whose leaves hold at least one box each has at most 2n - 1 nodes.
   static constexpr std::uint64_t kNodesPerBox = 2;
 
+  /// The most threads a build starts, whatever it is asked for: enough
+  /// for any machine this runs on, and what bounds the build's task list.
+  static constexpr int kMaxBuildThreads = 64;
+  /// Subtrees a build hands out to its threads: about this many per thread,
+  /// so that a thread finishing early picks up another.
+  static constexpr std::uint32_t kTasksPerThread = 8;
+
   Bvh() = default;
-  // Builds over the boxes; items are indices into `boxes`.
-  explicit Bvh(const std::vector<Bounds>& boxes);
+  /// Builds over the boxes; items are indices into `boxes`. `threads`
+  /// threads share the build (0: the hardware's count); the tree is the
+  /// same, node for node and item for item, whatever their number.
+  explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
 
   /// The most bytes the build over `boxes` boxes holds at once: the nodes
-  /// as reserved (kNodesPerBox), the items, and the centres it splits by,
-  /// which it frees when done. The boxes themselves are the caller's.
-  /// Saturates: a hostile count gives UINT64_MAX, never a wrapped figure.
+  /// as reserved (kNodesPerBox), the items, the centres it splits by, which
+  /// it frees when done, and its list of subtrees for the threads. The
+  /// boxes themselves are the caller's. Saturates: a hostile count gives
+  /// UINT64_MAX, never a wrapped figure.
   static std::uint64_t bytesFor(std::uint64_t boxes);
 
   bool empty() const { return nodes_.empty(); }
@@ -199,9 +209,6 @@ class Bvh {
            (hitsNode(b, r, tMax, tEntries[1]) ? 2 : 0);
 #endif
   }
-
-  std::uint32_t build(const std::vector<Bounds>& boxes, std::vector<glm::dvec3>& centres,
-                      std::uint32_t begin, std::uint32_t end, int depth);
 
   std::vector<BvhNode> nodes_;
   std::vector<std::uint32_t> items_;

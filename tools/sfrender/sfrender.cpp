@@ -320,7 +320,7 @@ int Renderer::run() {
   // and its threads start.
   if (std::optional<int> refused = resourceRefusal()) return *refused;
   stage_.set("preparing the scene");
-  render::RenderScene compiled(job_.scene);
+  render::RenderScene compiled(job_.scene, renderThreadCount(settings_.threads));
   output_.step("preparing the scene");
   render::RenderStatistics statistics;
   render::ProgressCallback progress;
