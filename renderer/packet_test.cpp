@@ -2,6 +2,8 @@
 // each ray finds alone, bit for bit, and images do not change with them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <random>
@@ -118,6 +120,46 @@ TEST(Packets, CoherentRaysFindTheirOwnClosestHits) {
     }
   }
   // The rays meet objects, most of them, so that hits are compared.
+  EXPECT_GT(hits, total / 4);
+}
+
+TEST(Packets, RaysAtObjectsOfEveryScaleFindTheirOwnClosestHits) {
+  Random random(47);
+  int hits = 0;
+  int total = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    // Scales from 1e-4 to 1e4 and origins up to 1e8 (as the single-ray
+    // tests of render_scene_test.cpp), a packet aimed at each object.
+    scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+    int count = 1 + random.below(60);
+    double base = random.uniform(-4, 4);
+    for (int i = 0; i < count; ++i) {
+      auto factor = [&] {
+        return std::pow(10.0, std::clamp(base + random.uniform(-1, 1), -4.0, 4.0));
+      };
+      glm::dvec3 at = random.point(std::pow(10.0, random.uniform(0, 8)));
+      ObjectKind kind = std::array{ObjectKind::Sphere, ObjectKind::Cube, ObjectKind::Cylinder,
+                                   ObjectKind::Plane}[random.below(4)];
+      s.objects.push_back(
+          object(kind, {scale(factor(), factor(), factor()), rotateX(random.uniform(-3.2, 3.2)),
+                        rotateY(random.uniform(-3.2, 3.2)), rotateZ(random.uniform(-3.2, 3.2)),
+                        translate(at.x, at.y, at.z)}));
+    }
+    RenderScene compiled(s);
+    for (const scene::Object& target : s.objects) {
+      glm::dvec3 centre(target.matrix[3]);
+      double size = glm::length(glm::dvec3(target.matrix[0]));
+      glm::dvec3 origin = centre - size * 10.0 * random.direction();
+      std::vector<Ray> rays;
+      for (int k = 0; k < 4; ++k) {
+        glm::dvec3 aim = centre + size * random.uniform(0, 1.5) * random.direction();
+        rays.push_back(Ray{origin, aim - origin});
+      }
+      std::vector<RaySource> sources(rays.size());
+      hits += expectSameHits(compiled, rays, sources, "trial " + std::to_string(trial));
+      total += 4;
+    }
+  }
   EXPECT_GT(hits, total / 4);
 }
 
