@@ -1,14 +1,18 @@
 // render_probe: the measurements bench/render_suite.sh needs that sfrender
 // does not print, taken with the same libraries sfrender uses.
 //
-//   render_probe time SCENE [--width W --height H --spp S --depth D --threads T]
+//   render_probe time SCENE [--width W --height H --spp S --depth D --threads T
+//                            --packets 0|1]
 //       Reads SCENE (any format sfrender reads), then times apart, on one
 //       process: parsing (scene::parseScene on the file in memory), building
 //       the render scene and its BVH (render::RenderScene construction), and
 //       rendering (render::renderImage). Prints "key: value" lines:
 //       file_bytes, objects, parse_s, build_s, render_s, primary_rays,
 //       total_rays, ns_per_primary_ray (render wall time over primary rays,
-//       times the threads: CPU time per ray), peak_rss_bytes.
+//       times the threads: CPU time per ray), peak_rss_bytes, and rgb_fnv1a
+//       (a hash of the image's floats, to see that two renders agree bit
+//       for bit). --packets 0 finds camera rays' hits one by one
+//       (RenderSettings::packets), for comparing the two.
 //   render_probe default-scene OUT.txt
 //       Writes render::defaultScene() (the scene sfrender draws with no
 //       input) as an instruction file, materials included.
@@ -22,7 +26,9 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -86,6 +92,15 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
   std::printf("ns_per_primary_ray: %.3f\n",
               stats.rays.primary ? renderSeconds * threads * 1e9 / stats.rays.primary : 0.0);
   std::printf("peak_rss_bytes: %ld\n", peakRssBytes());
+  std::uint64_t hash = 0xCBF29CE484222325ull;
+  for (float v : image.rgb) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    for (int byte = 0; byte < 4; ++byte) {
+      hash = (hash ^ ((bits >> (8 * byte)) & 0xFFu)) * 0x100000001B3ull;
+    }
+  }
+  std::printf("rgb_fnv1a: %016llx\n", static_cast<unsigned long long>(hash));
   return image.rgb.empty() ? 1 : 0;
 }
 
@@ -134,6 +149,7 @@ int main(int argc, char** argv) {
   timeCmd->add_option("--spp", settings.samplesPerPixel);
   timeCmd->add_option("--depth", settings.maxDepth);
   timeCmd->add_option("--threads", settings.threads);
+  timeCmd->add_option("--packets", settings.packets);
   auto* defaultCmd = app.add_subcommand("default-scene", "write the default scene");
   defaultCmd->add_option("output", output)->required();
   auto* compareCmd = app.add_subcommand("compare", "RMSE and PSNR of A against B");

@@ -32,6 +32,8 @@ struct BvhNode {
 class Bvh {
  public:
   static constexpr int kStackSize = 128;
+  /// The most rays traversePacket walks together.
+  static constexpr int kPacketSize = 4;
   /// Nodes the build reserves for each box, so that the node array never
   /// grows (and never holds twice its size while it moves): a binary tree
   /// whose leaves hold at least one box each has at most 2n - 1 nodes.
@@ -121,6 +123,16 @@ class Bvh {
       }
     }
   }
+
+  // traverse for up to kPacketSize rays at once (defined in
+  // renderer/bvh_packet.h): visit(lane, item) is called for exactly the
+  // items, in exactly the order, that traverse(rays[lane], tMax[lane], ...)
+  // would visit, with the same tMax before each, so that every ray ends
+  // with the same hit; it returns that ray's new tMax, or a negative value
+  // to stop that ray. Rays whose direction signs differ on an axis are
+  // traversed one by one.
+  template <typename Visit>
+  void traversePacket(const BoxRay* rays, int count, const double* tMax, Visit&& visit) const;
 
  private:
   // The ray as the node test wants it, worked out once per ray: per axis,

@@ -61,8 +61,7 @@ void forEachTile(int width, int height, int threads, PerTile&& perTile,
       for (int tile = next++; tile < total; tile = next++) {
         int x0 = (tile % tilesX) * kTileSize;
         int y0 = (tile / tilesX) * kTileSize;
-        perTile(worker, x0, y0, std::min(x0 + kTileSize, width),
-                std::min(y0 + kTileSize, height));
+        perTile(worker, x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height));
         int finished = ++done;
         if (progress) {
           std::lock_guard<std::mutex> lock(progressMutex);
@@ -116,6 +115,59 @@ bool oneLevel(const glm::dvec3& v, double slack, double levels) {
 int threadCount(int requested) {
   if (requested > 0) return requested;
   return std::max(1u, std::thread::hardware_concurrency());
+}
+
+// A sample's colour, the bound on what adaptive depth control left out of
+// it (TraceContext::slack), and whether its camera ray met an object.
+struct SampleColour {
+  glm::dvec3 colour{0.0};
+  double slack = 0.0;
+  bool hit = false;
+};
+
+// What every sample of a render is traced with.
+struct SampleTracing {
+  const RenderScene& scene;
+  const Tracer& tracer;
+  const PinholeCamera& camera;
+  // The media the camera starts in, and the sample's copy of them.
+  const MediumStack& eyeMedia;
+  MediumStack& media;
+  TraceContext& context;
+  std::uint64_t allowance;
+  bool packets;
+};
+
+// Traces the camera rays through the `count` image positions `at`, each a
+// sample of its own (its allowance, slack and media afresh), to within
+// `tolerance`, into out[0, count). With packets, the closest hits of each
+// Bvh::kPacketSize consecutive rays are found together
+// (RenderScene::closestHits), and each sample is shaded from its hit: the
+// same colours as tracing each alone, bit for bit.
+void traceSamples(const SampleTracing& with, const glm::dvec2* at, int count, double tolerance,
+                  SampleColour* out) {
+  constexpr int kPacket = Bvh::kPacketSize;
+  TraceContext& context = with.context;
+  for (int first = 0; first < count; first += kPacket) {
+    int n = std::min(kPacket, count - first);
+    Ray rays[kPacket];
+    for (int k = 0; k < n; ++k) rays[k] = with.camera.rayThrough(at[first + k].x, at[first + k].y);
+    std::optional<Hit> hits[kPacket];
+    if (with.packets) {
+      const RaySource fromCamera[kPacket] = {};
+      with.scene.closestHits(rays, fromCamera, n, hits);
+    }
+    for (int k = 0; k < n; ++k) {
+      if (with.scene.hasTransparency()) with.media = with.eyeMedia;
+      ++context.counts.primary;
+      context.allowance = with.allowance;
+      context.slack = 0.0;
+      glm::dvec3 colour =
+          with.packets ? with.tracer.traceFromHit(rays[k], hits[k], with.media, context, tolerance)
+                       : with.tracer.trace(rays[k], RaySource{}, 0, with.media, context, tolerance);
+      out[first + k] = SampleColour{colour, context.slack, context.primaryHit};
+    }
+  }
 }
 
 }  // namespace
@@ -198,6 +250,17 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
         // changes it), as the copy cost as much as a tenth of a primary ray.
         MediumStack media = eyeMedia;
         TraceContext& context = contexts[worker];
+        SampleTracing with{scene, tracer,  camera,    eyeMedia,
+                           media, context, allowance, settings.packets};
+        glm::dvec2 at[kTileSize];
+        SampleColour samples[kTileSize];
+        // Dividing by 1 is exact: skipped, for one division less a pixel.
+        auto mean = [&](glm::dvec3& sum, double& slack) {
+          if (spp > 1) {
+            sum /= static_cast<double>(spp);
+            slack /= static_cast<double>(spp);
+          }
+        };
         // The mean of a pixel's samples, traced to within `allowed`, in
         // `slack` the bound on what adaptive depth control left out of it,
         // and in `hits` how many of its camera rays met an object.
@@ -205,31 +268,47 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
           glm::dvec3 sum(0.0);
           slack = 0.0;
           hits = 0;
-          for (int s = 0; s < spp; ++s) {
-            glm::dvec2 at = samplePosition(i, j, s, spp, settings.seed);
-            if (scene.hasTransparency()) media = eyeMedia;
-            ++context.counts.primary;
-            context.allowance = allowance;
-            context.slack = 0.0;
-            sum += tracer.trace(camera.rayThrough(at.x, at.y), RaySource{}, 0, media, context,
-                                allowed);
-            slack += context.slack;
-            hits += context.primaryHit ? 1 : 0;
+          for (int first = 0; first < spp; first += kTileSize) {
+            int n = std::min(kTileSize, spp - first);
+            for (int s = 0; s < n; ++s) at[s] = samplePosition(i, j, first + s, spp, settings.seed);
+            traceSamples(with, at, n, allowed, samples);
+            for (int s = 0; s < n; ++s) {
+              sum += samples[s].colour;
+              slack += samples[s].slack;
+              hits += samples[s].hit ? 1 : 0;
+            }
           }
-          // Dividing by 1 is exact: skipped, for one division less a pixel.
-          if (spp > 1) {
-            sum /= static_cast<double>(spp);
-            slack /= static_cast<double>(spp);
-          }
+          mean(sum, slack);
           return sum;
         };
+        glm::dvec3 rowSums[kTileSize];
+        double rowSlacks[kTileSize];
+        int rowHits[kTileSize];
         for (int j = y0; j < y1; ++j) {
           // forEachTile stops handing out tiles at the first exception.
           if (cancel && cancel->requested()) throw RenderCancelled();
+          // Sample s of the row's pixels side by side: neighbouring camera
+          // rays, coherent enough to be traced as packets.
+          int n = x1 - x0;
+          for (int k = 0; k < n; ++k) {
+            rowSums[k] = glm::dvec3(0.0);
+            rowSlacks[k] = 0.0;
+            rowHits[k] = 0;
+          }
+          for (int s = 0; s < spp; ++s) {
+            for (int k = 0; k < n; ++k) at[k] = samplePosition(x0 + k, j, s, spp, settings.seed);
+            traceSamples(with, at, n, tolerance, samples);
+            for (int k = 0; k < n; ++k) {
+              rowSums[k] += samples[k].colour;
+              rowSlacks[k] += samples[k].slack;
+              rowHits[k] += samples[k].hit ? 1 : 0;
+            }
+          }
           for (int i = x0; i < x1; ++i) {
-            double slack = 0.0;
-            int hits = 0;
-            glm::dvec3 sum = tracePixel(i, j, tolerance, slack, hits);
+            glm::dvec3 sum = rowSums[i - x0];
+            double slack = rowSlacks[i - x0];
+            int hits = rowHits[i - x0];
+            mean(sum, slack);
             // The full colour lies in [sum, sum + slack]: where that range
             // holds two 8-bit levels, the pixel is traced again with a 64th
             // of the tolerance, then in full, until the range holds one

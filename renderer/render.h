@@ -39,6 +39,10 @@ struct RenderSettings {
   double levels = 255.0;
   // Whether the image gets Image::coverage, for an image with alpha.
   bool coverage = false;
+  // Whether camera rays find their hits as packets (RenderScene::closestHits,
+  // docs/RENDERING.md, "Packets"): the same image, bit for bit, either way;
+  // false traces each alone, for the tests and benchmarks that compare.
+  bool packets = true;
   int threads = 0;  // 0: every core
   std::uint64_t seed = 0;
 };

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
 #include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
@@ -167,6 +168,44 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
   });
   if (best == RaySource::kNone) return std::nullopt;
   return finishHit(best, ray, bestCandidate);
+}
+
+void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int count,
+                              std::optional<Hit>* out, double tMax) const {
+  constexpr int kPacket = Bvh::kPacketSize;
+  for (int first = 0; first < count; first += kPacket) {
+    int n = std::min(kPacket, count - first);
+    const Ray* ray = rays + first;
+    const RaySource* source = sources + first;
+    std::uint32_t best[kPacket];
+    Candidate bestCandidate[kPacket];
+    BoxRay boxRays[kPacket];
+    double tMaxes[kPacket];
+    // Per ray, as closestHit: the planes first, then the hierarchy.
+    auto consider = [&](int lane, std::uint32_t index) {
+      if (auto c = intersectObject(index, ray[lane], source[lane], bestCandidate[lane].t)) {
+        best[lane] = index;
+        bestCandidate[lane] = *c;
+      }
+    };
+    for (int lane = 0; lane < n; ++lane) {
+      best[lane] = RaySource::kNone;
+      bestCandidate[lane] = Candidate{tMax, false, SpanFace::None};
+      for (std::uint32_t plane : planes_) consider(lane, plane);
+      boxRays[lane] = BoxRay{ray[lane].origin, 1.0 / ray[lane].direction};
+      tMaxes[lane] = bestCandidate[lane].t;
+    }
+    bvh_.traversePacket(boxRays, n, tMaxes, [&](int lane, std::uint32_t item) {
+      consider(lane, bounded_[item]);
+      return bestCandidate[lane].t;
+    });
+    for (int lane = 0; lane < n; ++lane) {
+      out[first + lane] =
+          best[lane] == RaySource::kNone
+              ? std::nullopt
+              : std::optional<Hit>(finishHit(best[lane], ray[lane], bestCandidate[lane]));
+    }
+  }
 }
 
 std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySource& source,

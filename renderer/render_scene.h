@@ -96,6 +96,12 @@ class RenderScene {
   // The nearest surface with 0 < t < tMax.
   std::optional<Hit> closestHit(const Ray& ray, const RaySource& source,
                                 double tMax = std::numeric_limits<double>::infinity()) const;
+  // closestHit for each of `count` rays (out[k] for rays[k], sources[k]),
+  // found as packets of Bvh::kPacketSize rays walked down the hierarchy
+  // together (Bvh::traversePacket): the same hits, bit for bit, at less cost
+  // where the rays are coherent (a row of camera rays).
+  void closestHits(const Ray* rays, const RaySource* sources, int count, std::optional<Hit>* out,
+                   double tMax = std::numeric_limits<double>::infinity()) const;
   // Whether any surface lies at 0 < t < tMax (shadow rays: transparent
   // objects cast shadows too). `lastOccluder`, when given, is a hint kept by
   // the caller: the object tested first (neighbouring shadow rays toward one

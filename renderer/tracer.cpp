@@ -157,7 +157,12 @@ template <bool kRefraction>
 glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce,
                              MediumStack& media, TraceContext& context, double tolerance) const {
   if (bounce > maxDepth_) return glm::dvec3(0.0);
-  std::optional<Hit> found = scene_.closestHit(ray, source);
+  return shade<kRefraction>(ray, scene_.closestHit(ray, source), bounce, media, context, tolerance);
+}
+
+template <bool kRefraction>
+glm::dvec3 Tracer::shade(const Ray& ray, const std::optional<Hit>& found, int bounce,
+                         MediumStack& media, TraceContext& context, double tolerance) const {
   if (bounce == 0) context.primaryHit = found.has_value();
   if (!found) return glm::dvec3(0.0);
   const Hit& hit = *found;
@@ -274,6 +279,10 @@ glm::dvec3 Tracer::reflectAndRefract(const Hit& hit, const glm::dvec3& d, const 
   return refracted;
 }
 
+template glm::dvec3 Tracer::shade<true>(const Ray&, const std::optional<Hit>&, int, MediumStack&,
+                                        TraceContext&, double) const;
+template glm::dvec3 Tracer::shade<false>(const Ray&, const std::optional<Hit>&, int, MediumStack&,
+                                         TraceContext&, double) const;
 template glm::dvec3 Tracer::traceWith<true>(const Ray&, const RaySource&, int, MediumStack&,
                                             TraceContext&, double) const;
 template glm::dvec3 Tracer::traceWith<false>(const Ray&, const RaySource&, int, MediumStack&,
