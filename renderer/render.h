@@ -64,7 +64,7 @@ struct RenderSettings {
   // adaptiveFirstLevel of them, then, where those still disagree,
   // samplesPerPixel.
   double adaptiveThreshold = 0.0;
-  int adaptiveFirstLevel = 4;  // 0 or 1: straight to samplesPerPixel
+  int adaptiveFirstLevel = 0;  // 0 or 1: straight to samplesPerPixel
   // The part of the width x height image to render; empty: all of it. Its
   // pixels are exactly those of the full image's render (a region reaching
   // outside the image is cut to it).
