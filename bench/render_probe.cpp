@@ -24,6 +24,10 @@
 //       seconds, mean samples a pixel and RMSE against the reference (values
 //       clamped to [0, 1], as the image stores them). docs/RENDERING.md,
 //       "Adaptive sampling", holds the figures.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,20 +37,18 @@
 #include <sstream>
 #include <string>
 
-#include <CLI/CLI.hpp>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include "libscene/formats/instruction/instruction_writer.h"
-#include "scenefile/read.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "scenefile/read.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 long peakRssBytes() {
   std::ifstream status("/proc/self/status");
@@ -158,8 +160,8 @@ int adaptiveSweep(const std::string& path, render::RenderSettings settings, int 
   reference.samplesPerPixel = referenceSpp;
   reference.seed = 12345;  // samples apart from those measured
   render::Image truth = render::renderImage(compiled, reference);
-  std::printf("%-9s %4s %5s %6s %9s %9s %10s %9s\n", "mode", "spp", "first", "thresh",
-              "cpu_s", "samples", "rmse", "refined%");
+  std::printf("%-9s %4s %5s %6s %9s %9s %10s %9s\n", "mode", "spp", "first", "thresh", "cpu_s",
+              "samples", "rmse", "refined%");
   auto run = [&](int spp, double threshold, int firstLevel) {
     render::RenderSettings s = settings;
     s.samplesPerPixel = spp;
