@@ -163,7 +163,10 @@ glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce
 template <bool kRefraction>
 glm::dvec3 Tracer::shade(const Ray& ray, const std::optional<Hit>& found, int bounce,
                          MediumStack& media, TraceContext& context, double tolerance) const {
-  if (bounce == 0) context.primaryHit = found.has_value();
+  if (bounce == 0) {
+    context.primaryHit = found.has_value();
+    context.primaryObject = found ? found->object : RaySource::kNone;
+  }
   if (!found) return glm::dvec3(0.0);
   const Hit& hit = *found;
   const scene::Material& m = scene_.material(hit.object);
