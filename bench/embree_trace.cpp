@@ -83,16 +83,6 @@ struct TraceContext {
   double* nearest = nullptr;
 };
 
-float down(double v) {
-  float f = static_cast<float>(v);
-  return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity())
-                                    : f;
-}
-float up(double v) {
-  float f = static_cast<float>(v);
-  return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
 void boundsOf(const RTCBoundsFunctionArguments* args) {
   const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
   const render::Bounds& b = g->bounds[args->primID];
@@ -101,12 +91,12 @@ void boundsOf(const RTCBoundsFunctionArguments* args) {
   glm::dvec3 pad =
       (glm::abs(b.lo) + glm::abs(b.hi)) * (4.0 * std::numeric_limits<float>::epsilon());
   RTCBounds* out = args->bounds_o;
-  out->lower_x = down(b.lo.x - pad.x);
-  out->lower_y = down(b.lo.y - pad.y);
-  out->lower_z = down(b.lo.z - pad.z);
-  out->upper_x = up(b.hi.x + pad.x);
-  out->upper_y = up(b.hi.y + pad.y);
-  out->upper_z = up(b.hi.z + pad.z);
+  out->lower_x = render::floatAtOrBelow(b.lo.x - pad.x);
+  out->lower_y = render::floatAtOrBelow(b.lo.y - pad.y);
+  out->lower_z = render::floatAtOrBelow(b.lo.z - pad.z);
+  out->upper_x = render::floatAtOrAbove(b.hi.x + pad.x);
+  out->upper_y = render::floatAtOrAbove(b.hi.y + pad.y);
+  out->upper_z = render::floatAtOrAbove(b.hi.z + pad.z);
 }
 
 void intersect(const RTCIntersectFunctionNArguments* args) {
@@ -122,7 +112,7 @@ void intersect(const RTCIntersectFunctionNArguments* args) {
     double t = objectDistance((*g->objects)[object], context->rays[id], nearest);
     if (t < 0.0) continue;
     nearest = t;
-    RTCRayN_tfar(rays, args->N, lane) = up(t);
+    RTCRayN_tfar(rays, args->N, lane) = render::floatAtOrAbove(t);
     RTCHitN_primID(hits, args->N, lane) = args->primID;
     RTCHitN_geomID(hits, args->N, lane) = args->geomID;
     RTCHitN_instID(hits, args->N, lane, 0) = RTC_INVALID_GEOMETRY_ID;
@@ -238,7 +228,8 @@ class Tracers {
     r.dir_y = static_cast<float>(p.ray.direction.y);
     r.dir_z = static_cast<float>(p.ray.direction.z);
     r.tnear = 0.0f;
-    r.tfar = std::isinf(p.nearest) ? std::numeric_limits<float>::infinity() : up(p.nearest);
+    r.tfar = std::isinf(p.nearest) ? std::numeric_limits<float>::infinity()
+                                   : render::floatAtOrAbove(p.nearest);
     r.time = 0.0f;
     r.mask = 0xFFFFFFFF;
     r.id = id;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
@@ -28,6 +29,18 @@ struct Bounds {
     return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
   }
 };
+
+// The nearest float at or below a double, and at or above it: float box
+// planes rounded outward, so that a float box still contains the double one.
+inline float floatAtOrBelow(double v) {
+  float f = static_cast<float>(v);
+  return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity())
+                                    : f;
+}
+inline float floatAtOrAbove(double v) {
+  float f = static_cast<float>(v);
+  return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
 
 // A ray prepared for many box tests.
 struct BoxRay {
