@@ -295,8 +295,9 @@ int run(const std::string& path, render::RenderSettings settings, int runs,
   Geometry geometry;
   geometry.objects = &compiled.objects();
   for (std::uint32_t i = 0; i < compiled.objects().size(); ++i) {
-    const render::RenderObject& o = compiled.objects()[i];
-    if (auto b = render::worldBounds(o.kind, o.toWorld)) {
+    // RenderScene's objects are the scene's, in its order.
+    const scene::Object& o = loaded->objects[i];
+    if (auto b = render::worldBounds(o.kind, o.matrix)) {
       geometry.bounded.push_back(i);
       geometry.bounds.push_back(*b);
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <limits>
 #include <utility>
 
@@ -132,16 +133,19 @@ FloatTracer::FloatTracer(const render::RenderScene& scene, ShadowOffset offset, 
     Object o;
     o.kind = r.kind;
     o.toLocal = glm::mat3(r.toLocal);
-    o.translation = glm::vec3(r.toWorld[3]);
-    o.normalToWorld = glm::mat3(r.normalToWorld);
-    o.colour = glm::vec3(r.material.colour);
-    o.ambient = static_cast<float>(r.material.ambient);
-    o.diffuse = static_cast<float>(r.material.diffuse);
-    o.specular = static_cast<float>(r.material.specular);
-    o.shininess = static_cast<float>(r.material.shininess);
+    o.translation = glm::vec3(r.translation);
+    // The normal matrix is the inverse transpose of the 3x3 block.
+    o.normalToWorld = glm::mat3(glm::transpose(r.toLocal));
+    const scene::Material& m = scene.material(i);
+    o.colour = glm::vec3(m.colour);
+    o.ambient = static_cast<float>(m.ambient);
+    o.diffuse = static_cast<float>(m.diffuse);
+    o.specular = static_cast<float>(m.specular);
+    o.shininess = static_cast<float>(m.shininess);
     objects_.push_back(o);
-    // The BVH's items are the objects with bounds, in order (RenderScene).
-    if (render::worldBounds(r.kind, r.toWorld)) {
+    // The BVH's items are the objects with bounds (all but planes), in
+    // order (RenderScene).
+    if (r.kind != scene::ObjectKind::Plane) {
       bounded_.push_back(i);
     } else {
       planes_.push_back(i);

@@ -26,6 +26,217 @@ constexpr std::uint32_t kMaxLeafItems = 1;
 // tree within the traversal stack (Bvh::kStackSize) for any item count.
 constexpr int kMaxDepth = 64;
 
+// What a node's split works with: the boxes, their centres, and the items
+// and nodes being written, shared by every thread of a build (each writes
+// only its own range of items and of nodes).
+struct BuildInput {
+  const std::vector<Bounds>& boxes;
+  const std::vector<glm::dvec3>& centres;
+  std::uint32_t* items;
+  BvhNode* nodes;
+};
+
+// Fills in the node over items [begin, end): its box, and either a leaf's
+// items or a split, for which it orders the items (those of the first
+// child first) and returns where the second child's begin.
+std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std::uint32_t begin,
+                                       std::uint32_t end, int depth) {
+  const std::vector<Bounds>& boxes = in.boxes;
+  const std::vector<glm::dvec3>& centres = in.centres;
+  std::uint32_t* items = in.items;
+  Bounds bounds;
+  Bounds centreBounds;
+  for (std::uint32_t i = begin; i < end; ++i) {
+    bounds.extend(boxes[items[i]]);
+    centreBounds.extend(centres[items[i]]);
+  }
+  for (int i = 0; i < 3; ++i) {
+    node.planes[i] = floatAtOrBelow(bounds.lo[i]);
+    node.planes[3 + i] = floatAtOrAbove(bounds.hi[i]);
+  }
+  std::uint32_t count = end - begin;
+  if (count <= kMaxLeafItems || depth >= kMaxDepth) {
+    if (count <= 0xFFFF) {
+      node.offset = begin;
+      node.count = static_cast<std::uint16_t>(count);
+      return std::nullopt;
+    }
+  }
+
+  // Step 1: the widest axis of the centres; all centres equal means no split
+  // can help, so halve the list.
+  glm::dvec3 extent = centreBounds.hi - centreBounds.lo;
+  int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
+  std::uint32_t mid = begin + count / 2;
+  bool median = true;
+  if (extent[axis] > 0.0 && depth < kMaxDepth) {
+    // Step 2: bin the centres and price every split between bins by the
+    // surface area heuristic.
+    std::array<Bounds, kBins> binBounds;
+    std::array<std::uint32_t, kBins> binCounts{};
+    double scale = kBins / extent[axis];
+    auto binOf = [&](std::uint32_t item) {
+      int b = static_cast<int>((centres[item][axis] - centreBounds.lo[axis]) * scale);
+      return std::clamp(b, 0, kBins - 1);
+    };
+    for (std::uint32_t i = begin; i < end; ++i) {
+      int b = binOf(items[i]);
+      ++binCounts[b];
+      binBounds[b].extend(boxes[items[i]]);
+    }
+    std::array<double, kBins - 1> cost{};
+    Bounds left;
+    std::uint32_t leftCount = 0;
+    for (int b = 0; b < kBins - 1; ++b) {
+      left.extend(binBounds[b]);
+      leftCount += binCounts[b];
+      cost[b] = leftCount ? leftCount * left.surfaceArea() : 0.0;
+    }
+    Bounds right;
+    std::uint32_t rightCount = 0;
+    for (int b = kBins - 1; b > 0; --b) {
+      right.extend(binBounds[b]);
+      rightCount += binCounts[b];
+      cost[b - 1] += rightCount ? rightCount * right.surfaceArea() : 0.0;
+    }
+    int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
+    std::uint32_t* split = std::partition(items + begin, items + end,
+                                          [&](std::uint32_t item) { return binOf(item) <= best; });
+    std::uint32_t at = static_cast<std::uint32_t>(split - items);
+    if (at != begin && at != end) {
+      mid = at;
+      median = false;
+    }
+  }
+  if (median) {
+    std::nth_element(
+        items + begin, items + mid, items + end,
+        [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
+  }
+  node.axis = static_cast<std::uint8_t>(axis);
+  node.count = 0;
+  return mid;
+}
+
+// Builds the subtree over items [begin, end) depth first into the nodes
+// from `at` on; returns the index past its last node.
+std::uint32_t buildSubtree(const BuildInput& in, std::uint32_t at, std::uint32_t begin,
+                           std::uint32_t end, int depth) {
+  BvhNode& node = in.nodes[at];
+  std::optional<std::uint32_t> mid = splitNode(in, node, begin, end, depth);
+  if (!mid) return at + 1;
+  std::uint32_t second = buildSubtree(in, at + 1, begin, *mid, depth + 1);
+  node.offset = second;
+  return buildSubtree(in, second, *mid, end, depth + 1);
+}
+
+// A subtree left to the threads: items [begin, end) at `depth`, built into
+// the nodes from `at`, where 2 (end - begin) - 1 nodes, the most it can
+// take, are kept for it; `used` is how many it took.
+struct Subtree {
+  std::uint32_t begin = 0;
+  std::uint32_t end = 0;
+  int depth = 0;
+  std::uint32_t at = 0;
+  std::uint32_t used = 0;
+};
+
+// Past this many subtrees the top of the tree stops splitting, which bounds
+// the list (Bvh::bytesFor): each split still pending on the recursion, at
+// most kMaxRecursion of them, then adds one more.
+constexpr std::size_t kSubtreeBudget = Bvh::kTasksPerThread * Bvh::kMaxBuildThreads * 2;
+constexpr std::size_t kMaxRecursion = 128;
+constexpr std::size_t kMaxSubtrees = kSubtreeBudget + kMaxRecursion;
+// Below this many boxes one thread builds it all: starting threads would
+// cost more than they save.
+constexpr std::uint32_t kMinParallelBoxes = 16384;
+
+// The top of the tree, above the subtrees of at most `largest` items: its
+// nodes are built here, at the indices they would have if every subtree
+// took all it may; returns the index past the subtree's reserved nodes.
+std::uint32_t planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
+                      std::uint32_t at, std::uint32_t begin, std::uint32_t end, int depth) {
+  std::uint32_t count = end - begin;
+  if (count <= largest || subtrees.size() >= kSubtreeBudget) {
+    subtrees.push_back(Subtree{begin, end, depth, at, 0});
+    return at + 2 * count - 1;
+  }
+  BvhNode& node = in.nodes[at];
+  std::optional<std::uint32_t> mid = splitNode(in, node, begin, end, depth);
+  if (!mid) return at + 1;
+  std::uint32_t second = planTop(in, largest, subtrees, at + 1, begin, *mid, depth + 1);
+  node.offset = second;
+  return planTop(in, largest, subtrees, second, *mid, end, depth + 1);
+}
+
+// Builds the subtrees on `threads` threads (this one among them), largest
+// first, each taking the next one left.
+void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int threads) {
+  std::vector<std::uint32_t> order(subtrees.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  // Largest first, ties by place: std::sort, which needs no buffer of its
+  // own (Bvh::bytesFor).
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    std::uint32_t sizeA = subtrees[a].end - subtrees[a].begin;
+    std::uint32_t sizeB = subtrees[b].end - subtrees[b].begin;
+    return sizeA != sizeB ? sizeA > sizeB : a < b;
+  });
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < order.size(); i = next++) {
+      Subtree& s = subtrees[order[i]];
+      s.used = buildSubtree(in, s.at, s.begin, s.end, s.depth) - s.at;
+    }
+  };
+  std::vector<std::thread> helpers;
+  helpers.reserve(static_cast<std::size_t>(threads) - 1);
+  for (int t = 1; t < threads; ++t) {
+    try {
+      helpers.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // fewer threads: this one takes what the others would have
+    }
+  }
+  work();
+  for (std::thread& helper : helpers) helper.join();
+}
+
+// Closes the gaps that subtrees taking fewer nodes than kept for them left
+// (only leaves of several items, past kMaxDepth, make them): moves each
+// stretch of nodes down and renumbers the second children. Returns the
+// node count.
+std::uint32_t closeGaps(std::vector<BvhNode>& nodes, const std::vector<Subtree>& subtrees,
+                        std::uint32_t reserved) {
+  // shifts[k]: how far nodes past subtree k's reserved nodes move down.
+  std::vector<std::uint32_t> gapEnds(subtrees.size());
+  std::vector<std::uint32_t> shifts(subtrees.size());
+  std::uint32_t shift = 0;
+  for (std::size_t k = 0; k < subtrees.size(); ++k) {
+    const Subtree& s = subtrees[k];
+    std::uint32_t kept = 2 * (s.end - s.begin) - 1;
+    shift += kept - s.used;
+    gapEnds[k] = s.at + kept;
+    shifts[k] = shift;
+  }
+  if (shift == 0) return reserved;
+  auto moved = [&](std::uint32_t index) {
+    auto k = std::upper_bound(gapEnds.begin(), gapEnds.end(), index) - gapEnds.begin();
+    return k == 0 ? index : index - shifts[k - 1];
+  };
+  std::uint32_t out = 0;
+  std::size_t k = 0;
+  for (std::uint32_t index = 0; index < reserved;) {
+    if (k < subtrees.size() && index == subtrees[k].at + subtrees[k].used) {
+      index = gapEnds[k++];  // past the gap
+      continue;
+    }
+    BvhNode node = nodes[index++];
+    if (node.count == 0) node.offset = moved(node.offset);
+    nodes[out++] = node;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
