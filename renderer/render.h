@@ -67,8 +67,13 @@ struct Image {
   /// Floats a pixel in `rgb`: red, green, blue.
   static constexpr std::size_t kChannels = 3;
 
+  /// The pixels held: the region's size (RenderSettings::region).
   int width = 0;
   int height = 0;
+  /// Where the region's top-left pixel lies in the full image, and the full
+  /// image's size (its display window); 0, 0 and width x height for a full
+  /// render.
+  int originX = 0, originY = 0, fullWidth = 0, fullHeight = 0;
   std::vector<float> rgb;
   /// With RenderSettings::coverage, one float a pixel: the fraction of its
   /// samples whose camera ray meets an object (0 where only the background
