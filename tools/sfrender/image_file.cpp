@@ -358,8 +358,7 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
   return file.finish(error) && file.commit(error, replace);
 }
 
-bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file,
-                     std::string& error) {
+bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file, std::string& error) {
   std::optional<OiioModule> oiio = loadOiio(error);
   if (!oiio) return false;
   char message[512] = "";

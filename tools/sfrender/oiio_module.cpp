@@ -233,15 +233,20 @@ __attribute__((visibility("default"))) int sfrender_oiio_read(const char* path,
     return 0;
   }
   const OIIO::ImageSpec& spec = in->spec();
-  *region = SfrenderImageRegion{spec.x,          spec.y,
-                                spec.width,      spec.height,
-                                spec.full_x,     spec.full_y,
-                                spec.full_width, spec.full_height,
-                                spec.nchannels,  static_cast<int>(spec.format.size() * 8),
+  *region = SfrenderImageRegion{spec.x,
+                                spec.y,
+                                spec.width,
+                                spec.height,
+                                spec.full_x,
+                                spec.full_y,
+                                spec.full_width,
+                                spec.full_height,
+                                spec.nchannels,
+                                static_cast<int>(spec.format.size() * 8),
                                 spec.format.is_floating_point() ? 1 : 0};
   if (!pixels) return 1;
-  std::size_t needed = std::size_t{3} * static_cast<std::size_t>(spec.width) *
-                       static_cast<std::size_t>(spec.height);
+  std::size_t needed =
+      std::size_t{3} * static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
   if (spec.nchannels < 3 || spec.depth != 1 || capacity < needed) {
     copyText("the image is not one of three channels of the size read", error, errorSize);
     return 0;

@@ -83,7 +83,8 @@ float displayFromLinear(float linear) {
        ++step) {
     d = std::nextafter(d, 0.0f);
   }
-  bool first = srgbToLinear(d) >= linear && (d == 0.0f || srgbToLinear(std::nextafter(d, 0.0f)) < linear);
+  bool first =
+      srgbToLinear(d) >= linear && (d == 0.0f || srgbToLinear(std::nextafter(d, 0.0f)) < linear);
   return first ? d : bisectDisplay(linear);
 }
 
@@ -121,11 +122,10 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
       filled.assign(pixels, 0);
     } else if (r.fullX != display.fullX || r.fullY != display.fullY ||
                r.fullWidth != display.fullWidth || r.fullHeight != display.fullHeight) {
-      error = name + " is a region of a " +
-              windowText(r.fullX, r.fullY, r.fullWidth, r.fullHeight) + " image, '" +
-              files.front().string() + "' of a " +
-              windowText(display.fullX, display.fullY, display.fullWidth, display.fullHeight) +
-              " one";
+      error =
+          name + " is a region of a " + windowText(r.fullX, r.fullY, r.fullWidth, r.fullHeight) +
+          " image, '" + files.front().string() + "' of a " +
+          windowText(display.fullX, display.fullY, display.fullWidth, display.fullHeight) + " one";
       return std::nullopt;
     }
     if (r.x < r.fullX || r.y < r.fullY || r.x + r.width > r.fullX + r.fullWidth ||

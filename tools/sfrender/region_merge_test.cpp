@@ -47,8 +47,7 @@ TEST(DisplayFromLinear, FewLevelBoundariesDecodeTogether) {
     ASSERT_LT(srgbToLinear(std::nextafter(below, 0.0f)), srgbToLinear(first)) << level;
     EXPECT_EQ(quantizeChannel(displayFromLinear(srgbToLinear(first))),
               together ? level - 1 : level);
-    EXPECT_EQ(quantizeChannel(displayFromLinear(srgbToLinear(std::nextafter(first, 1.0f)))),
-              level);
+    EXPECT_EQ(quantizeChannel(displayFromLinear(srgbToLinear(std::nextafter(first, 1.0f)))), level);
   }
   for (int level = 1; level <= 65535; ++level) {
     float first = firstOfLevel(level, quantizeChannel16);
@@ -102,9 +101,8 @@ class MergeRegions : public ::testing::Test {
  protected:
   void SetUp() override {
     folder_ = fs::temp_directory_path() /
-              ("region_merge_test_" + std::string(::testing::UnitTest::GetInstance()
-                                                      ->current_test_info()
-                                                      ->name()));
+              ("region_merge_test_" +
+               std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(folder_);
     fs::create_directories(folder_);
   }
@@ -153,12 +151,11 @@ TEST_F(MergeRegions, WritesTheDataAndDisplayWindows) {
 TEST_F(MergeRegions, RefusesAGapAMismatchAndHalves) {
   render::Image whole = gradient(7, 5);
   std::string error;
-  EXPECT_FALSE(mergeImageRegions({write(rows(whole, 0, 2), "a.exr"),
-                                  write(rows(whole, 3, 5), "c.exr")},
-                                 error));
+  EXPECT_FALSE(mergeImageRegions(
+      {write(rows(whole, 0, 2), "a.exr"), write(rows(whole, 3, 5), "c.exr")}, error));
   EXPECT_EQ(error, "no region holds pixel 0,2 of the 7x5 image");
-  EXPECT_FALSE(mergeImageRegions({folder_ / "a.exr", write(rows(gradient(7, 6), 2, 6), "d.exr")},
-                                 error));
+  EXPECT_FALSE(
+      mergeImageRegions({folder_ / "a.exr", write(rows(gradient(7, 6), 2, 6), "d.exr")}, error));
   EXPECT_NE(error.find("is a region of a 7x6 at 0,0 image"), std::string::npos) << error;
   std::string halfName = "h.exr";
   ASSERT_TRUE(writeImageFile(rows(whole, 2, 5), folder_ / halfName, error, {16, false}));
