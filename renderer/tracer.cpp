@@ -158,7 +158,10 @@ glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce
                              MediumStack& media, TraceContext& context, double tolerance) const {
   if (bounce > maxDepth_) return glm::dvec3(0.0);
   std::optional<Hit> found = scene_.closestHit(ray, source);
-  if (bounce == 0) context.primaryHit = found.has_value();
+  if (bounce == 0) {
+    context.primaryHit = found.has_value();
+    context.primaryObject = found ? found->object : RaySource::kNone;
+  }
   if (!found) return glm::dvec3(0.0);
   const Hit& hit = *found;
   const RenderObject& object = scene_.objects()[hit.object];

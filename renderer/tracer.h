@@ -74,6 +74,10 @@ struct alignas(64) TraceContext {
   // Whether the last camera ray traced (bounce 0) met an object: its
   // sample's share of the pixel's coverage (Image::coverage).
   bool primaryHit = false;
+  // The object that camera ray met first, or RaySource::kNone: what adaptive
+  // anti-aliasing compares between neighbouring pixels (an edge between two
+  // objects of one colour).
+  std::uint32_t primaryObject = RaySource::kNone;
   std::array<std::uint32_t, kOccluderSlots> lastOccluder = filledWithNone();
 
  private:
