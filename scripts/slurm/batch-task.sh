@@ -6,6 +6,7 @@
 set -u
 sfrender=$1 list=$2 tasks=$3 pattern=$4
 shift 4
+# shellcheck source=scripts/slurm/requeue.sh
 source "$SFSLURM_DIR/requeue.sh"
 mapfile -t scenes < <(grep -v '^[[:space:]]*$' "$list")
 count=${#scenes[@]}

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the array tasks (tile-task.sh, batch-task.sh): what a task does
 # when sfrender fails. A failure of the machine (killed by a signal: the OOM
 # killer, a node's trouble, a pre-emption; or sfrender's exit status 4, out

@@ -6,6 +6,7 @@
 set -u
 sfrender=$1 tiles=$2 work=$3
 shift 3
+# shellcheck source=scripts/slurm/requeue.sh
 source "$SFSLURM_DIR/requeue.sh"
 tile=$SLURM_ARRAY_TASK_ID
 status=0

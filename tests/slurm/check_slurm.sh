@@ -8,6 +8,7 @@
 set -euo pipefail
 bin=$1 source=$2
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# shellcheck source=tests/slurm/cluster.sh
 source "$here/cluster.sh"
 if (($(id -u) != 0)); then
   echo "skipped: starting Slurm's daemons needs root"

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # A single-node Slurm cluster on this machine, for the tests: sourced, it
 # defines start_cluster and stop_cluster. Everything (munge key and socket,
 # slurm.conf, state, spool, logs, pid files) lives under $CLUSTER_DIR, and

@@ -127,7 +127,6 @@ TEST_F(MergeRegions, GivesTheWholeImageInEveryFormat) {
   ASSERT_EQ(merged->height, 5);
   EXPECT_EQ(ppmImageBytes(*merged), ppmImageBytes(whole));
   EXPECT_EQ(ppmImageBytes(*merged, {16, false}), ppmImageBytes(whole, {16, false}));
-  ImageFormat exr;
   ImageRegionFile once, again;
   ASSERT_TRUE(readImageRegion(write(whole, "whole.exr"), once, error)) << error;
   ASSERT_TRUE(readImageRegion(write(*merged, "merged.exr"), again, error)) << error;
