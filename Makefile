@@ -31,6 +31,7 @@ bench: build
 	@bash bench/run.sh $(BUILD_DIR)
 	@bash bench/render_bench.sh $(BUILD_DIR)
 	@bash bench/render_suite.sh $(BUILD_DIR)
+	@bash bench/tiles_bench.sh $(BUILD_DIR)
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (but the label "slurm", which tests the Slurm scripts on a cluster, not memory safety):
