@@ -60,11 +60,12 @@ struct RenderSettings {
   // samples every pixel samplesPerPixel times. Above 0, every pixel first
   // gets its centre sample, and only a pixel whose centre differs from a
   // neighbour's by more than this (in some channel, in the image's units
-  // 0..1) or shows another object gets stratified samples: first
-  // adaptiveFirstLevel of them, then, where those still disagree,
-  // samplesPerPixel.
+  // 0..1) or shows another object gets samplesPerPixel stratified samples.
   double adaptiveThreshold = 0.0;
-  int adaptiveFirstLevel = 4;  // 0 or 1: straight to samplesPerPixel
+  // Above 1: a refined pixel first gets this many stratified samples, and
+  // samplesPerPixel only where they disagree. 0 (measured better,
+  // docs/RENDERING.md "Adaptive sampling"): straight to samplesPerPixel.
+  int adaptiveFirstLevel = 0;
   // The part of the width x height image to render; empty: all of it. Its
   // pixels are exactly those of the full image's render (a region reaching
   // outside the image is cut to it).
