@@ -33,8 +33,10 @@ bench: build
 	@bash bench/render_suite.sh $(BUILD_DIR)
 	@bash bench/tracers.sh $(BUILD_DIR)
 	@bash bench/equal_error.sh $(BUILD_DIR)
+	@bash bench/tiles_bench.sh $(BUILD_DIR)
 
-# The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer:
+# The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
+# (but the label "slurm", which tests the Slurm scripts on a cluster, not memory safety):
 # the first finding, a leak included, aborts the program and fails its test.
 # tests/sanitizers/lsan.supp says which leaks are not ours, and why.
 SANITIZE_DIR ?= build-sanitize
@@ -49,7 +51,7 @@ test-sanitize: deps
 	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
 	  -DSCENEFILE_SANITIZE=address,undefined >/dev/null
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS)
-	@cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS)
+	@cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE slurm
 
 # The tools' end-to-end tests (ctest label "valgrind") with every run of sfcheck,
 # sfconvert and sfrender under valgrind: any invalid access, use of an
@@ -63,7 +65,7 @@ test-valgrind: deps
 	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
 	  "-DSCENEFILE_TOOL_LAUNCHER=$(VALGRIND)" >/dev/null
 	@cmake --build $(VALGRIND_DIR) -j $(JOBS) --target sfcheck sfconvert sfrender sfrender_oiio
-	@cd $(VALGRIND_DIR) && ctest -L valgrind --output-on-failure -j $(JOBS)
+	@cd $(VALGRIND_DIR) && ctest -L valgrind -LE slurm --output-on-failure -j $(JOBS)
 
 # libFuzzer on every reader and on sfconvert's whole path, under ASan and
 # UBSan (tests/fuzz, scripts/fuzz.sh): FUZZ_SECONDS per target (FUZZ_JOBS

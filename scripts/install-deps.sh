@@ -39,6 +39,9 @@ packages=(
   libglfw3-dev libepoxy-dev libgl1-mesa-dri xvfb xauth xdotool x11-apps netpbm
   # The hostile-input tests measure sfcheck's peak memory with GNU time.
   time
+  # The Slurm test (tests/slurm) starts a single-node cluster of its own
+  # (munged, slurmctld, slurmd) to run scripts/slurm/ on.
+  slurm-wlm munge
   # make test-valgrind runs the tools' end-to-end tests under valgrind;
   # bench/tracers.sh counts instructions with its callgrind.
   valgrind

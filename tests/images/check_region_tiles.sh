@@ -27,8 +27,12 @@ failures=0
 # same CROP FULL PART: whether PART equals FULL cut to CROP (WxH+X+Y).
 same() {
   # A float EXR holds every value of either format exactly (oiiotool would
-  # write a PPM crop at 8 bits).
-  oiiotool "$2" --cut "$1" -d float -o crop.exr
+  # write a PPM crop at 8 bits). A region's EXR keeps its place in the
+  # full image (its data window within the display window: --crop); a PPM
+  # holds the pixels alone (--cut moves them to 0, 0).
+  local cut=--cut
+  [[ $3 == *.exr ]] && cut=--crop
+  oiiotool "$2" "$cut" "$1" -d float -o crop.exr
   if ! oiiotool --fail 0 --failpercent 0 --diff crop.exr "$3" >diff.txt; then
     echo "FAIL: $3 differs from $2 cut to $1" >&2
     cat diff.txt >&2

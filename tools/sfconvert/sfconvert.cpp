@@ -11,6 +11,7 @@
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
 #include "tools/common/output_location.h"
+#include "tools/common/output_pattern.h"
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
@@ -296,7 +297,42 @@ int convert(int argc, const char* const* argv, const ToolStreams& streams, Stage
     return toInt(*stop);
   }
   ToolOutput output("sfconvert", streams, options.common);
-  return Converter(options, output, stage).run();
+  if (options.outputPattern.empty()) {
+    if (options.files.size() != 2) {
+      output.error(options.files.size() < 2 ? "missing OUTPUT"
+                                            : "several inputs need -o, a pattern such as "
+                                              "'out/{stem}.gltf'",
+                   "run 'sfconvert --help' for the options");
+      return toInt(ExitCode::Usage);
+    }
+    options.input = options.files[0];
+    options.output = options.files[1];
+    return Converter(options, output, stage).run();
+  }
+  std::string error;
+  std::optional<std::vector<std::string>> outputs =
+      batchOutputs(options.outputPattern, options.files, error);
+  if (!outputs) {
+    output.error(error);
+    return toInt(ExitCode::Usage);
+  }
+  int converted = 0, status = toInt(ExitCode::Success);
+  for (std::size_t i = 0; i < options.files.size(); ++i) {
+    SfconvertOptions one = options;
+    one.input = options.files[i];
+    one.output = (*outputs)[i];
+    int result = Converter(one, output, stage).run();
+    if (result == toInt(ExitCode::Success)) {
+      ++converted;
+    } else if (status == toInt(ExitCode::Success)) {
+      status = result;
+    }
+  }
+  int total = static_cast<int>(options.files.size());
+  if (total > 1 && (!options.common.quiet || converted < total)) {
+    output.err() << batchSummary("sfconvert", converted, total, "scenes converted") << "\n";
+  }
+  return status;
 }
 
 }  // namespace

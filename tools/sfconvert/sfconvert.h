@@ -6,6 +6,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "scenefile/mesh.h"
 #include "scenefile/read.h"
@@ -16,7 +17,10 @@ namespace tools {
 
 struct SfconvertOptions {
   CommonFlags common;
-  std::string input;
+  // The positionals: INPUT OUTPUT, or with -o the inputs alone.
+  std::vector<std::string> files;
+  std::string outputPattern;  // -o: the output of each input (output_pattern.h)
+  std::string input;          // the one converted
   std::string output;
   std::string to;
   std::string format = "text";

@@ -53,13 +53,15 @@ void addFormatOptions(CLI::App& app, SfconvertOptions& o) {
 std::unique_ptr<CLI::App> makeSfconvertCommandLine(SfconvertOptions& o) {
   std::unique_ptr<CLI::App> app =
       makeToolApp("sfconvert", "Converts between " + scene::describeFormats(), o.common);
-  app->add_option("input", o.input,
-                  "the scene to read (its format recognised from its content); - reads standard "
-                  "input")
+  app->add_option("files", o.files,
+                  "INPUT OUTPUT: the scene to read (its format recognised from its content; - "
+                  "reads standard input) and the file to write (its format from its extension; "
+                  "- writes standard output); with -o, the scenes to read")
       ->required();
-  app->add_option("output", o.output,
-                  "the file to write (its format from its extension); - writes standard output")
-      ->required();
+  app->add_option("-o,--output", o.outputPattern,
+                  "the file to write for each input, a pattern for several: {stem} (the input's "
+                  "name without extension), {name}, {dir}; several go on past a failed one")
+      ->option_text("PATTERN");
   app->add_option("--to", o.to,
                   "the output format, instead of the output's extension: " + scene::formatNames())
       ->option_text("FORMAT")

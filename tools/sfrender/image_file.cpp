@@ -21,6 +21,7 @@ namespace {
 struct OiioModule {
   SfrenderOiioFormats formats = nullptr;
   SfrenderOiioWrite write = nullptr;
+  SfrenderOiioRead read = nullptr;
 };
 
 #ifndef SFRENDER_MODULE_DIR
@@ -71,7 +72,8 @@ std::optional<OiioModule> loadOiio(std::string& error) {
   OiioModule m;
   m.formats = reinterpret_cast<SfrenderOiioFormats>(::dlsym(handle, SFRENDER_OIIO_FORMATS));
   m.write = reinterpret_cast<SfrenderOiioWrite>(::dlsym(handle, SFRENDER_OIIO_WRITE));
-  if (!m.formats || !m.write) {
+  m.read = reinterpret_cast<SfrenderOiioRead>(::dlsym(handle, SFRENDER_OIIO_READ));
+  if (!m.formats || !m.write || !m.read) {
     error = moduleFailure(file, "it lacks its functions");
     return std::nullopt;
   }
@@ -194,8 +196,17 @@ bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const 
                       const ImageOptions& options, const std::filesystem::path& temporary,
                       std::string& error) {
   int bits = storedBits(format, options);
-  SfrenderImageData data{
-      image.width, image.height, channelsOf(options), kSfrenderUint8, nullptr, 0, 1};
+  SfrenderImageData data{image.width,
+                         image.height,
+                         channelsOf(options),
+                         kSfrenderUint8,
+                         nullptr,
+                         0,
+                         1,
+                         image.originX,
+                         image.originY,
+                         image.fullWidth > 0 ? image.fullWidth : image.width,
+                         image.fullHeight > 0 ? image.fullHeight : image.height};
   std::vector<unsigned char> bytes;
   std::vector<std::uint16_t> words;
   std::vector<float> floats;
@@ -345,6 +356,28 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
     return false;
   }
   return file.finish(error) && file.commit(error, replace);
+}
+
+bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file, std::string& error) {
+  std::optional<OiioModule> oiio = loadOiio(error);
+  if (!oiio) return false;
+  char message[512] = "";
+  if (!oiio->read(path.c_str(), &file.region, nullptr, 0, message, sizeof message)) {
+    error = message;
+    return false;
+  }
+  const SfrenderImageRegion& r = file.region;
+  if (r.width <= 0 || r.height <= 0 || r.channels < 3) {
+    error = "not an RGB image";
+    return false;
+  }
+  file.rgb.assign(std::size_t{3} * static_cast<std::size_t>(r.width) * r.height, 0.0f);
+  if (!oiio->read(path.c_str(), &file.region, file.rgb.data(), file.rgb.size(), message,
+                  sizeof message)) {
+    error = message;
+    return false;
+  }
+  return true;
 }
 
 }  // namespace tools

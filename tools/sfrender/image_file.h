@@ -11,6 +11,7 @@
 
 #include "renderer/render.h"
 #include "tools/sfrender/image_formats.h"
+#include "tools/sfrender/oiio_module.h"
 
 namespace tools {
 
@@ -63,6 +64,17 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
 // says): what a ".ppm" file holds, and what `sfrender -o -` writes to
 // standard output.
 std::string ppmImageBytes(const render::Image& image, const ImageOptions& options = {});
+
+// A region of an image read back from a file (sfrender --merge): its data
+// and display windows, and its first three channels as floats, row by row.
+struct ImageRegionFile {
+  SfrenderImageRegion region{};
+  std::vector<float> rgb;
+};
+
+// Reads the image at `path` through OpenImageIO's module; false with a
+// message in `error` when it cannot.
+bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file, std::string& error);
 
 // The 8-bit level of a display value: round(clamp(v, 0, 1) * 255).
 unsigned char quantizeChannel(float value);

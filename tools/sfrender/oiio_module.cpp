@@ -195,6 +195,14 @@ __attribute__((visibility("default"))) int sfrender_oiio_write(const char* path,
   OIIO::TypeDesc given = stored == OIIO::TypeDesc::HALF ? OIIO::TypeDesc::FLOAT : stored;
   OIIO::ImageSpec spec(image->width, image->height, image->channels, stored);
   if (image->channels == 4) spec.alpha_channel = 3;
+  // A region: EXR's data window within its display window (which starts at
+  // 0, 0); TIFF and PNG record the position as they can.
+  spec.x = image->x;
+  spec.y = image->y;
+  spec.full_x = 0;
+  spec.full_y = 0;
+  spec.full_width = image->fullWidth;
+  spec.full_height = image->fullHeight;
   // Otherwise OpenImageIO divides colour by alpha on the way to a format
   // that stores it straight (PNG), and marks a TIFF's alpha associated.
   if (image->channels == 4 && image->straightAlpha) spec.attribute("oiio:UnassociatedAlpha", 1);
@@ -209,6 +217,45 @@ __attribute__((visibility("default"))) int sfrender_oiio_write(const char* path,
   if (!ok && message.empty()) message = out->geterror();
   if (!ok) {
     copyText(message.empty() ? "the image could not be written" : message, error, errorSize);
+    return 0;
+  }
+  return 1;
+}
+
+__attribute__((visibility("default"))) int sfrender_oiio_read(const char* path,
+                                                              SfrenderImageRegion* region,
+                                                              float* pixels, std::size_t capacity,
+                                                              char* error, std::size_t errorSize) {
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+  if (!in) {
+    std::string message = OIIO::geterror();
+    copyText(message.empty() ? "no reader takes the file" : message, error, errorSize);
+    return 0;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  *region = SfrenderImageRegion{spec.x,
+                                spec.y,
+                                spec.width,
+                                spec.height,
+                                spec.full_x,
+                                spec.full_y,
+                                spec.full_width,
+                                spec.full_height,
+                                spec.nchannels,
+                                static_cast<int>(spec.format.size() * 8),
+                                spec.format.is_floating_point() ? 1 : 0};
+  if (!pixels) return 1;
+  std::size_t needed =
+      std::size_t{3} * static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+  if (spec.nchannels < 3 || spec.depth != 1 || capacity < needed) {
+    copyText("the image is not one of three channels of the size read", error, errorSize);
+    return 0;
+  }
+  bool ok = in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels);
+  std::string message = ok ? std::string() : in->geterror();
+  ok = in->close() && ok;
+  if (!ok) {
+    copyText(message.empty() ? "the image could not be read" : message, error, errorSize);
     return 0;
   }
   return 1;

@@ -25,6 +25,23 @@ struct SfrenderImageData {
   const void* pixels;
   int linear;         // 1: linear values, Rec. 709 primaries and D65 white; 0: sRGB display values
   int straightAlpha;  // 1: the colour of a pixel is not multiplied by its alpha; 0: it is
+  // Where the image lies in the full image it is a region of (EXR's data
+  // window within its display window; a TIFF's position), and the full
+  // image's size: 0, 0, width, height for a whole image.
+  int x;
+  int y;
+  int fullWidth;
+  int fullHeight;
+};
+
+// A region of an image read back (sfrender --merge): its data window, the
+// display window it lies in, its channels and how it stores them.
+struct SfrenderImageRegion {
+  int x, y, width, height;                  // the data window: the pixels stored
+  int fullX, fullY, fullWidth, fullHeight;  // the display window
+  int channels;
+  int bits;      // bits a channel of the file: 8, 16, 32
+  int floating;  // 1: floating-point channels (EXR's half or float), 0: integers
 };
 
 // The formats sfrender can write through OpenImageIO, one a line: the
@@ -39,8 +56,16 @@ typedef std::size_t (*SfrenderOiioFormats)(char* list, std::size_t size);
 typedef int (*SfrenderOiioWrite)(const char* path, const SfrenderImageData* image, char* error,
                                  std::size_t errorSize);
 
+// Reads the image at `path`: with `pixels` null, only its region
+// (`region`); otherwise also its first three channels as floats, row by row
+// from the top of the data window, into `pixels`, which holds `capacity`
+// floats. Returns 1, or 0 with a message in `error`.
+typedef int (*SfrenderOiioRead)(const char* path, SfrenderImageRegion* region, float* pixels,
+                                std::size_t capacity, char* error, std::size_t errorSize);
+
 // Their names in the module.
 #define SFRENDER_OIIO_FORMATS "sfrender_oiio_formats"
 #define SFRENDER_OIIO_WRITE "sfrender_oiio_write"
+#define SFRENDER_OIIO_READ "sfrender_oiio_read"
 
 }  // extern "C"

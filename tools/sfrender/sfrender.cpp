@@ -20,11 +20,13 @@
 #include "tools/common/input_limits.h"
 #include "tools/common/output_file_format.h"
 #include "tools/common/output_location.h"
+#include "tools/common/output_pattern.h"
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
 #include "tools/sfrender/image_file.h"
 #include "tools/sfrender/image_region.h"
+#include "tools/sfrender/region_merge.h"
 #include "tools/sfrender/thread_probe.h"
 
 namespace tools {
@@ -393,6 +395,81 @@ int Renderer::run() {
   return writeImage(image, statistics);
 }
 
+// --merge: the regions in o.inputs, one image in o.output (region_merge.h).
+int mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& stage) {
+  if (o.inputs.empty()) {
+    output.error("--merge needs the regions to merge", "sfrender --merge tile-*.exr -o image.png");
+    return toInt(ExitCode::Usage);
+  }
+  if (o.output.empty() || isStandardStream(o.output)) {
+    output.error("--merge needs -o FILE, the image to write");
+    return toInt(ExitCode::Usage);
+  }
+  if (o.image.alpha) {
+    output.error("--merge puts RGB regions together; --alpha is for a render");
+    return toInt(ExitCode::Usage);
+  }
+  if (std::optional<std::string> refusal = imageRefusal(o.output, o.image)) {
+    output.error(printableText(*refusal));
+    return toInt(ExitCode::Usage);
+  }
+  if (o.noClobber && pathExists(o.output)) {
+    output.fileError(o.output, kNoClobberMessage);
+    return toInt(ExitCode::IoError);
+  }
+  stage.set("merging " + std::to_string(o.inputs.size()) + " regions");
+  std::vector<fs::path> files(o.inputs.begin(), o.inputs.end());
+  std::string error;
+  std::optional<render::Image> image = mergeImageRegions(files, error);
+  if (!image) {
+    output.error(printableText(error));
+    return toInt(error.rfind("cannot read", 0) == 0 ? ExitCode::IoError : ExitCode::InvalidInput);
+  }
+  output.step("merging");
+  if (!writeImageFile(*image, o.output, error, o.image, !o.noClobber)) {
+    output.fileError(o.output, "cannot write the image: " + error);
+    return toInt(ExitCode::IoError);
+  }
+  output.info("wrote " + printableText(o.output) + " (" + std::to_string(image->width) + "x" +
+              std::to_string(image->height) + ", from " + std::to_string(o.inputs.size()) +
+              " regions)");
+  return toInt(ExitCode::Success);
+}
+
+// Several scenes: each rendered as if alone, the batch going on past one
+// that fails, then the summary; the status is the first failure's.
+int renderBatch(const SfrenderOptions& o, ToolOutput& output,
+                const AvailableMemoryProbe& availableMemory, Stage& stage) {
+  std::vector<std::string> outputs(o.inputs.size());
+  if (!o.output.empty()) {
+    std::string error;
+    std::optional<std::vector<std::string>> expanded = batchOutputs(o.output, o.inputs, error);
+    if (!expanded) {
+      output.error(error);
+      return toInt(ExitCode::Usage);
+    }
+    outputs = *expanded;
+  }
+  int rendered = 0, status = toInt(ExitCode::Success);
+  for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+    SfrenderOptions one = o;
+    one.input = o.inputs[i];
+    one.output = outputs[i];
+    int result = Renderer(one, output, availableMemory, stage).run();
+    if (result == toInt(ExitCode::Success)) {
+      ++rendered;
+    } else if (status == toInt(ExitCode::Success)) {
+      status = result;
+    }
+  }
+  if (!o.common.quiet || rendered < static_cast<int>(o.inputs.size())) {
+    output.err() << batchSummary("sfrender", rendered, static_cast<int>(o.inputs.size()),
+                                 "scenes rendered")
+                 << "\n";
+  }
+  return status;
+}
+
 int renderToFile(int argc, const char* const* argv, const ToolStreams& streams,
                  const AvailableMemoryProbe& availableMemory, Stage& stage) {
   SfrenderOptions options;
@@ -401,6 +478,20 @@ int renderToFile(int argc, const char* const* argv, const ToolStreams& streams,
     return toInt(*stop);
   }
   ToolOutput output("sfrender", streams, options.common);
+  if (options.merge) return mergeRegions(options, output, stage);
+  if (options.inputs.size() > 1) return renderBatch(options, output, availableMemory, stage);
+  if (!options.inputs.empty()) options.input = options.inputs.front();
+  if (!options.input.empty() && hasPlaceholder(options.output)) {
+    // One scene of a batch (a Slurm task's slice may hold one): the pattern
+    // names its image, and no summary follows.
+    std::string error;
+    std::optional<std::string> named = expandOutputPattern(options.output, options.input, error);
+    if (!named) {
+      output.error(error);
+      return toInt(ExitCode::Usage);
+    }
+    options.output = *named;
+  }
   return Renderer(options, output, availableMemory, stage).run();
 }
 

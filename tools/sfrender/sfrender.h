@@ -7,6 +7,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "renderer/render.h"
 #include "renderer/render_memory.h"
@@ -29,8 +30,12 @@ struct RenderLimits {
 
 struct SfrenderOptions {
   CommonFlags common;
-  std::string input;   // empty: the default scene; "-": standard input
-  std::string output;  // empty: from the input's name; "-": standard output (PPM)
+  // The scenes on the command line; with --merge, the regions to merge.
+  std::vector<std::string> inputs;
+  std::string input;   // the one rendered: empty, the default scene; "-", standard input
+  std::string output;  // empty: from the input's name; "-": standard output (PPM); a pattern
+                       // with several inputs (output_pattern.h)
+  bool merge = false;  // --merge: put the regions in `inputs` together into `output`
   // Given on the command line, or nothing: the scene's view (a POV-Ray or
   // glTF camera's) or the defaults of render::RenderSettings decide.
   std::optional<int> width;

@@ -84,14 +84,19 @@ std::unique_ptr<CLI::App> makeSfrenderCommandLine(SfrenderOptions& o) {
                   "Ray traces a scene, in any of " + scene::describeFormats() +
                       " (the default scene without one)",
                   o.common);
-  app->add_option("scene", o.input,
-                  "the scene to render, its format recognised from its content; - reads standard "
-                  "input");
+  app->add_option("scenes", o.inputs,
+                  "the scenes to render, each format recognised from its content; - reads "
+                  "standard input; several go on past a failed one (with --merge: the regions "
+                  "to merge)");
   app->add_option("-o,--output", o.output,
                   "the image to write; its extension picks the format (listed at the end); - "
                   "writes PPM to standard output (default: the scene's name with .ppm, or an "
-                  "instruction file's OUTPUT_FILE)")
+                  "instruction file's OUTPUT_FILE); for several scenes a pattern: {stem} (the "
+                  "scene's name without extension), {name}, {dir}")
       ->option_text("FILE");
+  app->add_flag("--merge", o.merge,
+                "put the regions of one image (EXR files of --tile or --region) together into "
+                "the image -o names, exactly as one render makes it");
   addImageOptions(*app, o);
   app->add_option("--bits", o.image.bits,
                   "bits a channel: 8 or 16 for integer images (PNG, TIFF, PPM), 16 (half) or 32 "

@@ -1,0 +1,37 @@
+// Putting the regions of one image back together (sfrender --merge): the
+// EXR files that `sfrender --tile i/N` or `--region` write, each a data
+// window of the same display window, become the whole image, exactly the
+// pixels that one render of it gives (docs/SCALING.md).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/render.h"
+
+namespace tools {
+
+// The display value that sfrender's EXR writer turned into `linear`: the
+// smallest float whose sRGB decoding (srgbToLinear) is `linear`, or, when
+// none decodes to it exactly, the smallest whose decoding is above it.
+// Negative values decode as srgbToLinear's do, a NaN gives 0. Exact for
+// every value the writer makes: writing the result again gives `linear`
+// bit for bit. Every float that decodes to `linear` has the same 8-bit
+// level but at two of the 255 boundaries between levels (and 512 of the
+// 65535 of 16 bits), where the float just below a level's first decodes to
+// the same value (region_merge_test.cpp): so an 8-bit image made from the
+// merge is the one a single render makes unless a display value is one of
+// those two floats (docs/SCALING.md, "Exactness").
+float displayFromLinear(float linear);
+
+// The whole image from its regions, read from `files`: every file must have
+// the same display window, hold 32-bit floating-point RGB (the values
+// exactly as rendered), and together they must cover the display window;
+// where two overlap, they must agree. Nothing, with why in `error`, when
+// they do not.
+std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
+                                               std::string& error);
+
+}  // namespace tools
