@@ -7,6 +7,8 @@ packages=(
   build-essential cmake pkg-config
   libcli11-dev libglm-dev libtinygltf-dev nlohmann-json3-dev
   libopenimageio-dev liblcms2-dev libgtest-dev libgmock-dev
+  # sfrender writes PNG, the common case, with libpng itself (png_file.h).
+  libpng-dev
   # The colour-managed images' test converts sfrender's PNG, TIFF and EXR
   # with oiiotool.
   openimageio-tools

@@ -125,15 +125,19 @@ ImageFormat ppmFormat() {
   return withPolicy("ppm", {".ppm"}, false);
 }
 
+ImageFormat pngFormat() {
+  return withPolicy("png", {".png"}, true);
+}
+
 std::vector<ImageFormat> imageFormatsFrom(std::string_view moduleList) {
-  std::vector<ImageFormat> formats = {ppmFormat()};
+  std::vector<ImageFormat> formats = {ppmFormat(), pngFormat()};
   std::istringstream lines{std::string(moduleList)};
   std::string line;
   while (std::getline(lines, line)) {
     std::istringstream words(line);
     std::string name, extension;
     int alpha = 0;
-    if (!(words >> name >> alpha)) continue;
+    if (!(words >> name >> alpha) || name == "png") continue;
     std::vector<std::string> extensions;
     while (words >> extension) {
       if (extension != "ppm") extensions.push_back("." + lowerCase(extension));

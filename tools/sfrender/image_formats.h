@@ -33,8 +33,13 @@ struct ImageOptions {
 // OpenImageIO.
 ImageFormat ppmFormat();
 
+// .png, which sfrender writes itself with libpng (png_file.h), 8 or 16
+// bits, with alpha, without OpenImageIO.
+ImageFormat pngFormat();
+
 // The formats of the module's list (oiio_module.h, SfrenderOiioFormats),
-// with sfrender's .ppm first and taken out of the list's own "pnm" row.
+// with sfrender's own .ppm and .png first (.ppm taken out of the list's own
+// "pnm" row, and the list's "png" row left out).
 std::vector<ImageFormat> imageFormatsFrom(std::string_view moduleList);
 
 // The format whose extension `path` has, in any case (".PNG" too), or null.
