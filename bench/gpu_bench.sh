@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The GPU path's benchmark (docs/PERFORMANCE.md, "GPU (Vulkan)"), in one go:
 # builds sfrender and sfgen (Release, SCENEFILE_VULKAN=ON) in build-gpu-bench,
-# makes floor scenes of 100,000 and 1,000,000 objects (sfgen --layout floor
+# (sfgen is one of the benchmarks' tools), makes floor scenes of 100,000 and 1,000,000 objects (sfgen --layout floor
 # -n N -s 1), and renders them and the default scene at 1920x1080, 1 spp, on
 # the GPU (sfrender --device gpu --stats: device start, upload, kernel from
 # Vulkan timestamp queries, readback) and on the CPU with 2 threads, printing
@@ -42,7 +42,7 @@ if [[ -f /root/.ccache.env ]]; then
   source /root/.ccache.env
 fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSCENEFILE_VULKAN=ON \
-  -DSCENEFILE_BUILD_TESTS=OFF -DSCENEFILE_BUILD_BENCH=OFF -DSCENEFILE_BUILD_PYTHON=OFF \
+  -DSCENEFILE_BUILD_TESTS=OFF -DSCENEFILE_BUILD_BENCH=ON -DSCENEFILE_BUILD_PYTHON=OFF \
   -DSCENEFILE_BUILD_DOCS=OFF >/dev/null
 cmake --build "$build" -j"$(nproc)" --target sfrender sfgen >/dev/null
 bin=$build/bin

@@ -39,15 +39,19 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
       ->check(wholeNumberIn(0, kDepthCeiling));
   app.add_option("--threads", o.settings.threads, "threads to render with (0: every core)")
       ->check(wholeNumberIn(0, 1024));
-  app.add_option("--device", o.settings.device,
-                 "where to trace: cpu, gpu (a Vulkan device with double precision; lavapipe "
-                 "counts) or auto (a real GPU when present and the image has at least a million "
-                 "samples, else the cpu)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, render::RenderDevice>{{"cpu", render::RenderDevice::Cpu},
-                                                      {"gpu", render::RenderDevice::Gpu},
-                                                      {"auto", render::RenderDevice::Auto}},
-          CLI::ignore_case))
+  app.add_option_function<std::string>(
+         "--device",
+         [&o](const std::string& device) {
+           const std::map<std::string, render::RenderDevice> devices{
+               {"cpu", render::RenderDevice::Cpu},
+               {"gpu", render::RenderDevice::Gpu},
+               {"auto", render::RenderDevice::Auto}};
+           o.settings.device = devices.at(device);
+         },
+         "where to trace: cpu, gpu (a Vulkan device with double precision; lavapipe counts) or "
+         "auto (a real GPU when present and the image has at least a million samples, else the "
+         "cpu)")
+      ->check(CLI::IsMember({"cpu", "gpu", "auto"}))
       ->option_text("cpu|gpu|auto")
       ->default_str("cpu");
   app.add_option("--seed", o.settings.seed, "seed of the sample positions")
