@@ -13,6 +13,9 @@
 #include <thread>
 
 #include "renderer/adaptive_sampling.h"
+#if SCENEFILE_VULKAN
+#include "renderer/gpu/gpu_render.h"
+#endif
 #include "renderer/saturating.h"
 #include "scenefile/matrix.h"
 
@@ -510,9 +513,59 @@ void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
 
 }  // namespace
 
+GpuProbe probeGpu(bool allowCpu) {
+  GpuProbe probe;
+#if SCENEFILE_VULKAN
+  gpu::DeviceProbe found = gpu::VulkanContext::probe(allowCpu);
+  probe.available = found.found;
+  probe.isCpu = found.isCpu;
+  probe.name = found.name;
+  probe.reason = found.reason;
+#else
+  (void)allowCpu;
+  probe.reason = "this build has no Vulkan (configured without SCENEFILE_VULKAN)";
+#endif
+  return probe;
+}
+
+RenderDevice chooseDevice(const RenderSettings& settings) {
+  if (settings.device != RenderDevice::Auto) return settings.device;
+  if (settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1) return RenderDevice::Cpu;
+  PixelRegion region = regionToRender(settings);
+  std::uint64_t samples = static_cast<std::uint64_t>(region.width()) *
+                          static_cast<std::uint64_t>(region.height()) *
+                          static_cast<std::uint64_t>(std::max(1, settings.samplesPerPixel));
+  if (samples < kAutoGpuMinSamples) return RenderDevice::Cpu;
+  return probeGpu(false).available ? RenderDevice::Gpu : RenderDevice::Cpu;
+}
+
+namespace {
+
+// The GPU path's refusals, before any device is touched.
+void checkGpuSettings(const RenderSettings& settings) {
+  if (settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1) {
+    throw DeviceUnavailable("adaptive anti-aliasing is not done on the gpu");
+  }
+#if !SCENEFILE_VULKAN
+  throw DeviceUnavailable(probeGpu().reason);
+#endif
+}
+
+}  // namespace
+
 Image renderImage(const RenderScene& scene, const RenderSettings& settings,
                   RenderStatistics* statistics, const ProgressCallback& progress,
                   const CancelFlag* cancel) {
+  if (chooseDevice(settings) == RenderDevice::Gpu) {
+    checkGpuSettings(settings);
+#if SCENEFILE_VULKAN
+    try {
+      return gpu::renderImageGpu(scene, settings, statistics, progress, cancel);
+    } catch (const gpu::VulkanError& e) {
+      throw DeviceUnavailable(e.what());
+    }
+#endif
+  }
   auto start = std::chrono::steady_clock::now();
   PixelRegion region = regionToRender(settings);
   Image image;
@@ -553,6 +606,17 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
 
 std::vector<std::int32_t> renderObjectIds(const RenderScene& scene,
                                           const RenderSettings& settings) {
+  if (chooseDevice(settings) == RenderDevice::Gpu) {
+#if SCENEFILE_VULKAN
+    try {
+      return gpu::renderObjectIdsGpu(scene, settings);
+    } catch (const gpu::VulkanError& e) {
+      throw DeviceUnavailable(e.what());
+    }
+#else
+    throw DeviceUnavailable(probeGpu().reason);
+#endif
+  }
   std::vector<std::int32_t> ids(static_cast<std::size_t>(settings.width) * settings.height, -1);
   PinholeCamera camera(scene.camera(), settings);
   forEachTile(

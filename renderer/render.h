@@ -7,6 +7,8 @@
 #include <exception>
 #include <functional>
 #include <glm/vec3.hpp>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "renderer/render_scene.h"
@@ -28,6 +30,24 @@ struct PixelRegion {
 // heights differing by at most 1 (the taller first). Empty where the index
 // is out of range or there are more bands than rows.
 PixelRegion imageTile(int width, int height, int index, int count);
+
+// Where renderImage traces (docs/RENDERING.md, "The GPU path").
+enum class RenderDevice {
+  Cpu,
+  // A Vulkan device with shaderFloat64 and shaderInt64 (lavapipe, a CPU
+  // implementation, counts too): the same picture to within rounding.
+  Gpu,
+  // The GPU when a real one (not a CPU implementation) is present, the
+  // render uniform, and it has at least kAutoGpuMinSamples camera samples;
+  // the CPU otherwise.
+  Auto,
+};
+
+// Auto's threshold: a GPU render first pays a fixed start (instance, device,
+// the pipeline's compilation, the scene's upload: some tenths of a second),
+// which a 2-thread CPU spends on about a million camera samples of a simple
+// scene (docs/PERFORMANCE.md); below that the CPU is done first.
+inline constexpr std::uint64_t kAutoGpuMinSamples = 1'000'000;
 
 struct RenderSettings {
   int width = 640;
@@ -74,7 +94,33 @@ struct RenderSettings {
   // pixels are exactly those of the full image's render (a region reaching
   // outside the image is cut to it).
   PixelRegion region;
+  // On the GPU, adaptive anti-aliasing is refused, threads and the adaptive
+  // depth control's settings (pruneTolerance, maxRaysPerSample) are not
+  // used: every branch is traced to maxDepth.
+  RenderDevice device = RenderDevice::Cpu;
 };
+
+// Why a render cannot run on the device asked for: no Vulkan device with
+// doubles, a build without Vulkan, or a setting the GPU path does not do.
+class DeviceUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Whether the GPU path can run here, and on what.
+struct GpuProbe {
+  bool available = false;
+  bool isCpu = false;  // a CPU implementation such as lavapipe
+  std::string name;
+  std::string reason;  // why not, when not available
+};
+// Looks for a Vulkan device with shaderFloat64 and shaderInt64 (a real GPU
+// first); with `allowCpu` false a CPU implementation does not count.
+GpuProbe probeGpu(bool allowCpu = true);
+
+// The device a render with `settings` runs on: Auto decided (probing for a
+// GPU), Cpu and Gpu as they are.
+RenderDevice chooseDevice(const RenderSettings& settings);
 
 // Primary rays of the scene's camera: a pinhole at the eye, forward and up
 // orthonormalised (forward first), the vertical field of view given and the
@@ -86,6 +132,12 @@ class PinholeCamera {
   // corner: pixel (i, j)'s centre is (i + 0.5, j + 0.5).
   Ray rayThrough(double x, double y) const;
   const glm::dvec3& eye() const { return eye_; }
+  // The rest of rayThrough's terms, for the GPU renderer.
+  const glm::dvec3& forward() const { return forward_; }
+  const glm::dvec3& up() const { return up_; }
+  const glm::dvec3& right() const { return right_; }
+  double tanHalfWidth() const { return tanHalfWidth_; }
+  double tanHalfHeight() const { return tanHalfHeight_; }
 
  private:
   glm::dvec3 eye_, forward_, up_, right_;
@@ -144,6 +196,14 @@ struct RenderStatistics {
   // those of them given samplesPerPixel.
   std::uint64_t refinedPixels = 0;
   std::uint64_t fullySampledPixels = 0;
+  // The GPU path's device (empty on the CPU), and the parts of `seconds`:
+  // creating the device and compiling the pipeline, packing and uploading
+  // the scene, the kernel (timestamp queries), and reading the image back.
+  std::string device;
+  double deviceStartSeconds = 0.0;
+  double uploadSeconds = 0.0;
+  double kernelSeconds = 0.0;
+  double readbackSeconds = 0.0;
 };
 
 // Called after each finished tile with the tiles done and the total.

@@ -92,6 +92,11 @@ class RenderScene {
   const scene::Camera& camera() const { return camera_; }
   bool hasTransparency() const { return hasTransparency_; }
   const Bvh& bvh() const { return bvh_; }
+  // What the GPU renderer uploads (renderer/gpu/gpu_scene.h): per BVH item
+  // its object, the planes kept apart, and each object's 3x3 block.
+  const std::vector<std::uint32_t>& boundedObjects() const { return bounded_; }
+  const std::vector<std::uint32_t>& planeObjects() const { return planes_; }
+  const glm::dmat3& linearToWorld(std::uint32_t object) const { return linearToWorld_[object]; }
 
   // The nearest surface with 0 < t < tMax.
   std::optional<Hit> closestHit(const Ray& ray, const RaySource& source,

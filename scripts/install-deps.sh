@@ -49,6 +49,12 @@ packages=(
   valgrind
   # make fuzz builds the libFuzzer targets with clang and its runtime.
   clang libclang-rt-14-dev
+  # The renderer's GPU path (renderer/gpu/, sfrender --device gpu): the
+  # Vulkan loader and headers, glslangValidator to compile its compute
+  # shader to SPIR-V at build time (glslc beside it), and Mesa's lavapipe,
+  # a CPU Vulkan driver with shaderFloat64, on which its tests run on every
+  # machine; vulkaninfo shows what a machine offers.
+  libvulkan-dev glslang-tools glslc mesa-vulkan-drivers vulkan-tools
 )
 # The glTF Validator runs on Node.js; a machine with node and npm already
 # (from Debian or elsewhere) keeps them.

@@ -8,15 +8,18 @@
 
 namespace acne {
 
-Measurement measureRenderer(const Layout& layout) {
+Measurement measureRenderer(const Layout& layout, render::RenderDevice device,
+                            std::vector<float>* rendered) {
   scene::Scene s = buildScene(layout);
   render::RenderSettings settings;
   settings.width = kWidth;
   settings.height = kHeight;
   settings.verticalFovDegrees = kFovDegrees;
   settings.samplesPerPixel = 1;
+  settings.device = device;
   render::RenderScene renderScene(s);
   render::Image image = render::renderImage(renderScene, settings);
+  if (rendered) *rendered = image.rgb;
   std::vector<std::int32_t> ids = render::renderObjectIds(renderScene, settings);
 
   std::vector<PixelTruth> truth = referencePixels(s, sceneSize(layout));

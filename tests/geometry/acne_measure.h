@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/render.h"
 #include "tests/geometry/acne_scene.h"
 
 namespace acne {
@@ -20,7 +21,12 @@ struct Measurement {
   int colourDisagreeOffEdge = 0;
 };
 
-Measurement measureRenderer(const Layout& layout);
+// `device`: where renderImage and renderObjectIds trace (the GPU path runs
+// the same checks, tests/geometry/acne_test.cpp). With `image`, the rendered
+// colours are kept there.
+Measurement measureRenderer(const Layout& layout,
+                            render::RenderDevice device = render::RenderDevice::Cpu,
+                            std::vector<float>* image = nullptr);
 
 // "3/1234" with a percentage, for the table.
 std::string fraction(int part, int whole);

@@ -10,10 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <string>
 
+#include "renderer/render.h"
 #include "tests/geometry/acne_measure.h"
 
 namespace acne {
@@ -27,8 +29,7 @@ namespace {
 
 class Acne : public testing::TestWithParam<acne::Layout> {};
 
-TEST_P(Acne, LitPixelsAreNeverDrawnAtAmbientLevel) {
-  acne::Measurement m = acne::measureRenderer(GetParam());
+void checkNoAcne(const acne::Measurement& m) {
   const acne::Counts& c = m.counts;
   std::printf("[ acne ] scale %-28s geometry %.3f%% (%d differ; %d by the image's colours)\n",
               m.layout.label.c_str(), 100.0 * (m.pixels - m.disagree) / m.pixels, m.disagree,
@@ -47,6 +48,31 @@ TEST_P(Acne, LitPixelsAreNeverDrawnAtAmbientLevel) {
   EXPECT_EQ(m.disagreeOffEdge, 0);
   EXPECT_EQ(m.colourDisagreeOffEdge, 0);
   EXPECT_GE(m.pixels - m.disagree, 0.995 * m.pixels);
+}
+
+TEST_P(Acne, LitPixelsAreNeverDrawnAtAmbientLevel) {
+  checkNoAcne(acne::measureRenderer(GetParam()));
+}
+
+// The same checks on the GPU path (lavapipe where no GPU is present), and
+// its image against the CPU's: at least 99.9% of the channels within 1/255.
+TEST_P(Acne, GpuLitPixelsAreNeverDrawnAtAmbientLevel) {
+  render::GpuProbe probe = render::probeGpu();
+  if (!probe.available) GTEST_SKIP() << "no Vulkan device: " << probe.reason;
+  std::vector<float> gpu, cpu;
+  acne::Measurement m = acne::measureRenderer(GetParam(), render::RenderDevice::Gpu, &gpu);
+  std::printf("[ acne ] on %s\n", probe.name.c_str());
+  checkNoAcne(m);
+  acne::measureRenderer(GetParam(), render::RenderDevice::Cpu, &cpu);
+  ASSERT_EQ(gpu.size(), cpu.size());
+  std::size_t identical = 0, close = 0;
+  for (std::size_t k = 0; k < gpu.size(); ++k) {
+    identical += gpu[k] == cpu[k] ? 1 : 0;
+    close += std::abs(gpu[k] - cpu[k]) <= 1.0f / 255.0f ? 1 : 0;
+  }
+  std::printf("[ acne ] gpu against cpu: %zu of %zu channels identical, %zu within 1/255\n",
+              identical, gpu.size(), close);
+  EXPECT_GE(static_cast<double>(close), 0.999 * static_cast<double>(gpu.size()));
 }
 
 std::string layoutName(const testing::TestParamInfo<acne::Layout>& info) {

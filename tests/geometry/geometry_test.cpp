@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "scenefile/transform.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "scenefile/transform.h"
 #include "tests/geometry/reference_caster.h"
 #include "tests/geometry/scene_builder.h"
 
@@ -215,9 +215,9 @@ void PrintTo(const GeometryCase& c, std::ostream* out) {
 
 class Geometry : public testing::TestWithParam<GeometryCase> {};
 
-TEST_P(Geometry, ObjectIdsAgreeWithExactCastAwayFromSilhouettes) {
-  const GeometryCase& c = GetParam();
+void checkObjectIds(const GeometryCase& c, render::RenderDevice device) {
   render::RenderSettings settings;
+  settings.device = device;
   settings.width = c.width;
   settings.height = c.height;
   settings.samplesPerPixel = 1;
@@ -274,6 +274,17 @@ TEST_P(Geometry, ObjectIdsAgreeWithExactCastAwayFromSilhouettes) {
   for (const std::string& line : report) std::printf("[ geometry ]   %s\n", line.c_str());
   EXPECT_GE(agreement, 0.995);
   EXPECT_EQ(offEdge, 0);
+}
+
+TEST_P(Geometry, ObjectIdsAgreeWithExactCastAwayFromSilhouettes) {
+  checkObjectIds(GetParam(), render::RenderDevice::Cpu);
+}
+
+// The GPU path's camera rays (lavapipe where no GPU is present).
+TEST_P(Geometry, GpuObjectIdsAgreeWithExactCastAwayFromSilhouettes) {
+  render::GpuProbe probe = render::probeGpu();
+  if (!probe.available) GTEST_SKIP() << "no Vulkan device: " << probe.reason;
+  checkObjectIds(GetParam(), render::RenderDevice::Gpu);
 }
 
 std::string caseName(const testing::TestParamInfo<GeometryCase>& info) {

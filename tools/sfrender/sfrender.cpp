@@ -82,6 +82,11 @@ std::string statisticsText(const render::RenderStatistics& s,
   line << "sfrender: left out " << withThousands(s.rays.pruned)
        << " branches (past the depth, or within their share of half a level of the image), traced "
        << withThousands(s.retracedPixels) << " pixels again\n";
+  if (!s.device.empty()) {
+    line << std::setprecision(3) << "sfrender: device " << s.device << ": start "
+         << s.deviceStartSeconds << " s, upload " << s.uploadSeconds << " s, kernel "
+         << s.kernelSeconds << " s, readback " << s.readbackSeconds << " s\n";
+  }
   if (settings.adaptiveThreshold > 0) {
     line << std::setprecision(2) << "sfrender: adaptive sampling refined "
          << withThousands(s.refinedPixels) << " of " << withThousands(s.pixels) << " pixels ("
@@ -390,7 +395,20 @@ int Renderer::run() {
     };
   }
   stage_.set("rendering");
-  render::Image image = render::renderImage(compiled, settings_, &statistics, progress);
+  if (settings_.device == render::RenderDevice::Gpu && settings_.adaptiveThreshold > 0 &&
+      settings_.samplesPerPixel > 1) {
+    output_.error("--adaptive is not done on the gpu; leave it out or use --device cpu");
+    return toInt(ExitCode::Usage);
+  }
+  render::Image image;
+  try {
+    image = render::renderImage(compiled, settings_, &statistics, progress);
+  } catch (const render::DeviceUnavailable& e) {
+    output_.error(std::string("cannot render on the gpu: ") + e.what() +
+                  "; install a Vulkan driver with shaderFloat64 (mesa-vulkan-drivers gives "
+                  "lavapipe) or use --device cpu");
+    return toInt(ExitCode::OutOfResources);
+  }
   output_.step("rendering");
   return writeImage(image, statistics);
 }

@@ -1,4 +1,7 @@
 // sfrender's options: what --help, the man page and the completion show.
+#include <map>
+#include <string>
+
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
 #include "tools/sfrender/image_file.h"
@@ -36,6 +39,21 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
       ->check(wholeNumberIn(0, kDepthCeiling));
   app.add_option("--threads", o.settings.threads, "threads to render with (0: every core)")
       ->check(wholeNumberIn(0, 1024));
+  app.add_option_function<std::string>(
+         "--device",
+         [&o](const std::string& device) {
+           const std::map<std::string, render::RenderDevice> devices{
+               {"cpu", render::RenderDevice::Cpu},
+               {"gpu", render::RenderDevice::Gpu},
+               {"auto", render::RenderDevice::Auto}};
+           o.settings.device = devices.at(device);
+         },
+         "where to trace: cpu, gpu (a Vulkan device with double precision; lavapipe counts) or "
+         "auto (a real GPU when present and the image has at least a million samples, else the "
+         "cpu)")
+      ->check(CLI::IsMember({"cpu", "gpu", "auto"}))
+      ->option_text("cpu|gpu|auto")
+      ->default_str("cpu");
   app.add_option("--seed", o.settings.seed, "seed of the sample positions")
       ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--adaptive", o.settings.adaptiveThreshold,

@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# The GPU path's benchmark (docs/PERFORMANCE.md, "GPU (Vulkan)"), in one go:
+# builds sfrender and sfgen (Release, SCENEFILE_VULKAN=ON) in build-gpu-bench,
+# (sfgen is one of the benchmarks' tools), makes floor scenes of 100,000 and 1,000,000 objects (sfgen --layout floor
+# -n N -s 1), and renders them and the default scene at 1920x1080, 1 spp, on
+# the GPU (sfrender --device gpu --stats: device start, upload, kernel from
+# Vulkan timestamp queries, readback) and on the CPU with 2 threads, printing
+# a table and writing it to $OUT/gpu_bench.md when OUT is set.
+#
+# Needs no network: every package is Debian's (scripts/install-deps.sh); the
+# script says what is missing and stops. Smaller runs, to check the script
+# on a CPU driver (lavapipe): GPU_BENCH_WIDTH, GPU_BENCH_HEIGHT,
+# GPU_BENCH_SIZES (object counts, "100000 1000000"), GPU_BENCH_CPU=0 to
+# leave out the CPU runs, GPU_BENCH_BUILD (the build directory).
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${GPU_BENCH_BUILD:-$root/build-gpu-bench}
+width=${GPU_BENCH_WIDTH:-1920}
+height=${GPU_BENCH_HEIGHT:-1080}
+sizes=${GPU_BENCH_SIZES:-100000 1000000}
+run_cpu=${GPU_BENCH_CPU:-1}
+data=$build/gpu-bench-scenes
+
+missing=()
+command -v cmake >/dev/null || missing+=("cmake (cmake)")
+command -v glslangValidator >/dev/null || missing+=("glslangValidator (glslang-tools)")
+[[ -f /usr/include/vulkan/vulkan.h ]] || missing+=("the Vulkan headers and loader (libvulkan-dev)")
+if ((${#missing[@]})); then
+  echo "gpu_bench: missing: ${missing[*]}; apt-get install them (scripts/install-deps.sh)" >&2
+  exit 1
+fi
+if command -v vulkaninfo >/dev/null; then
+  vulkaninfo 2>/dev/null | grep -E 'deviceName|shaderFloat64' | sed 's/^[[:space:]]*/gpu_bench: /' |
+    sort -u >&2 || true
+else
+  echo "gpu_bench: vulkaninfo (vulkan-tools) is not installed; sfrender will say which device" >&2
+fi
+
+if [[ -f /root/.ccache.env ]]; then
+  # shellcheck disable=SC1091
+  source /root/.ccache.env
+fi
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSCENEFILE_VULKAN=ON \
+  -DSCENEFILE_BUILD_TESTS=OFF -DSCENEFILE_BUILD_BENCH=ON -DSCENEFILE_BUILD_PYTHON=OFF \
+  -DSCENEFILE_BUILD_DOCS=OFF >/dev/null
+cmake --build "$build" -j"$(nproc)" --target sfrender sfgen >/dev/null
+bin=$build/bin
+
+mkdir -p "$data"
+scenes=(default)
+for n in $sizes; do
+  [[ -f $data/floor-$n.sf ]] ||
+    "$bin/sfgen" --layout floor -n "$n" -s 1 --aspect "$(awk -v w="$width" -v h="$height" \
+      'BEGIN { printf "%.17g", w / h }')" -o "$data/floor-$n.sf" >/dev/null
+  scenes+=("floor-$n")
+done
+
+# render SCENE DEVICE: sfrender's --stats lines, and the wall time of the run.
+render() {
+  local input=() extra=()
+  [[ $1 == default ]] || input=("$data/$1.sf")
+  if [[ $2 == gpu ]]; then extra=(--device gpu); else extra=(--device cpu --threads 2); fi
+  local start end
+  start=$(date +%s.%N)
+  "$bin/sfrender" "${input[@]}" --width "$width" --height "$height" --spp 1 --depth 5 \
+    "${extra[@]}" --stats -o "$data/$1-$2.png" 2>&1
+  end=$(date +%s.%N)
+  echo "wall $(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }')"
+}
+field() { sed -n "s/.*$1 \([0-9.]*\) s.*/\1/p" | head -n 1; }
+
+table=$(mktemp)
+trap 'rm -f "$table"' EXIT
+device=""
+{
+  echo "| scene | GPU start s | upload s | kernel s | readback s | GPU render s | GPU wall s | CPU (2 threads) render s | CPU wall s |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+} >"$table"
+for scene in "${scenes[@]}"; do
+  gpu=$(render "$scene" gpu) || {
+    echo "gpu_bench: sfrender --device gpu failed:" >&2
+    echo "$gpu" >&2
+    exit 1
+  }
+  device=$(sed -n 's/^sfrender: device \(.*\): start.*/\1/p' <<<"$gpu")
+  total=$(sed -n 's/.*depth 5: \([0-9.]*\) s,.*/\1/p' <<<"$gpu")
+  cpu_total="-" cpu_wall="-"
+  if [[ $run_cpu == 1 ]]; then
+    cpu=$(render "$scene" cpu)
+    cpu_total=$(sed -n 's/.*depth 5: \([0-9.]*\) s,.*/\1/p' <<<"$cpu")
+    cpu_wall=$(sed -n 's/^wall //p' <<<"$cpu")
+  fi
+  echo "| $scene | $(field start <<<"$gpu") | $(field upload <<<"$gpu") | $(field kernel <<<"$gpu") | $(field readback <<<"$gpu") | $total | $(sed -n 's/^wall //p' <<<"$gpu") | $cpu_total | $cpu_wall |" >>"$table"
+done
+
+{
+  echo "GPU benchmark: ${width}x${height}, 1 spp, depth 5; device: ${device:-unknown}; CPU: $(nproc) cores, 2 threads used"
+  echo
+  cat "$table"
+} | if [[ -n ${OUT:-} ]]; then tee "$OUT/gpu_bench.md"; else cat; fi

@@ -1,0 +1,71 @@
+// A RenderScene as the compute shader (renderer/gpu/render.comp) reads it:
+// flat arrays in the shader's layouts, uploaded once into device-local
+// buffers.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "renderer/gpu/vulkan_context.h"
+#include "renderer/render.h"
+
+namespace render::gpu {
+
+// The shader's Params block, field for field (std430).
+struct GpuParams {
+  double eye[4];
+  double forward[4];
+  double up[4];
+  double right[4];
+  double tanHalfWidth;
+  double tanHalfHeight;
+  double imageWidth;
+  double imageHeight;
+  std::uint64_t seed;
+  std::int32_t regionX0;
+  std::int32_t regionY0;
+  std::int32_t regionWidth;
+  std::int32_t regionHeight;
+  std::int32_t rowBase;
+  std::int32_t samplesPerPixel;
+  std::int32_t maxDepth;
+  std::int32_t planeCount;
+  std::int32_t lightCount;
+  std::int32_t nodeCount;
+  std::int32_t hasTransparency;
+  std::int32_t eyeMediaCount;
+  std::int32_t idsOnly;
+  std::int32_t pad0;
+  std::uint32_t eyeMedia[8];
+};
+static_assert(sizeof(GpuParams) == 256, "GpuParams must match render.comp's Params");
+
+// The shader's media stack holds this many solids (the CPU's, 64); a ray
+// inside more nested solids keeps the outermost ones, as the CPU's stack
+// does past its own capacity.
+inline constexpr int kGpuMediaCapacity = 8;
+// Doubles an object in the objects buffer (the shader's kObjectDoubles).
+inline constexpr int kObjectDoubles = 32;
+
+// The scene in the shader's layouts, on the host.
+struct GpuSceneData {
+  std::vector<double> objects;        // kObjectDoubles each
+  std::vector<std::uint32_t> nodes;   // BvhNode's 32 bytes as 8 words
+  std::vector<std::uint32_t> items;   // per BVH item, its object
+  std::vector<std::uint32_t> planes;  // the plane objects
+  std::vector<double> lights;         // position, colour
+};
+
+GpuSceneData packScene(const RenderScene& scene);
+
+// The scene's buffers on the device.
+struct GpuScene {
+  Buffer objects, nodes, items, planes, lights;
+  std::uint64_t bytes = 0;
+};
+
+// Copies `data` into device-local buffers through one staging buffer.
+GpuScene uploadScene(const VulkanContext& context, const GpuSceneData& data);
+void destroyScene(const VulkanContext& context, GpuScene& scene);
+
+}  // namespace render::gpu
