@@ -7,7 +7,11 @@
 #  3. the builder's id view (F9), taken from the X server, and the renderer's
 #     object ids agree on every pixel farther than 2 px from an edge (at most
 #     0.1% of those may differ; in practice none do);
-#  4. the saved scene opened and saved again is the same file, byte for byte.
+#  4. undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y) give back the scenes they
+#     should, as saved files;
+#  5. the saved scene opened and saved again is the same file, byte for byte;
+#  6. no key is lost: a 40-key sequence replayed 20 times with both cores
+#     kept busy saves the same bytes every time.
 # Usage: x11_session.sh BIN_DIR SOURCE_DIR [SCREENSHOT_OUT.png]
 # Exits 77 (skipped) when Xvfb, xdotool, xwd or netpbm is missing.
 set -euo pipefail
@@ -27,7 +31,9 @@ done
 work="$(mktemp -d)"
 xvfb_pid=""
 builder_pid=""
+busy=()
 cleanup() {
+  for pid in "${busy[@]}"; do kill "$pid" 2>/dev/null || true; done
   [ -n "$builder_pid" ] && kill "$builder_pid" 2>/dev/null || true
   [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null || true
   wait 2>/dev/null || true
@@ -51,6 +57,14 @@ export DISPLAY=":$(head -1 "$work/display")"
 export LIBGL_ALWAYS_SOFTWARE=1
 cd "$work"
 
+# Waits up to 5 s for the window title to contain $1.
+wait_for_title() {
+  for _ in $(seq 50); do
+    case "$(xdotool getwindowname "$window")" in *"$1"*) return 0 ;; esac
+    sleep 0.1
+  done
+  fail "the title never showed '$1': $(xdotool getwindowname "$window")"
+}
 # Starts sfbuild with the given arguments and sets $window to its window.
 start_builder() {
   "$bin/sfbuild" "$@" >"$work/sfbuild.log" 2>&1 &
@@ -58,7 +72,9 @@ start_builder() {
   window="$(timeout 15 xdotool search --sync --onlyvisible --name '^sfbuild' | head -1)" ||
     fail "no sfbuild window"
   xdotool windowfocus --sync "$window"
-  sleep 0.3
+  # The title says "sfbuild | ..." once the first frame is drawn: the main
+  # loop runs and takes keys from then on.
+  wait_for_title "sfbuild |"
 }
 stop_builder() {
   kill "$builder_pid" 2>/dev/null || true
@@ -76,20 +92,14 @@ wait_for_file() {
   for _ in $(seq 100); do [ -s "$1" ] && return 0; sleep 0.1; done
   fail "$1 was not written"
 }
-# Waits up to 5 s for the window title to contain $1.
-wait_for_title() {
-  for _ in $(seq 50); do
-    case "$(xdotool getwindowname "$window")" in *"$1"*) return 0 ;; esac
-    sleep 0.1
-  done
-  fail "the title never showed '$1': $(xdotool getwindowname "$window")"
-}
 screenshot() {
   sleep 0.4  # a frame or two
   xwd -silent -id "$window" | xwdtopnm 2>/dev/null >"$1"
 }
 
 # 1. A sphere moved 1.5 along its X, a light moved 3 up, a green cube; save.
+# Each stands on the ground where the camera looks (the origin), the light
+# 2 above the sphere's top.
 start_builder
 keys 3 g x 1 period 5 Return  l g y 3 Return  2 b  p
 wait_for_file Scene1.sf
@@ -105,9 +115,9 @@ if [ -n "$screenshot_out" ] && command -v pnmtopng >/dev/null 2>&1; then
   pnmtopng builder.ppm >"$screenshot_out"
 fi
 
-# 2. A left click on the sphere (its centre, (1.5, 0, 0), is at about pixel
-# (410, 240)) selects it.
-xdotool mousemove --window "$window" 410 240 click 1
+# 2. A left click on the sphere (its centre, (1.5, 1, 0), is at about pixel
+# (396, 192); the cube covers up to about x = 380) selects it.
+xdotool mousemove --window "$window" 412 195 click 1
 wait_for_title "SPHERE 1"
 
 # 3. The id view against the renderer's object ids.
@@ -120,12 +130,53 @@ for _ in 1 2 3; do
   sleep 1
 done
 [ "$agreed" = yes ] || fail "the builder's picture and the renderer's disagree"
+
+# 4. Undo the cube's colour and its creation, redo both, one at a time.
+keys ctrl+z p
+wait_for_file Scene2.sf
+grep -A1 '^CUBE' Scene2.sf | tail -1 | grep -qx '1 0 0' || fail "undo left the cube green"
+keys ctrl+z p
+wait_for_file Scene3.sf
+grep -q '^CUBE' Scene3.sf && fail "undo left the cube"
+keys ctrl+shift+z ctrl+y p
+wait_for_file Scene4.sf
+cmp Scene1.sf Scene4.sf || fail "redo did not give back Scene1.sf"
 stop_builder
 
-# 4. Opened and saved again: Scene1.sf is there, so the save is Scene2.sf.
+# 5. Opened and saved again: Scene1.sf to Scene4.sf are there, so the save
+# is Scene5.sf.
 start_builder Scene1.sf
 keys p
-wait_for_file Scene2.sf
-cmp Scene1.sf Scene2.sf || fail "Scene1.sf saved again differs"
+wait_for_file Scene5.sf
+cmp Scene1.sf Scene5.sf || fail "Scene1.sf saved again differs"
+
 stop_builder
+rm -f Scene*.sf
+
+# 6. The same 40 keys, then undo back to the empty scene, 20 times over with
+# both cores busy: 20 identical files. The keys go without pause between
+# them (xdotool's 12 ms), far faster than a person types.
+sequence=(3 g x 1 period 5 Return  l g y 2 Return  2 g x minus 2 Return b
+          4 g z minus 3 Return n  s 0 period 5 Return  r y 4 5 Return  m  3 b  p)
+[ "${#sequence[@]}" -eq 40 ] || fail "the sequence has ${#sequence[@]} keys, not 40"
+undo_all=()
+for _ in $(seq 16); do undo_all+=(ctrl+z); done  # 15 changes, and one to spare
+for _ in 1 2; do
+  (while :; do :; done) &
+  busy+=($!)
+done
+start_builder
+for i in $(seq 20); do
+  xdotool key --delay 12 "${sequence[@]}"
+  wait_for_file "Scene$i.sf"
+  xdotool key --delay 12 "${undo_all[@]}"
+done
+kill "${busy[@]}" 2>/dev/null || true
+wait "${busy[@]}" 2>/dev/null || true
+stop_builder
+for i in $(seq 2 20); do
+  cmp Scene1.sf "Scene$i.sf" || fail "replay $i saved a different scene: $(diff Scene1.sf "Scene$i.sf")"
+done
+[ "$(grep -c '^\(SPHERE\|CUBE\|CYLINDER\|LIGHT\)$' Scene1.sf)" -eq 5 ] ||
+  fail "the replayed scene is not the one the keys build: $(cat Scene1.sf)"
 echo "sfbuild X11 session: all checks passed"

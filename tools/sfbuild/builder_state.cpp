@@ -11,6 +11,7 @@
 #include "scenefile/convert.h"
 #include "scenefile/matrix.h"
 #include "scenefile/transform.h"
+#include "tools/sfbuild/placement.h"
 
 namespace sfbuild {
 namespace {
@@ -106,12 +107,15 @@ void addObject(BuilderState& state, scene::ObjectKind kind) {
   scene::Object object;
   object.kind = kind;
   object.material.colour = kRed;
+  object.matrix = placedObjectMatrix(kind, state.scene.camera);
   state.scene.objects.push_back(object);
   state.selection = Selection{false, state.scene.objects.size() - 1};
 }
 
 void addLight(BuilderState& state) {
-  state.scene.lights.push_back(scene::Light{});
+  scene::Light light;
+  light.matrix[3] = glm::dvec4(placedLightPosition(state.scene), 1.0);
+  state.scene.lights.push_back(light);
   state.selection = Selection{true, state.scene.lights.size() - 1};
 }
 
@@ -167,6 +171,10 @@ const char* axisName(Axis axis) {
   return "";
 }
 
+void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files);
+void handleMouseButtonUnrecorded(BuilderState& state, MouseButton button, bool pressed, double x,
+                                 double y);
+
 std::string formatAmount(double value) {
   char buffer[32];
   auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
@@ -180,6 +188,7 @@ BuilderState initialState(int width, int height) {
   state.width = width;
   state.height = height;
   state.scene.camera.matrix = scene::cameraFromLookAt({0.0, 3.0, 8.0}, {0.0, 0.0, 0.0});
+  state.history = SceneHistory(state.scene);
   return state;
 }
 
@@ -188,6 +197,7 @@ BuilderState stateForScene(scene::Scene scene, int width, int height) {
   state.width = width;
   state.height = height;
   state.scene = std::move(scene);
+  state.history = SceneHistory(state.scene);
   return state;
 }
 
@@ -246,6 +256,45 @@ glm::dmat4 operationMatrix(Operation op, Axis axis, double amount) {
 }
 
 void handleKey(BuilderState& state, int key, const FileSystem& files) {
+  handleKeyUnrecorded(state, key, files);
+  recordChange(state);
+}
+
+void recordChange(BuilderState& state) {
+  if (state.operation != Operation::None || state.looking || state.panning) return;
+  state.history.record(state.scene);
+}
+
+namespace {
+void restore(BuilderState& state, const scene::Scene* snapshot) {
+  if (!snapshot) return;
+  state.scene = *snapshot;
+  if (state.selection && !selectedMatrix(state)) state.selection.reset();
+}
+}  // namespace
+
+void undo(BuilderState& state) {
+  cancelOperation(state);
+  recordChange(state);
+  restore(state, state.history.undo());
+}
+
+void redo(BuilderState& state) {
+  cancelOperation(state);
+  recordChange(state);
+  restore(state, state.history.redo());
+}
+
+namespace {
+void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files) {
+  if (key == kKeyUndo) {
+    undo(state);
+    return;
+  }
+  if (key == kKeyRedo) {
+    redo(state);
+    return;
+  }
   if (key == kKeyToggleIdView) {
     state.idView = !state.idView;
     return;
@@ -336,7 +385,16 @@ void handleKey(BuilderState& state, int key, const FileSystem& files) {
   }
 }
 
+}  // namespace
+
 void handleMouseButton(BuilderState& state, MouseButton button, bool pressed, double x, double y) {
+  handleMouseButtonUnrecorded(state, button, pressed, x, y);
+  recordChange(state);
+}
+
+namespace {
+void handleMouseButtonUnrecorded(BuilderState& state, MouseButton button, bool pressed, double x,
+                                 double y) {
   state.mouse = {x, y};
   switch (button) {
     case MouseButton::Left:
@@ -359,6 +417,8 @@ void handleMouseButton(BuilderState& state, MouseButton button, bool pressed, do
       return;
   }
 }
+
+}  // namespace
 
 void handleMouseMove(BuilderState& state, double x, double y) {
   glm::dvec2 delta = glm::dvec2(x, y) - state.mouse;
@@ -385,6 +445,7 @@ void handleMouseMove(BuilderState& state, double x, double y) {
 void handleScroll(BuilderState& state, double offset) {
   Frame f = cameraFrame(state.scene.camera);
   setCamera(state, f.eye + f.forward * (offset * kWheelUnitsPerStep), f.forward);
+  recordChange(state);
 }
 
 std::optional<std::string> saveScene(BuilderState& state, const FileSystem& files) {

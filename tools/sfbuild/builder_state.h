@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scenefile/scene.h"
+#include "tools/sfbuild/scene_history.h"
 
 namespace sfbuild {
 
@@ -23,6 +24,8 @@ enum Key : int {
   kKeyEscape,
   kKeyBackspace,
   kKeyToggleIdView,  // F9: each object in a flat colour of its own (tests)
+  kKeyUndo,          // Ctrl+Z
+  kKeyRedo,          // Ctrl+Shift+Z, Ctrl+Y
 };
 
 enum class MouseButton { Left, Right, Middle };
@@ -70,6 +73,10 @@ struct BuilderState {
   std::uint64_t saveAttempts = 0;
   bool idView = false;
   bool showHelp = false;
+
+  // Every change to `scene` that is finished (not a transform in progress,
+  // not a drag of the view) becomes a step of the history: recordChange.
+  SceneHistory history;
 };
 
 // The builder's opening state: an empty scene and the start camera.
@@ -85,10 +92,20 @@ struct FileSystem {
       write;
 };
 
+// Each of these records what it changed in the history.
 void handleKey(BuilderState& state, int key, const FileSystem& files);
 void handleMouseButton(BuilderState& state, MouseButton button, bool pressed, double x, double y);
 void handleMouseMove(BuilderState& state, double x, double y);
 void handleScroll(BuilderState& state, double offset);
+
+// Makes the scene as it is now a step of the history, unless a transform or
+// a drag of the view is under way (then its end does). What edits
+// state.scene from outside (the panels) calls it once the edit is done.
+void recordChange(BuilderState& state);
+// Ctrl+Z and Ctrl+Shift+Z: a transform in progress is cancelled first; the
+// selection is kept where it still names something.
+void undo(BuilderState& state);
+void redo(BuilderState& state);
 
 // P: the scene as the next free Scene<n>.sf; returns the name written, or
 // nothing (the reason in state.lastSave).

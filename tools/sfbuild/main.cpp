@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "scenefile/read.h"
 #include "tools/common/command_line.h"
@@ -25,8 +26,19 @@
 
 namespace {
 
+// A key as GLFW's callback gave it, kept for the main loop.
+struct KeyPress {
+  int key = 0;
+  int mods = 0;
+};
+
 struct App {
   sfbuild::BuilderState state;
+  // Filled by the key callback during glfwWaitEventsTimeout, emptied by the
+  // main loop right after, in order: no press is missed or reordered,
+  // however long a frame takes (glfwGetKey would only see the state at the
+  // time of asking, and miss a press and release between two frames).
+  std::vector<KeyPress> pendingKeys;
   sfbuild::FileSystem files;
   std::string title;
   bool quiet = false;
@@ -51,7 +63,12 @@ App* appOf(GLFWwindow* window) {
   return static_cast<App*>(glfwGetWindowUserPointer(window));
 }
 
-int builderKey(int key) {
+int builderKey(int key, int mods) {
+  if (mods & GLFW_MOD_CONTROL) {
+    if (key == GLFW_KEY_Z) return (mods & GLFW_MOD_SHIFT) ? sfbuild::kKeyRedo : sfbuild::kKeyUndo;
+    if (key == GLFW_KEY_Y) return sfbuild::kKeyRedo;
+    return -1;  // no other Ctrl combination means anything yet
+  }
   if ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) || (key >= GLFW_KEY_0 && key <= GLFW_KEY_9)) {
     return key;  // GLFW's codes for these are their ASCII characters
   }
@@ -77,17 +94,25 @@ int builderKey(int key) {
   }
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
   if (action != GLFW_PRESS && !(action == GLFW_REPEAT && key == GLFW_KEY_BACKSPACE)) return;
-  int k = builderKey(key);
-  if (k < 0) return;
-  App& app = *appOf(window);
-  bool helpBefore = app.state.showHelp;
-  sfbuild::handleKey(app.state, k, app.files);
-  tellSave(app);
-  if (app.state.showHelp && !helpBefore && !app.quiet) {
-    for (const std::string& line : sfbuild::helpLines()) std::cout << line << "\n";
-    std::cout.flush();
+  appOf(window)->pendingKeys.push_back({key, mods});
+}
+
+// Hands the keys pressed since the last frame to the builder, in order.
+void handleKeys(App& app) {
+  std::vector<KeyPress> keys;
+  keys.swap(app.pendingKeys);
+  for (const KeyPress& press : keys) {
+    int k = builderKey(press.key, press.mods);
+    if (k < 0) continue;
+    bool helpBefore = app.state.showHelp;
+    sfbuild::handleKey(app.state, k, app.files);
+    tellSave(app);
+    if (app.state.showHelp && !helpBefore && !app.quiet) {
+      for (const std::string& line : sfbuild::helpLines()) std::cout << line << "\n";
+      std::cout.flush();
+    }
   }
 }
 
@@ -242,6 +267,7 @@ int main(int argc, char** argv) {
   try {
     sfbuild::GlView view;
     while (!glfwWindowShouldClose(window)) {
+      handleKeys(app);
       view.draw(app.state);
       glfwSwapBuffers(window);
       std::string title = sfbuild::windowTitle(app.state);
