@@ -9,8 +9,10 @@
 #     0.1% of those may differ; in practice none do);
 #  4. undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y) give back the scenes they
 #     should, as saved files;
-#  5. the saved scene opened and saved again is the same file, byte for byte;
-#  6. no key is lost: a 40-key sequence replayed 20 times with both cores
+#  5. a number typed into the properties panel moves the selection, and
+#     undo takes it back;
+#  6. the saved scene opened and saved again is the same file, byte for byte;
+#  7. no key is lost: a 40-key sequence replayed 20 times with both cores
 #     kept busy saves the same bytes every time.
 # Usage: x11_session.sh BIN_DIR SOURCE_DIR [SCREENSHOT_OUT.png]
 # Exits 77 (skipped) when Xvfb, xdotool, xwd or netpbm is missing.
@@ -130,6 +132,7 @@ for _ in 1 2 3; do
   sleep 1
 done
 [ "$agreed" = yes ] || fail "the builder's picture and the renderer's disagree"
+keys F9  # back to the shaded view, with its panels
 
 # 4. Undo the cube's colour and its creation, redo both, one at a time.
 keys ctrl+z p
@@ -141,19 +144,43 @@ grep -q '^CUBE' Scene3.sf && fail "undo left the cube"
 keys ctrl+shift+z ctrl+y p
 wait_for_file Scene4.sf
 cmp Scene1.sf Scene4.sf || fail "redo did not give back Scene1.sf"
+
+# 5. A value edited in the properties panel: SPHERE 1 picked in the scene
+# panel (top left), its position's x field clicked, 2.5 typed, Enter. The
+# pointer rests on each before the click, as a hand's does, so that the
+# panels know it is theirs. The typed keys are the field's alone: no 2
+# makes a cube.
+click_at() {
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.3
+  xdotool click 1
+  sleep 0.2
+}
+click_at 40 68
+wait_for_title "SPHERE 1"
+click_at 27 223
+keys ctrl+a 2 period 5 Return p
+wait_for_file Scene5.sf
+grep -A2 '^SPHERE' Scene5.sf | tail -1 | grep -qx '1 0 0 2.5' ||
+  fail "the panel did not move the sphere to x = 2.5: $(cat Scene5.sf)"
+[ "$(grep -c '^\(SPHERE\|CUBE\|LIGHT\)$' Scene5.sf)" -eq 3 ] ||
+  fail "the keys typed into the panel reached the builder: $(cat Scene5.sf)"
+keys ctrl+z p
+wait_for_file Scene6.sf
+cmp Scene1.sf Scene6.sf || fail "undo did not take back the panel's edit"
 stop_builder
 
-# 5. Opened and saved again: Scene1.sf to Scene4.sf are there, so the save
-# is Scene5.sf.
+# 6. Opened and saved again: Scene1.sf to Scene6.sf are there, so the save
+# is Scene7.sf.
 start_builder Scene1.sf
 keys p
-wait_for_file Scene5.sf
-cmp Scene1.sf Scene5.sf || fail "Scene1.sf saved again differs"
+wait_for_file Scene7.sf
+cmp Scene1.sf Scene7.sf || fail "Scene1.sf saved again differs"
 
 stop_builder
 rm -f Scene*.sf
 
-# 6. The same 40 keys, then undo back to the empty scene, 20 times over with
+# 7. The same 40 keys, then undo back to the empty scene, 20 times over with
 # both cores busy: 20 identical files. The keys go without pause between
 # them (xdotool's 12 ms), far faster than a person types.
 sequence=(3 g x 1 period 5 Return  l g y 2 Return  2 g x minus 2 Return b

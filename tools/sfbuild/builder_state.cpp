@@ -375,6 +375,7 @@ void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files) 
       saveScene(state, files);
       break;
     case 'H':
+    case kKeyToggleHelp:
       state.showHelp = !state.showHelp;
       break;
     case kKeyEscape:
@@ -530,7 +531,67 @@ glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far) 
 }
 
 std::string windowTitle(const BuilderState& state) {
-  std::string title = "sfbuild | ";
+  std::string title = "sfbuild | " + modeText(state);
+  title += " | ";
+  if (!state.selection) {
+    title += "nothing selected";
+  } else if (state.selection->light) {
+    title += "LIGHT " + std::to_string(state.selection->index + 1);
+  } else if (state.selection->index < state.scene.objects.size()) {
+    title += std::string(scene::objectKindName(state.scene.objects[state.selection->index].kind)) +
+             " " + std::to_string(state.selection->index + 1);
+  }
+  if (!state.lastSave.empty()) title += " | " + state.lastSave;
+  if (!state.showHelp) title += " | H: keys";
+  return title;
+}
+
+void setObjectTransform(BuilderState& state, std::size_t index, const glm::dvec3& translation,
+                        const glm::dvec3& rotationDegrees, const glm::dvec3& scale) {
+  if (index >= state.scene.objects.size()) return;
+  std::vector<scene::TransformOp> ops;
+  auto add = [&ops](scene::TransformKind kind, const glm::dvec3& value) {
+    scene::TransformOp op;
+    op.kind = kind;
+    op.value = value;
+    ops.push_back(op);
+  };
+  constexpr double kRadians = std::numbers::pi / 180.0;
+  add(scene::TransformKind::Scale, scale);
+  add(scene::TransformKind::RotateX, glm::dvec3(rotationDegrees.x * kRadians, 0, 0));
+  add(scene::TransformKind::RotateY, glm::dvec3(rotationDegrees.y * kRadians, 0, 0));
+  add(scene::TransformKind::RotateZ, glm::dvec3(rotationDegrees.z * kRadians, 0, 0));
+  add(scene::TransformKind::Translate, translation);
+  cancelOperation(state);
+  state.scene.objects[index].matrix = scene::composeTransform(ops);
+  state.scene.objects[index].transforms.reset();
+  recordChange(state);
+}
+
+void setObjectMaterial(BuilderState& state, std::size_t index, const scene::Material& material) {
+  if (index >= state.scene.objects.size()) return;
+  state.scene.objects[index].material = material;
+  recordChange(state);
+}
+
+void setLight(BuilderState& state, std::size_t index, const glm::dvec3& position,
+              const glm::dvec3& colour) {
+  if (index >= state.scene.lights.size()) return;
+  cancelOperation(state);
+  state.scene.lights[index].matrix[3] = glm::dvec4(position, 1.0);
+  state.scene.lights[index].colour = colour;
+  recordChange(state);
+}
+
+void setCameraView(BuilderState& state, const glm::dvec3& eye, const glm::dvec3& lookAt) {
+  if (eye == lookAt) return;
+  state.scene.camera.matrix = scene::cameraFromLookAt(eye, lookAt);
+  state.scene.camera.lookAt.reset();
+  recordChange(state);
+}
+
+std::string modeText(const BuilderState& state) {
+  std::string title;
   if (state.operation == Operation::None) {
     title += "ready";
   } else if (state.axis == Axis::None) {
@@ -542,36 +603,22 @@ std::string windowTitle(const BuilderState& state) {
              : state.operation == Operation::Rotate ? " degrees"
                                                     : " times";
   }
-  title += " | ";
-  if (!state.selection) {
-    title += "nothing selected";
-  } else if (state.selection->light) {
-    title += "LIGHT " + std::to_string(state.selection->index + 1);
-  } else if (state.selection->index < state.scene.objects.size()) {
-    title += std::string(scene::objectKindName(state.scene.objects[state.selection->index].kind)) +
-             " " + std::to_string(state.selection->index + 1);
-  }
-  if (!state.lastSave.empty()) title += " | " + state.lastSave;
-  if (state.showHelp) {
-    title += " | keys:";
-    for (const std::string& line : helpLines()) title += "  " + line + ";";
-  } else {
-    title += " | H: keys";
-  }
   return title;
 }
 
 const std::vector<std::string>& helpLines() {
   static const std::vector<std::string> lines = {
-      "1 plane  2 cube  3 sphere  4 cylinder  L light",
+      "1 plane  2 cube  3 sphere  4 cylinder  L light (where the camera looks)",
       "X delete the selection",
       "G / R / S then X, Y or Z: move, rotate, scale on the object's axis",
       "S alone: scale on all axes",
       "type a number, Enter: exact amount; Esc: cancel",
       "V red  B green  N blue  M purple",
       "P save Scene<n>.sf",
+      "Ctrl+Z undo  Ctrl+Shift+Z or Ctrl+Y redo",
+      "F9 id view (each object in a flat colour)",
       "left click select; middle drag pan; right drag look; wheel forward",
-      "H hide this list",
+      "H or F1 show or hide this list",
   };
   return lines;
 }

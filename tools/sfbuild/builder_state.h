@@ -26,6 +26,7 @@ enum Key : int {
   kKeyToggleIdView,  // F9: each object in a flat colour of its own (tests)
   kKeyUndo,          // Ctrl+Z
   kKeyRedo,          // Ctrl+Shift+Z, Ctrl+Y
+  kKeyToggleHelp,    // F1, as H
 };
 
 enum class MouseButton { Left, Right, Middle };
@@ -126,8 +127,23 @@ glm::dmat4 operationMatrix(Operation op, Axis axis, double amount);
 glm::dmat4 viewMatrix(const BuilderState& state);
 glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far);
 
+// The edits of the properties panel, each recorded in the history: an
+// object's placement as the instruction file writes it (M = T Rz Ry Rx S,
+// angles in degrees), its material, a light, the camera by eye and look-at
+// point (the look-at point must differ from the eye). An index past the end
+// does nothing.
+void setObjectTransform(BuilderState& state, std::size_t index, const glm::dvec3& translation,
+                        const glm::dvec3& rotationDegrees, const glm::dvec3& scale);
+void setObjectMaterial(BuilderState& state, std::size_t index, const scene::Material& material);
+void setLight(BuilderState& state, std::size_t index, const glm::dvec3& position,
+              const glm::dvec3& colour);
+void setCameraView(BuilderState& state, const glm::dvec3& eye, const glm::dvec3& lookAt);
+
+// What the builder is doing: "ready", "move: press X, Y or Z",
+// "move X 1.5_ units" (the status line, and the title).
+std::string modeText(const BuilderState& state);
 std::string windowTitle(const BuilderState& state);
-// The key list that H shows.
+// The key list that H (or F1) shows and hides.
 const std::vector<std::string>& helpLines();
 
 // The flat colour of object `index` in the id view, 8 bits a channel, and

@@ -160,8 +160,10 @@ TEST(BuilderState, SavesNumberedFilesAndNeverOverwrites) {
   EXPECT_EQ(files.files["Scene1.sf"], files.files["Scene3.sf"]);
   EXPECT_EQ(state.lastSave, "saved Scene3.sf");
   EXPECT_NE(windowTitle(state).find("saved Scene3.sf"), std::string::npos);
+  EXPECT_NE(windowTitle(state).find("H: keys"), std::string::npos);
   press(state, "H", files);
-  EXPECT_NE(windowTitle(state).find("P save Scene<n>.sf"), std::string::npos);
+  EXPECT_TRUE(state.showHelp);
+  EXPECT_EQ(windowTitle(state).find("H: keys"), std::string::npos);
 
   // The file is the builder's scene, camera included; opened and saved again
   // it is the same, byte for byte.
@@ -326,6 +328,25 @@ TEST(History, UndoAndRedoEveryChange) {
   handleKey(state, kKeyUndo, files.fs());
   EXPECT_TRUE(state.scene.objects.empty());
   EXPECT_EQ(state.operation, Operation::None);
+}
+
+TEST(History, PanelEditsAreStepsToo) {
+  FakeFiles files;
+  BuilderState state = initialState(640, 480);
+  press(state, "2L", files);
+  scene::Scene before = state.scene;
+  setObjectTransform(state, 0, {1, 2, 3}, {90, 0, 0}, {2, 2, 2});
+  glm::dmat4 m = state.scene.objects[0].matrix;
+  EXPECT_EQ(glm::dvec3(m[3]), glm::dvec3(1, 2, 3));
+  EXPECT_NEAR(m[1][2], 2.0, 1e-12);  // local +Y turned onto world +Z, doubled
+  scene::Material shiny;
+  shiny.shininess = 20;
+  setObjectMaterial(state, 0, shiny);
+  setLight(state, 0, {0, 9, 0}, {0.5, 0.5, 0.5});
+  setCameraView(state, {10, 1, 0}, {0, 1, 0});
+  EXPECT_EQ(state.scene.lights[0].position(), glm::dvec3(0, 9, 0));
+  for (int i = 0; i < 4; ++i) handleKey(state, kKeyUndo, files.fs());
+  EXPECT_EQ(state.scene, before);
 }
 
 TEST(History, AViewDragIsOneStepAndTheLengthIsBounded) {

@@ -3,6 +3,9 @@
 #include <epoxy/gl.h>
 // GLFW after the loader, which brings the GL declarations.
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <cctype>
 #include <cstdint>
@@ -22,6 +25,7 @@
 #include "tools/common/tool_streams.h"
 #include "tools/sfbuild/builder_state.h"
 #include "tools/sfbuild/gl_view.h"
+#include "tools/sfbuild/panels.h"
 #include "tools/sfbuild/sfbuild_command_line.h"
 
 namespace {
@@ -74,6 +78,8 @@ int builderKey(int key, int mods) {
   }
   if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) return '0' + (key - GLFW_KEY_KP_0);
   switch (key) {
+    case GLFW_KEY_F1:
+      return sfbuild::kKeyToggleHelp;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT:
       return '-';
@@ -99,10 +105,12 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
   appOf(window)->pendingKeys.push_back({key, mods});
 }
 
-// Hands the keys pressed since the last frame to the builder, in order.
+// Hands the keys pressed since the last frame to the builder, in order;
+// while a text field of the panels has the keyboard, they are its alone.
 void handleKeys(App& app) {
   std::vector<KeyPress> keys;
   keys.swap(app.pendingKeys);
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
   for (const KeyPress& press : keys) {
     int k = builderKey(press.key, press.mods);
     if (k < 0) continue;
@@ -117,6 +125,8 @@ void handleKeys(App& app) {
 }
 
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
+  // A press on a panel is the panel's; a release always ends a drag.
+  if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) return;
   double x = 0, y = 0;
   glfwGetCursorPos(window, &x, &y);
   sfbuild::MouseButton b;
@@ -138,6 +148,7 @@ void onCursor(GLFWwindow* window, double x, double y) {
 }
 
 void onScroll(GLFWwindow* window, double, double dy) {
+  if (ImGui::GetIO().WantCaptureMouse) return;
   sfbuild::handleScroll(appOf(window)->state, dy);
 }
 
@@ -263,12 +274,31 @@ int main(int argc, char** argv) {
   output.detail(std::string("OpenGL ") + reinterpret_cast<const char*>(glGetString(GL_VERSION)) +
                 " on " + reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 
+  // The panels: ImGui's GLFW backend calls the callbacks above after its
+  // own (it chains them); no imgui.ini, so every start looks the same.
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  app.state.showHelp = true;  // the key list, until H or F1 hides it
+
   int status = 0;
   try {
     sfbuild::GlView view;
+    sfbuild::Panels panels;
     while (!glfwWindowShouldClose(window)) {
       handleKeys(app);
       view.draw(app.state);
+      // The id view is compared pixel by pixel with the renderer's ids: no
+      // panels over it.
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      if (!app.state.idView) panels.draw(app.state);
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       glfwSwapBuffers(window);
       std::string title = sfbuild::windowTitle(app.state);
       if (title != app.title) {
@@ -281,6 +311,9 @@ int main(int argc, char** argv) {
     output.error(e.what());
     status = 1;
   }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
   glfwDestroyWindow(window);
   glfwTerminate();
   return tools::closeStandardStreams("sfbuild", status);
