@@ -31,6 +31,8 @@ bench: build
 	@bash bench/run.sh $(BUILD_DIR)
 	@bash bench/render_bench.sh $(BUILD_DIR)
 	@bash bench/render_suite.sh $(BUILD_DIR)
+	@bash bench/tracers.sh $(BUILD_DIR)
+	@bash bench/equal_error.sh $(BUILD_DIR)
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer:
 # the first finding, a leak included, aborts the program and fails its test.

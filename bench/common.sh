@@ -50,3 +50,18 @@ compiler_of() {
 }
 povray_version() { povray --version 2>&1 | sed -n 's/^\(POV-Ray [0-9.]*[^ ]*\).*/\1/p' | head -n 1; }
 short_commit() { git -C "$1" rev-parse --short HEAD 2>/dev/null || echo unknown; }
+
+# replace_section NAME FILE: FILE's text in place of the lines between NAME's
+# markers ("<!-- BEGIN NAME", "<!-- END NAME") in $doc, or at its end when it
+# has none yet. Uses $doc and the scratch folder $work of the sourcing script.
+replace_section() {
+  if grep -q "^<!-- BEGIN $1" "$doc"; then
+    awk -v section="$2" -v name="$1" '
+      $0 ~ "^<!-- BEGIN " name { while ((getline line < section) > 0) print line; skip = 1; next }
+      $0 ~ "^<!-- END " name { skip = 0; next }
+      !skip { print }' "$doc" >"$work/doc.md"
+    cat "$work/doc.md" >"$doc"
+  else
+    { echo; cat "$2"; } >>"$doc"
+  fi
+}

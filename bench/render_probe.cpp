@@ -1,14 +1,18 @@
 // render_probe: the measurements bench/render_suite.sh needs that sfrender
 // does not print, taken with the same libraries sfrender uses.
 //
-//   render_probe time SCENE [--width W --height H --spp S --depth D --threads T]
+//   render_probe time SCENE [--width W --height H --spp S --depth D --threads T
+//                            --packets 0|1]
 //       Reads SCENE (any format sfrender reads), then times apart, on one
 //       process: parsing (scene::parseScene on the file in memory), building
 //       the render scene and its BVH (render::RenderScene construction), and
 //       rendering (render::renderImage). Prints "key: value" lines:
 //       file_bytes, objects, parse_s, build_s, render_s, primary_rays,
 //       total_rays, ns_per_primary_ray (render wall time over primary rays,
-//       times the threads: CPU time per ray), peak_rss_bytes.
+//       times the threads: CPU time per ray), peak_rss_bytes, and rgb_fnv1a
+//       (a hash of the image's floats, to see that two renders agree bit
+//       for bit). --packets 0 finds camera rays' hits one by one
+//       (RenderSettings::packets), for comparing the two.
 //   render_probe default-scene OUT.txt
 //       Writes render::defaultScene() (the scene sfrender draws with no
 //       input) as an instruction file, materials included.
@@ -16,28 +20,41 @@
 //       RMSE and PSNR of A against B (B the reference), through OpenImageIO's
 //       ImageBufAlgo::compare, on the images' values in [0, 1]. Prints rmse,
 //       psnr_db, max_error.
+//   render_probe adaptive SCENE|default [--width W --height H --reference-spp R]
+//       Adaptive anti-aliasing against uniform sampling, on one thread (so
+//       that the time is CPU time): renders a reference at R samples a pixel,
+//       then uniform 1, 4, 16 and 64 spp and adaptive sampling at several
+//       thresholds, first levels and spp, and prints for each its CPU
+//       seconds, mean samples a pixel and RMSE against the reference (values
+//       clamped to [0, 1], as the image stores them). docs/RENDERING.md,
+//       "Adaptive sampling", holds the figures.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 
-#include <CLI/CLI.hpp>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include "libscene/formats/instruction/instruction_writer.h"
-#include "scenefile/read.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "scenefile/read.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 long peakRssBytes() {
   std::ifstream status("/proc/self/status");
@@ -66,7 +83,7 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
     return 1;
   }
   t0 = Clock::now();
-  render::RenderScene compiled(result.scene);
+  render::RenderScene compiled(result.scene, settings.threads);
   const double build = since(t0);
   render::RenderStatistics stats;
   t0 = Clock::now();
@@ -84,6 +101,15 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
   std::printf("ns_per_primary_ray: %.3f\n",
               stats.rays.primary ? renderSeconds * threads * 1e9 / stats.rays.primary : 0.0);
   std::printf("peak_rss_bytes: %ld\n", peakRssBytes());
+  std::uint64_t hash = 0xCBF29CE484222325ull;
+  for (float v : image.rgb) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    for (int byte = 0; byte < 4; ++byte) {
+      hash = (hash ^ ((bits >> (8 * byte)) & 0xFFu)) * 0x100000001B3ull;
+    }
+  }
+  std::printf("rgb_fnv1a: %016llx\n", static_cast<unsigned long long>(hash));
   return image.rgb.empty() ? 1 : 0;
 }
 
@@ -118,6 +144,63 @@ int compareImages(const std::string& a, const std::string& b) {
   return 0;
 }
 
+// RMSE of two images' values clamped to [0, 1].
+double clampedRmse(const render::Image& a, const render::Image& b) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < a.rgb.size(); ++k) {
+    double d = std::clamp(a.rgb[k], 0.0f, 1.0f) - std::clamp(b.rgb[k], 0.0f, 1.0f);
+    sum += d * d;
+  }
+  return a.rgb.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(a.rgb.size()));
+}
+
+int adaptiveSweep(const std::string& path, render::RenderSettings settings, int referenceSpp) {
+  scene::Scene scene;
+  if (path == "default") {
+    scene = render::defaultScene();
+  } else {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    scene::ReadResult result = scene::parseScene(buffer.str(), path);
+    if (!in || !result.ok()) {
+      std::cerr << "render_probe: cannot read " << path << "\n";
+      return 1;
+    }
+    scene = std::move(result.scene);
+  }
+  render::RenderScene compiled(scene);
+  settings.threads = 1;
+  render::RenderSettings reference = settings;
+  reference.samplesPerPixel = referenceSpp;
+  reference.seed = 12345;  // samples apart from those measured
+  render::Image truth = render::renderImage(compiled, reference);
+  std::printf("%-9s %4s %5s %6s %9s %9s %10s %9s\n", "mode", "spp", "first", "thresh", "cpu_s",
+              "samples", "rmse", "refined%");
+  auto run = [&](int spp, double threshold, int firstLevel) {
+    render::RenderSettings s = settings;
+    s.samplesPerPixel = spp;
+    s.adaptiveThreshold = threshold;
+    s.adaptiveFirstLevel = firstLevel;
+    render::RenderStatistics stats;
+    auto t0 = Clock::now();
+    render::Image image = render::renderImage(compiled, s, &stats);
+    double seconds = since(t0);
+    std::printf("%-9s %4d %5d %6.3f %9.3f %9.2f %10.6f %9.2f\n",
+                threshold > 0 ? "adaptive" : "uniform", spp, threshold > 0 ? firstLevel : 0,
+                threshold, seconds, static_cast<double>(stats.samples) / stats.pixels,
+                clampedRmse(image, truth), 100.0 * stats.refinedPixels / stats.pixels);
+    std::fflush(stdout);
+  };
+  for (int spp : {1, 4, 16, 64}) run(spp, 0.0, 0);
+  for (int spp : {16, 64}) {
+    for (int first : {0, 4}) {
+      for (double threshold : {0.01, 0.03, 0.1}) run(spp, threshold, first);
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -132,12 +215,20 @@ int main(int argc, char** argv) {
   timeCmd->add_option("--spp", settings.samplesPerPixel);
   timeCmd->add_option("--depth", settings.maxDepth);
   timeCmd->add_option("--threads", settings.threads);
+  timeCmd->add_option("--packets", settings.packets);
   auto* defaultCmd = app.add_subcommand("default-scene", "write the default scene");
   defaultCmd->add_option("output", output)->required();
   auto* compareCmd = app.add_subcommand("compare", "RMSE and PSNR of A against B");
   compareCmd->add_option("a", a)->required();
   compareCmd->add_option("b", b)->required();
+  int referenceSpp = 256;
+  auto* adaptiveCmd = app.add_subcommand("adaptive", "adaptive against uniform sampling");
+  adaptiveCmd->add_option("scene", input)->required();
+  adaptiveCmd->add_option("--width", settings.width);
+  adaptiveCmd->add_option("--height", settings.height);
+  adaptiveCmd->add_option("--reference-spp", referenceSpp);
   CLI11_PARSE(app, argc, argv);
+  if (*adaptiveCmd) return adaptiveSweep(input, settings, referenceSpp);
   if (*timeCmd) return timeScene(input, settings);
   if (*defaultCmd) return writeDefault(output);
   return compareImages(a, b);

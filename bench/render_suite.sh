@@ -23,13 +23,19 @@
 #    anti-aliasing (1 sample), max_trace_level = depth + 1.
 # 4. Where the time goes: perf record on sfrender for the main scenes.
 #
+# Three more parts, not run unless SUITE_PARTS names them (make bench runs
+# their scripts itself): `embree` and `float` run bench/tracers.sh (Against
+# Embree; Single precision), `equal-error` runs bench/equal_error.sh (Equal
+# error), each with its own settings from the environment.
+#
 # Everything generated goes under SUITE_DIR (/tmp/scenefile-render-suite),
 # never into the repository, except the plots under docs/perf/.
 #
 # Environment: SUITE_RUNS (3), SUITE_BIG_RUNS (2), SUITE_THREADS (2),
 # SUITE_SIZES ("10 100 1000 10000 100000 1000000"), SUITE_REF_SPP (256),
 # SUITE_SVE_WIDTH (256), SUITE_SVE_HEIGHT (144), SUITE_DIR,
-# SUITE_PARTS ("compare scaling error profile").
+# SUITE_PARTS ("compare scaling error profile"; also "embree", "float",
+# "equal-error").
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -84,18 +90,6 @@ load() { cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo unknown; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# replace_section NAME FILE: FILE's text between NAME's markers in the doc.
-replace_section() {
-  if grep -q "^<!-- BEGIN $1" "$doc"; then
-    awk -v section="$2" -v name="$1" '
-      $0 ~ "^<!-- BEGIN " name { while ((getline line < section) > 0) print line; skip = 1; next }
-      $0 ~ "^<!-- END " name { skip = 0; next }
-      !skip { print }' "$doc" >"$work/doc.md"
-    cat "$work/doc.md" >"$doc"
-  else
-    { echo; cat "$2"; } >>"$doc"
-  fi
-}
 
 cpu=$(cpu_model)
 mem_total=$(memory_total)
@@ -113,22 +107,25 @@ Linux $(uname -r), ${compiler_version:-unknown compiler}, ${build_type:-unknown}
 $commit; ${pov_version:-POV-Ray} from Debian"
 
 # --- The scenes ---------------------------------------------------------------
-aspect=$(awk -v w="$width" -v h="$height" 'BEGIN { printf "%.17g", w / h }')
-log "preparing the scenes in $data"
-"$bin/render_probe" default-scene "$data/default.txt"
-cp "$root/bench/scenes/glass-mirror.txt" "$data/glass-mirror.txt"
-for s in default glass-mirror; do
-  "$bin/sfconvert" "$data/$s.txt" "$data/$s.pov" --width "$width" --height "$height" --fov 60 \
-    2>"$work/convert-$s.log" || die "sfconvert $s failed: $(tail -n 3 "$work/convert-$s.log")"
-done
-all_sizes=$(printf "%s\n" $sizes $(printf "%s\n" ${SUITE_COMPARE_SCENES:-floor-10 floor-1000 floor-100000 floor-1000000} | sed -n "s/^floor-//p") 1000 1000000 | sort -gu | tr "\n" " ")
-for n in $all_sizes; do
-  if [[ ! -f $data/floor-$n.sf || ! -f $data/floor-$n.pov || $bin/sfgen -nt $data/floor-$n.sf ]]; then
-    log "generating floor-$n"
-    "$bin/sfgen" --layout floor -n "$n" -s "$seed" --aspect "$aspect" -o "$data/floor-$n.sf" \
-      --pov "$data/floor-$n.pov" >/dev/null
-  fi
-done
+# Only parts 1 to 4 need them: the others make their own.
+if has_part compare || has_part scaling || has_part error || has_part profile; then
+  aspect=$(awk -v w="$width" -v h="$height" 'BEGIN { printf "%.17g", w / h }')
+  log "preparing the scenes in $data"
+  "$bin/render_probe" default-scene "$data/default.txt"
+  cp "$root/bench/scenes/glass-mirror.txt" "$data/glass-mirror.txt"
+  for s in default glass-mirror; do
+    "$bin/sfconvert" "$data/$s.txt" "$data/$s.pov" --width "$width" --height "$height" --fov 60 \
+      2>"$work/convert-$s.log" || die "sfconvert $s failed: $(tail -n 3 "$work/convert-$s.log")"
+  done
+  all_sizes=$(printf "%s\n" $sizes $(printf "%s\n" ${SUITE_COMPARE_SCENES:-floor-10 floor-1000 floor-100000 floor-1000000} | sed -n "s/^floor-//p") 1000 1000000 | sort -gu | tr "\n" " ")
+  for n in $all_sizes; do
+    if [[ ! -f $data/floor-$n.sf || ! -f $data/floor-$n.pov || $bin/sfgen -nt $data/floor-$n.sf ]]; then
+      log "generating floor-$n"
+      "$bin/sfgen" --layout floor -n "$n" -s "$seed" --aspect "$aspect" -o "$data/floor-$n.sf" \
+        --pov "$data/floor-$n.pov" >/dev/null
+    fi
+  done
+fi
 # scene_file NAME: the file sfrender reads.
 scene_file() { if [[ -f $data/$1.txt ]]; then echo "$data/$1.txt"; else echo "$data/$1.sf"; fi; }
 # pov_at_depth NAME DEPTH: a copy of NAME.pov with max_trace_level DEPTH + 1
@@ -601,6 +598,18 @@ if has_part profile; then
   fi
   echo '<!-- END suite-profile -->' >>"$section"
   replace_section suite-profile "$section"
+fi
+
+# === 5. Against Embree, single precision, equal error ==========================
+tracer_parts=""
+has_part embree && tracer_parts+=" embree"
+has_part float && tracer_parts+=" float"
+if [[ -n $tracer_parts ]]; then
+  TRACERS_PARTS=$tracer_parts TRACERS_DIR=$data bash "$root/bench/tracers.sh" "$build" ||
+    die "bench/tracers.sh failed"
+fi
+if has_part equal-error; then
+  bash "$root/bench/equal_error.sh" "$build" || die "bench/equal_error.sh failed"
 fi
 
 elapsed=$(($(date +%s) - suite_start))

@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 #include "renderer/saturating.h"
 
@@ -32,50 +37,41 @@ float roundUp(double v) {
   return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-}  // namespace
+// What a node's split works with: the boxes, their centres, and the items
+// and nodes being written, shared by every thread of a build (each writes
+// only its own range of items and of nodes).
+struct BuildInput {
+  const std::vector<Bounds>& boxes;
+  const std::vector<glm::dvec3>& centres;
+  std::uint32_t* items;
+  BvhNode* nodes;
+};
 
-std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
-  // The vectors of the constructor below, each sized or reserved once.
-  std::uint64_t perBox =
-      kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(glm::dvec3);
-  return saturatingProduct(boxes, perBox);
-}
-
-Bvh::Bvh(const std::vector<Bounds>& boxes) {
-  if (boxes.empty()) return;
-  items_.resize(boxes.size());
-  std::vector<glm::dvec3> centres(boxes.size());
-  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-    items_[i] = i;
-    centres[i] = boxes[i].centre();
-  }
-  nodes_.reserve(kNodesPerBox * boxes.size());
-  build(boxes, centres, 0, static_cast<std::uint32_t>(boxes.size()), 0);
-}
-
-std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec3>& centres,
-                         std::uint32_t begin, std::uint32_t end, int depth) {
-  std::uint32_t index = static_cast<std::uint32_t>(nodes_.size());
-  nodes_.emplace_back();
+// Fills in the node over items [begin, end): its box, and either a leaf's
+// items or a split, for which it orders the items (those of the first
+// child first) and returns where the second child's begin.
+std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std::uint32_t begin,
+                                       std::uint32_t end, int depth) {
+  const std::vector<Bounds>& boxes = in.boxes;
+  const std::vector<glm::dvec3>& centres = in.centres;
+  std::uint32_t* items = in.items;
   Bounds bounds;
   Bounds centreBounds;
   for (std::uint32_t i = begin; i < end; ++i) {
-    bounds.extend(boxes[items_[i]]);
-    centreBounds.extend(centres[items_[i]]);
+    bounds.extend(boxes[items[i]]);
+    centreBounds.extend(centres[items[i]]);
   }
   for (int i = 0; i < 3; ++i) {
-    nodes_[index].planes[i] = roundDown(bounds.lo[i]);
-    nodes_[index].planes[3 + i] = roundUp(bounds.hi[i]);
+    node.planes[i] = roundDown(bounds.lo[i]);
+    node.planes[3 + i] = roundUp(bounds.hi[i]);
   }
   std::uint32_t count = end - begin;
-
-  auto makeLeaf = [&] {
-    nodes_[index].offset = begin;
-    nodes_[index].count = static_cast<std::uint16_t>(count);
-    return index;
-  };
   if (count <= kMaxLeafItems || depth >= kMaxDepth) {
-    if (count <= 0xFFFF) return makeLeaf();
+    if (count <= 0xFFFF) {
+      node.offset = begin;
+      node.count = static_cast<std::uint16_t>(count);
+      return std::nullopt;
+    }
   }
 
   // Step 1: the widest axis of the centres; all centres equal means no split
@@ -95,9 +91,9 @@ std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec
       return std::clamp(b, 0, kBins - 1);
     };
     for (std::uint32_t i = begin; i < end; ++i) {
-      int b = binOf(items_[i]);
+      int b = binOf(items[i]);
       ++binCounts[b];
-      binBounds[b].extend(boxes[items_[i]]);
+      binBounds[b].extend(boxes[items[i]]);
     }
     std::array<double, kBins - 1> cost{};
     Bounds left;
@@ -115,9 +111,9 @@ std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec
       cost[b - 1] += rightCount ? rightCount * right.surfaceArea() : 0.0;
     }
     int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
-    std::uint32_t* split = std::partition(items_.data() + begin, items_.data() + end,
+    std::uint32_t* split = std::partition(items + begin, items + end,
                                           [&](std::uint32_t item) { return binOf(item) <= best; });
-    std::uint32_t at = static_cast<std::uint32_t>(split - items_.data());
+    std::uint32_t at = static_cast<std::uint32_t>(split - items);
     if (at != begin && at != end) {
       mid = at;
       median = false;
@@ -125,14 +121,181 @@ std::uint32_t Bvh::build(const std::vector<Bounds>& boxes, std::vector<glm::dvec
   }
   if (median) {
     std::nth_element(
-        items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+        items + begin, items + mid, items + end,
         [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
   }
-  nodes_[index].axis = static_cast<std::uint8_t>(axis);
-  build(boxes, centres, begin, mid, depth + 1);
-  nodes_[index].offset = build(boxes, centres, mid, end, depth + 1);
-  nodes_[index].count = 0;
-  return index;
+  node.axis = static_cast<std::uint8_t>(axis);
+  node.count = 0;
+  return mid;
+}
+
+// Builds the subtree over items [begin, end) depth first into the nodes
+// from `at` on; returns the index past its last node.
+std::uint32_t buildSubtree(const BuildInput& in, std::uint32_t at, std::uint32_t begin,
+                           std::uint32_t end, int depth) {
+  BvhNode& node = in.nodes[at];
+  std::optional<std::uint32_t> mid = splitNode(in, node, begin, end, depth);
+  if (!mid) return at + 1;
+  std::uint32_t second = buildSubtree(in, at + 1, begin, *mid, depth + 1);
+  node.offset = second;
+  return buildSubtree(in, second, *mid, end, depth + 1);
+}
+
+// A subtree left to the threads: items [begin, end) at `depth`, built into
+// the nodes from `at`, where 2 (end - begin) - 1 nodes, the most it can
+// take, are kept for it; `used` is how many it took.
+struct Subtree {
+  std::uint32_t begin = 0;
+  std::uint32_t end = 0;
+  int depth = 0;
+  std::uint32_t at = 0;
+  std::uint32_t used = 0;
+};
+
+// Past this many subtrees the top of the tree stops splitting, which bounds
+// the list (Bvh::bytesFor): each split still pending on the recursion, at
+// most kMaxRecursion of them, then adds one more.
+constexpr std::size_t kSubtreeBudget = Bvh::kTasksPerThread * Bvh::kMaxBuildThreads * 2;
+constexpr std::size_t kMaxRecursion = 128;
+constexpr std::size_t kMaxSubtrees = kSubtreeBudget + kMaxRecursion;
+// Below this many boxes one thread builds it all: starting threads would
+// cost more than they save.
+constexpr std::uint32_t kMinParallelBoxes = 16384;
+
+// The top of the tree, above the subtrees of at most `largest` items: its
+// nodes are built here, at the indices they would have if every subtree
+// took all it may; returns the index past the subtree's reserved nodes.
+std::uint32_t planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
+                      std::uint32_t at, std::uint32_t begin, std::uint32_t end, int depth) {
+  std::uint32_t count = end - begin;
+  if (count <= largest || subtrees.size() >= kSubtreeBudget) {
+    subtrees.push_back(Subtree{begin, end, depth, at, 0});
+    return at + 2 * count - 1;
+  }
+  BvhNode& node = in.nodes[at];
+  std::optional<std::uint32_t> mid = splitNode(in, node, begin, end, depth);
+  if (!mid) return at + 1;
+  std::uint32_t second = planTop(in, largest, subtrees, at + 1, begin, *mid, depth + 1);
+  node.offset = second;
+  return planTop(in, largest, subtrees, second, *mid, end, depth + 1);
+}
+
+// Builds the subtrees on `threads` threads (this one among them), largest
+// first, each taking the next one left.
+void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int threads) {
+  std::vector<std::uint32_t> order(subtrees.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  // Largest first, ties by place: std::sort, which needs no buffer of its
+  // own (Bvh::bytesFor).
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    std::uint32_t sizeA = subtrees[a].end - subtrees[a].begin;
+    std::uint32_t sizeB = subtrees[b].end - subtrees[b].begin;
+    return sizeA != sizeB ? sizeA > sizeB : a < b;
+  });
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < order.size(); i = next++) {
+      Subtree& s = subtrees[order[i]];
+      s.used = buildSubtree(in, s.at, s.begin, s.end, s.depth) - s.at;
+    }
+  };
+  std::vector<std::thread> helpers;
+  helpers.reserve(static_cast<std::size_t>(threads) - 1);
+  for (int t = 1; t < threads; ++t) {
+    try {
+      helpers.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // fewer threads: this one takes what the others would have
+    }
+  }
+  work();
+  for (std::thread& helper : helpers) helper.join();
+}
+
+// Closes the gaps that subtrees taking fewer nodes than kept for them left
+// (only leaves of several items, past kMaxDepth, make them): moves each
+// stretch of nodes down and renumbers the second children. Returns the
+// node count.
+std::uint32_t closeGaps(std::vector<BvhNode>& nodes, const std::vector<Subtree>& subtrees,
+                        std::uint32_t reserved) {
+  // shifts[k]: how far nodes past subtree k's reserved nodes move down.
+  std::vector<std::uint32_t> gapEnds(subtrees.size());
+  std::vector<std::uint32_t> shifts(subtrees.size());
+  std::uint32_t shift = 0;
+  for (std::size_t k = 0; k < subtrees.size(); ++k) {
+    const Subtree& s = subtrees[k];
+    std::uint32_t kept = 2 * (s.end - s.begin) - 1;
+    shift += kept - s.used;
+    gapEnds[k] = s.at + kept;
+    shifts[k] = shift;
+  }
+  if (shift == 0) return reserved;
+  auto moved = [&](std::uint32_t index) {
+    auto k = std::upper_bound(gapEnds.begin(), gapEnds.end(), index) - gapEnds.begin();
+    return k == 0 ? index : index - shifts[k - 1];
+  };
+  std::uint32_t out = 0;
+  std::size_t k = 0;
+  for (std::uint32_t index = 0; index < reserved;) {
+    if (k < subtrees.size() && index == subtrees[k].at + subtrees[k].used) {
+      index = gapEnds[k++];  // past the gap
+      continue;
+    }
+    BvhNode node = nodes[index++];
+    if (node.count == 0) node.offset = moved(node.offset);
+    nodes[out++] = node;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
+  // The vectors of the constructor below, each sized or reserved once. With
+  // more than one thread the build also holds its list of subtrees, with the
+  // order it builds them in and closeGaps's two lists (at most
+  // kMaxSubtrees each) and its threads (at most kMaxBuildThreads), and only
+  // for kMinParallelBoxes boxes or more, so a share of a few bytes a box
+  // covers them.
+  constexpr std::uint64_t kSubtreeBytes = sizeof(Subtree) + 3 * sizeof(std::uint32_t);
+  constexpr std::uint64_t kParallelBytes =
+      kMaxSubtrees * kSubtreeBytes + kMaxBuildThreads * sizeof(std::thread);
+  constexpr std::uint64_t kSubtreeShare =
+      (kParallelBytes + kMinParallelBoxes - 1) / kMinParallelBoxes;
+  std::uint64_t perBox =
+      kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(glm::dvec3) + kSubtreeShare;
+  return saturatingProduct(boxes, perBox);
+}
+
+Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
+  if (boxes.empty()) return;
+  if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+  threads = std::clamp(threads, 1, kMaxBuildThreads);
+  const std::uint32_t n = static_cast<std::uint32_t>(boxes.size());
+  if (n < kMinParallelBoxes) threads = 1;
+  items_.resize(n);
+  std::vector<glm::dvec3> centres(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    items_[i] = i;
+    centres[i] = boxes[i].centre();
+  }
+  nodes_.reserve(kNodesPerBox * n);
+  nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
+  BuildInput in{boxes, centres, items_.data(), nodes_.data()};
+  if (threads == 1) {
+    nodes_.resize(buildSubtree(in, 0, 0, n, 0));
+    return;
+  }
+  // The top of the tree is split here until its parts are small enough to
+  // share out; every part is then built as the one-thread build above would
+  // have built it, at the place it would have had, so the tree does not
+  // depend on the thread count.
+  std::uint32_t largest = std::max<std::uint32_t>(n / (kTasksPerThread * threads), 1);
+  std::vector<Subtree> subtrees;
+  subtrees.reserve(kMaxSubtrees);
+  std::uint32_t reserved = planTop(in, largest, subtrees, 0, 0, n, 0);
+  buildSubtrees(in, subtrees, threads);
+  nodes_.resize(closeGaps(nodes_, subtrees, reserved));
 }
 
 }  // namespace render

@@ -32,19 +32,31 @@ struct BvhNode {
 class Bvh {
  public:
   static constexpr int kStackSize = 128;
+  /// The most rays traversePacket walks together.
+  static constexpr int kPacketSize = 4;
   /// Nodes the build reserves for each box, so that the node array never
   /// grows (and never holds twice its size while it moves): a binary tree
   /// whose leaves hold at least one box each has at most 2n - 1 nodes.
   static constexpr std::uint64_t kNodesPerBox = 2;
 
+  /// The most threads a build starts, whatever it is asked for: enough
+  /// for any machine this runs on, and what bounds the build's task list.
+  static constexpr int kMaxBuildThreads = 64;
+  /// Subtrees a build hands out to its threads: about this many per thread,
+  /// so that a thread finishing early picks up another.
+  static constexpr std::uint32_t kTasksPerThread = 8;
+
   Bvh() = default;
-  // Builds over the boxes; items are indices into `boxes`.
-  explicit Bvh(const std::vector<Bounds>& boxes);
+  /// Builds over the boxes; items are indices into `boxes`. `threads`
+  /// threads share the build (0: the hardware's count); the tree is the
+  /// same, node for node and item for item, whatever their number.
+  explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
 
   /// The most bytes the build over `boxes` boxes holds at once: the nodes
-  /// as reserved (kNodesPerBox), the items, and the centres it splits by,
-  /// which it frees when done. The boxes themselves are the caller's.
-  /// Saturates: a hostile count gives UINT64_MAX, never a wrapped figure.
+  /// as reserved (kNodesPerBox), the items, the centres it splits by, which
+  /// it frees when done, and its list of subtrees for the threads. The
+  /// boxes themselves are the caller's. Saturates: a hostile count gives
+  /// UINT64_MAX, never a wrapped figure.
   static std::uint64_t bytesFor(std::uint64_t boxes);
 
   bool empty() const { return nodes_.empty(); }
@@ -111,6 +123,16 @@ class Bvh {
       }
     }
   }
+
+  // traverse for up to kPacketSize rays at once (defined in
+  // renderer/bvh_packet.h): visit(lane, item) is called for exactly the
+  // items, in exactly the order, that traverse(rays[lane], tMax[lane], ...)
+  // would visit, with the same tMax before each, so that every ray ends
+  // with the same hit; it returns that ray's new tMax, or a negative value
+  // to stop that ray. Rays whose direction signs differ on an axis are
+  // traversed one by one.
+  template <typename Visit>
+  void traversePacket(const BoxRay* rays, int count, const double* tMax, Visit&& visit) const;
 
  private:
   // The ray as the node test wants it, worked out once per ray: per axis,
@@ -199,9 +221,6 @@ class Bvh {
            (hitsNode(b, r, tMax, tEntries[1]) ? 2 : 0);
 #endif
   }
-
-  std::uint32_t build(const std::vector<Bounds>& boxes, std::vector<glm::dvec3>& centres,
-                      std::uint32_t begin, std::uint32_t end, int depth);
 
   std::vector<BvhNode> nodes_;
   std::vector<std::uint32_t> items_;

@@ -55,8 +55,9 @@ RadianceBound::RadianceBound(const RenderScene& scene, int maxDepth) : maxDepth_
   }
   double surface = 0.0;
   double weight = 0.0;
-  for (const RenderObject& object : scene.objects()) {
-    const scene::Material& m = object.material;
+  for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
+    const RenderObject& object = scene.objects()[i];
+    const scene::Material& m = scene.material(i);
     if (!inRange(m)) return;
     // max(0, x)^SHININESS for x up to kUnitDotMax.
     double highlight = std::pow(kUnitDotMax, m.shininess);

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <thread>
 
+#include "renderer/adaptive_sampling.h"
 #include "renderer/saturating.h"
 #include "scenefile/matrix.h"
 
@@ -42,12 +43,18 @@ float toStoredChannel(double v) {
   return static_cast<float>(std::clamp(v, -kMax, kMax));
 }
 
+int tileCount(const PixelRegion& region) {
+  return ((region.width() + kTileSize - 1) / kTileSize) *
+         ((region.height() + kTileSize - 1) / kTileSize);
+}
+
+// Calls perTile(worker, tile) for each tile of `region` (squares of
+// kTileSize from its top-left corner, cut at its edges) on `threads` threads.
 template <typename PerTile>
-void forEachTile(int width, int height, int threads, PerTile&& perTile,
+void forEachTile(const PixelRegion& region, int threads, PerTile&& perTile,
                  const ProgressCallback& progress) {
-  int tilesX = (width + kTileSize - 1) / kTileSize;
-  int tilesY = (height + kTileSize - 1) / kTileSize;
-  int total = tilesX * tilesY;
+  int tilesX = (region.width() + kTileSize - 1) / kTileSize;
+  int total = tileCount(region);
   std::atomic<int> next{0};
   std::atomic<int> done{0};
   std::mutex progressMutex;
@@ -59,10 +66,10 @@ void forEachTile(int width, int height, int threads, PerTile&& perTile,
   auto work = [&](int worker) {
     try {
       for (int tile = next++; tile < total; tile = next++) {
-        int x0 = (tile % tilesX) * kTileSize;
-        int y0 = (tile / tilesX) * kTileSize;
-        perTile(worker, x0, y0, std::min(x0 + kTileSize, width),
-                std::min(y0 + kTileSize, height));
+        int x0 = region.x0 + (tile % tilesX) * kTileSize;
+        int y0 = region.y0 + (tile / tilesX) * kTileSize;
+        perTile(worker, PixelRegion{x0, y0, std::min(x0 + kTileSize, region.x1),
+                                    std::min(y0 + kTileSize, region.y1)});
         int finished = ++done;
         if (progress) {
           std::lock_guard<std::mutex> lock(progressMutex);
@@ -118,6 +125,16 @@ int threadCount(int requested) {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
+// A sample's colour, the bound on what adaptive depth control left out of
+// it (TraceContext::slack), and the object its camera ray met (or
+// RaySource::kNone).
+struct SampleColour {
+  glm::dvec3 colour{0.0};
+  double slack = 0.0;
+  std::uint32_t object = RaySource::kNone;
+  bool hit() const { return object != RaySource::kNone; }
+};
+
 }  // namespace
 
 PinholeCamera::PinholeCamera(const scene::Camera& camera, const RenderSettings& settings)
@@ -158,112 +175,376 @@ std::uint64_t Image::bytesFor(int width, int height, bool withCoverage) {
   return saturatingProduct(pixels, (kChannels + (withCoverage ? 1 : 0)) * sizeof(float));
 }
 
-Image renderImage(const RenderScene& scene, const RenderSettings& settings,
-                  RenderStatistics* statistics, const ProgressCallback& progress,
-                  const CancelFlag* cancel) {
-  auto start = std::chrono::steady_clock::now();
-  Image image;
-  image.width = settings.width;
-  image.height = settings.height;
-  std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
-  image.rgb.assign(pixels * Image::kChannels, 0.0f);
-  if (settings.coverage) image.coverage.assign(pixels, 0.0f);
-  PinholeCamera camera(scene.camera(), settings);
-  Tracer tracer(scene, settings.maxDepth);
-  // Not a number, or below 0, allows no error.
-  double tolerance = std::max(0.0, settings.pruneTolerance);
-  std::uint64_t allowance = settings.maxRaysPerSample > 0
-                                ? settings.maxRaysPerSample
-                                : std::numeric_limits<std::uint64_t>::max();
-  // The media the camera starts in, for a camera inside glass.
-  MediumStack eyeMedia;
-  if (scene.hasTransparency()) {
-    for (std::uint32_t object : scene.mediaContaining(camera.eye())) eyeMedia.push(object);
+PixelRegion imageTile(int width, int height, int index, int count) {
+  if (width <= 0 || height <= 0 || count <= 0 || index < 0 || index >= count || count > height) {
+    return PixelRegion{};
+  }
+  // The first height % count bands are one row taller.
+  int base = height / count;
+  int taller = height % count;
+  int y0 = index * base + std::min(index, taller);
+  int y1 = y0 + base + (index < taller ? 1 : 0);
+  return PixelRegion{0, y0, width, y1};
+}
+
+namespace {
+
+// The pixels of the full image that `settings` asks for: its region cut to
+// the image, or all of it.
+PixelRegion regionToRender(const RenderSettings& settings) {
+  PixelRegion full{0, 0, std::max(0, settings.width), std::max(0, settings.height)};
+  if (settings.region.empty()) return full;
+  PixelRegion cut{std::max(settings.region.x0, 0), std::max(settings.region.y0, 0),
+                  std::min(settings.region.x1, full.x1), std::min(settings.region.y1, full.y1)};
+  return cut.empty() ? PixelRegion{} : cut;
+}
+
+// The mean of some of a pixel's samples, with the bound on what adaptive
+// depth control left out of it and how many of its camera rays met an
+// object.
+struct PixelSamples {
+  glm::dvec3 colour{0.0};
+  double slack = 0.0;
+  int hits = 0;
+  int count = 0;
+
+  // Adds a sample to the sums; samples are added in their order, so that
+  // every way of tracing them gives the same sums, bit for bit.
+  void add(const SampleColour& sample) {
+    colour += sample.colour;
+    slack += sample.slack;
+    hits += sample.hit() ? 1 : 0;
+    ++count;
+  }
+  // The sums made means. Dividing by 1 is exact: skipped, for one division
+  // less a pixel.
+  void average() {
+    if (count > 1) {
+      colour /= static_cast<double>(count);
+      slack /= static_cast<double>(count);
+    }
+  }
+};
+
+// What one thread keeps for itself: its trace context and its counts.
+struct alignas(64) Worker {
+  TraceContext context;
+  std::uint64_t retraced = 0;
+  std::uint64_t samples = 0;
+  std::uint64_t refined = 0;
+  std::uint64_t fullySampled = 0;
+};
+
+// Traces the samples of pixels: one for a render, shared by its threads.
+class PixelTracer {
+ public:
+  PixelTracer(const RenderScene& scene, const RenderSettings& settings)
+      : scene_(scene),
+        settings_(settings),
+        camera_(scene.camera(), settings),
+        tracer_(scene, settings.maxDepth),
+        // Not a number, or below 0, allows no error.
+        tolerance_(std::max(0.0, settings.pruneTolerance)),
+        allowance_(settings.maxRaysPerSample > 0 ? settings.maxRaysPerSample
+                                                 : std::numeric_limits<std::uint64_t>::max()),
+        // Retracing needs a finite bound, has nothing to mend at tolerance
+        // 0, and traces in full: without an allowance that could never end.
+        certifies_(tolerance_ > 0.0 && settings.maxRaysPerSample > 0 &&
+                   tracer_.bound().at(0) < RadianceBound::kUnbounded) {
+    // The media the camera starts in, for a camera inside glass.
+    if (scene.hasTransparency()) {
+      for (std::uint32_t object : scene.mediaContaining(camera_.eye())) eyeMedia_.push(object);
+    }
   }
 
-  // Retracing needs a finite bound, has nothing to mend at tolerance 0, and
-  // traces in full: without an allowance that could never end.
-  bool certifies = tolerance > 0.0 && settings.maxRaysPerSample > 0 &&
-                   tracer.bound().at(0) < RadianceBound::kUnbounded;
+  // The stack each sample starts with: copied afresh per sample only where
+  // it can matter (a scene without transparency never reads or changes it),
+  // as the copy costs as much as a tenth of a primary ray.
+  const MediumStack& eyeMedia() const { return eyeMedia_; }
+  // The error adaptive depth control may make in a sample.
+  double tolerance() const { return tolerance_; }
 
-  int threads = threadCount(settings.threads);
-  std::vector<TraceContext> contexts(threads);
-  std::vector<std::uint64_t> retraced(threads, 0);
+  // Traces the camera rays through the `count` image positions `at`, each a
+  // sample of its own (its allowance, slack and media afresh), to within
+  // `allowed`, into out[0, count). With RenderSettings::packets the closest
+  // hits of each Bvh::kPacketSize consecutive rays are found together
+  // (RenderScene::closestHits) and each sample is shaded from its hit: the
+  // same colours as tracing each alone, bit for bit (docs/RENDERING.md,
+  // "Packets").
+  void traceSamples(const glm::dvec2* at, int count, double allowed, MediumStack& media,
+                    TraceContext& context, SampleColour* out) const {
+    constexpr int kPacket = Bvh::kPacketSize;
+    for (int first = 0; first < count; first += kPacket) {
+      int n = std::min(kPacket, count - first);
+      Ray rays[kPacket];
+      for (int k = 0; k < n; ++k) rays[k] = camera_.rayThrough(at[first + k].x, at[first + k].y);
+      std::optional<Hit> hits[kPacket];
+      if (settings_.packets) {
+        const RaySource fromCamera[kPacket] = {};
+        scene_.closestHits(rays, fromCamera, n, hits);
+      }
+      for (int k = 0; k < n; ++k) {
+        if (scene_.hasTransparency()) media = eyeMedia_;
+        ++context.counts.primary;
+        context.allowance = allowance_;
+        context.slack = 0.0;
+        glm::dvec3 colour = settings_.packets
+                                ? tracer_.traceFromHit(rays[k], hits[k], media, context, allowed)
+                                : tracer_.trace(rays[k], RaySource{}, 0, media, context, allowed);
+        out[first + k] = SampleColour{colour, context.slack, context.primaryObject};
+      }
+    }
+  }
+
+  // The mean of pixel (i, j)'s `count` samples (samplePosition), traced to
+  // within `allowed`; onSample(sample) hears of each.
+  template <typename OnSample>
+  PixelSamples trace(int i, int j, int count, double allowed, MediumStack& media,
+                     TraceContext& context, OnSample&& onSample) const {
+    constexpr int kBatch = 16;
+    glm::dvec2 at[kBatch];
+    SampleColour samples[kBatch];
+    PixelSamples pixel;
+    for (int first = 0; first < count; first += kBatch) {
+      int n = std::min(kBatch, count - first);
+      for (int s = 0; s < n; ++s) at[s] = samplePosition(i, j, first + s, count, settings_.seed);
+      traceSamples(at, n, allowed, media, context, samples);
+      for (int s = 0; s < n; ++s) {
+        onSample(samples[s]);
+        pixel.add(samples[s]);
+      }
+    }
+    pixel.average();
+    return pixel;
+  }
+
+  PixelSamples trace(int i, int j, int count, MediumStack& media, TraceContext& context) const {
+    return trace(i, j, count, tolerance_, media, context, [](const SampleColour&) {});
+  }
+
+  // `pixel`, traced at the tolerance, made exact to the image's levels: the
+  // full colour lies in [colour, colour + slack]; where that range holds two
+  // levels, the pixel is traced again with a 64th of the tolerance, then in
+  // full, until the range holds one level (a trace that runs out of its
+  // allowance proves nothing, and if every one does, the first stays).
+  PixelSamples certified(int i, int j, PixelSamples pixel, MediumStack& media,
+                         Worker& worker) const {
+    if (!(pixel.slack > 0.0 && certifies_ &&
+          !oneLevel(pixel.colour, pixel.slack, settings_.levels))) {
+      return pixel;
+    }
+    ++worker.retraced;
+    for (double finer : {tolerance_ / 64.0, 0.0}) {
+      std::uint64_t cutBefore = worker.context.counts.cut;
+      PixelSamples again =
+          trace(i, j, pixel.count, finer, media, worker.context, [](const SampleColour&) {});
+      pixel.hits = again.hits;
+      if (worker.context.counts.cut == cutBefore &&
+          (finer == 0.0 || oneLevel(again.colour, again.slack, settings_.levels))) {
+        return again;
+      }
+    }
+    return pixel;
+  }
+
+ private:
+  const RenderScene& scene_;
+  const RenderSettings& settings_;
+  PinholeCamera camera_;
+  Tracer tracer_;
+  double tolerance_;
+  std::uint64_t allowance_;
+  bool certifies_;
+  MediumStack eyeMedia_;
+};
+
+// Where pixels go in the image of a region.
+class ImageWriter {
+ public:
+  explicit ImageWriter(Image& image) : image_(image) {}
+  void store(int i, int j, const PixelSamples& pixel) const {
+    std::size_t at = static_cast<std::size_t>(j - image_.originY) * image_.width +
+                     static_cast<std::size_t>(i - image_.originX);
+    float* p = &image_.rgb[Image::kChannels * at];
+    for (int c = 0; c < 3; ++c) p[c] = toStoredChannel(pixel.colour[c]);
+    if (!image_.coverage.empty()) {
+      image_.coverage[at] = static_cast<float>(static_cast<double>(pixel.hits) / pixel.count);
+    }
+  }
+
+ private:
+  Image& image_;
+};
+
+// Every pixel of `region` with samplesPerPixel samples.
+void renderUniform(const PixelTracer& tracer, const PixelRegion& region,
+                   const RenderSettings& settings, std::vector<Worker>& workers,
+                   const ImageWriter& writer, const ProgressCallback& progress,
+                   const CancelFlag* cancel) {
   int spp = std::max(1, settings.samplesPerPixel);
   forEachTile(
-      settings.width, settings.height, threads,
-      [&](int worker, int x0, int y0, int x1, int y1) {
-        // The stack each sample starts with: copied afresh per sample only
-        // where it can matter (a scene without transparency never reads or
-        // changes it), as the copy cost as much as a tenth of a primary ray.
-        MediumStack media = eyeMedia;
-        TraceContext& context = contexts[worker];
-        // The mean of a pixel's samples, traced to within `allowed`, in
-        // `slack` the bound on what adaptive depth control left out of it,
-        // and in `hits` how many of its camera rays met an object.
-        auto tracePixel = [&](int i, int j, double allowed, double& slack, int& hits) {
-          glm::dvec3 sum(0.0);
-          slack = 0.0;
-          hits = 0;
-          for (int s = 0; s < spp; ++s) {
-            glm::dvec2 at = samplePosition(i, j, s, spp, settings.seed);
-            if (scene.hasTransparency()) media = eyeMedia;
-            ++context.counts.primary;
-            context.allowance = allowance;
-            context.slack = 0.0;
-            sum += tracer.trace(camera.rayThrough(at.x, at.y), RaySource{}, 0, media, context,
-                                allowed);
-            slack += context.slack;
-            hits += context.primaryHit ? 1 : 0;
-          }
-          // Dividing by 1 is exact: skipped, for one division less a pixel.
-          if (spp > 1) {
-            sum /= static_cast<double>(spp);
-            slack /= static_cast<double>(spp);
-          }
-          return sum;
-        };
-        for (int j = y0; j < y1; ++j) {
+      region, static_cast<int>(workers.size()),
+      [&](int index, const PixelRegion& tile) {
+        Worker& worker = workers[index];
+        MediumStack media = tracer.eyeMedia();
+        int n = tile.width();
+        glm::dvec2 at[kTileSize];
+        SampleColour samples[kTileSize];
+        PixelSamples row[kTileSize];
+        for (int j = tile.y0; j < tile.y1; ++j) {
           // forEachTile stops handing out tiles at the first exception.
           if (cancel && cancel->requested()) throw RenderCancelled();
-          for (int i = x0; i < x1; ++i) {
-            double slack = 0.0;
-            int hits = 0;
-            glm::dvec3 sum = tracePixel(i, j, tolerance, slack, hits);
-            // The full colour lies in [sum, sum + slack]: where that range
-            // holds two 8-bit levels, the pixel is traced again with a 64th
-            // of the tolerance, then in full, until the range holds one
-            // level (a trace that runs out of its allowance proves nothing,
-            // and if every one does, the first stays).
-            if (slack > 0.0 && certifies && !oneLevel(sum, slack, settings.levels)) {
-              ++retraced[worker];
-              for (double finer : {tolerance / 64.0, 0.0}) {
-                std::uint64_t cutBefore = context.counts.cut;
-                double finerSlack = 0.0;
-                glm::dvec3 again = tracePixel(i, j, finer, finerSlack, hits);
-                if (context.counts.cut == cutBefore &&
-                    (finer == 0.0 || oneLevel(again, finerSlack, settings.levels))) {
-                  sum = again;
-                  break;
-                }
+          // Sample s of the row's pixels side by side: neighbouring camera
+          // rays, coherent enough to be traced as packets. Each pixel still
+          // adds its samples in their order, so its sum is what tracing it
+          // alone gives.
+          for (int k = 0; k < n; ++k) row[k] = PixelSamples{};
+          for (int s = 0; s < spp; ++s) {
+            for (int k = 0; k < n; ++k)
+              at[k] = samplePosition(tile.x0 + k, j, s, spp, settings.seed);
+            tracer.traceSamples(at, n, tracer.tolerance(), media, worker.context, samples);
+            for (int k = 0; k < n; ++k) row[k].add(samples[k]);
+          }
+          for (int k = 0; k < n; ++k) {
+            PixelSamples& pixel = row[k];
+            pixel.average();
+            writer.store(tile.x0 + k, j, tracer.certified(tile.x0 + k, j, pixel, media, worker));
+          }
+          worker.samples += static_cast<std::uint64_t>(spp) * static_cast<std::uint64_t>(n);
+        }
+      },
+      progress);
+}
+
+// Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"). Pass 1:
+// the centre sample of every pixel of the region and of a one-pixel apron
+// around it, whose looks decide. Pass 2: a pixel whose centre differs from
+// one of its four neighbours' gets the refinement levels, each a stratified
+// set of its own, until one agrees within itself (its centre included) or
+// the last, samplesPerPixel, is reached. Every decision reads samples of
+// fixed positions, so a pixel is the same whatever the threads or region.
+void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
+                    const RenderSettings& settings, std::vector<Worker>& workers,
+                    const ImageWriter& writer, const ProgressCallback& progress,
+                    const CancelFlag* cancel) {
+  const double threshold = settings.adaptiveThreshold;
+  const std::vector<int> levels =
+      refinementLevels(std::max(1, settings.samplesPerPixel), settings.adaptiveFirstLevel);
+  PixelRegion apron{std::max(region.x0 - 1, 0), std::max(region.y0 - 1, 0),
+                    std::min(region.x1 + 1, settings.width),
+                    std::min(region.y1 + 1, settings.height)};
+  std::vector<SampleLook> centres(static_cast<std::size_t>(apron.width()) * apron.height());
+  auto centre = [&](int i, int j) -> SampleLook& {
+    return centres[static_cast<std::size_t>(j - apron.y0) * apron.width() + (i - apron.x0)];
+  };
+  // One progress for both passes.
+  int firstTiles = tileCount(apron), secondTiles = tileCount(region);
+  ProgressCallback firstProgress, secondProgress;
+  if (progress) {
+    firstProgress = [&](int done, int) { progress(done, firstTiles + secondTiles); };
+    secondProgress = [&](int done, int) { progress(firstTiles + done, firstTiles + secondTiles); };
+  }
+  int threads = static_cast<int>(workers.size());
+  forEachTile(
+      apron, threads,
+      [&](int index, const PixelRegion& tile) {
+        Worker& worker = workers[index];
+        MediumStack media = tracer.eyeMedia();
+        int n = tile.width();
+        glm::dvec2 at[kTileSize];
+        SampleColour samples[kTileSize];
+        for (int j = tile.y0; j < tile.y1; ++j) {
+          if (cancel && cancel->requested()) throw RenderCancelled();
+          // The row's centres side by side, as packets.
+          for (int k = 0; k < n; ++k) at[k] = samplePosition(tile.x0 + k, j, 0, 1, settings.seed);
+          tracer.traceSamples(at, n, tracer.tolerance(), media, worker.context, samples);
+          worker.samples += static_cast<std::uint64_t>(n);
+          for (int k = 0; k < n; ++k) {
+            int i = tile.x0 + k;
+            centre(i, j) = lookOf(samples[k].colour, samples[k].object);
+            bool inRegion = i >= region.x0 && i < region.x1 && j >= region.y0 && j < region.y1;
+            if (!inRegion) continue;
+            PixelSamples pixel;
+            pixel.add(samples[k]);
+            writer.store(i, j, tracer.certified(i, j, pixel, media, worker));
+          }
+        }
+      },
+      firstProgress);
+  forEachTile(
+      region, threads,
+      [&](int index, const PixelRegion& tile) {
+        Worker& worker = workers[index];
+        MediumStack media = tracer.eyeMedia();
+        for (int j = tile.y0; j < tile.y1; ++j) {
+          if (cancel && cancel->requested()) throw RenderCancelled();
+          for (int i = tile.x0; i < tile.x1; ++i) {
+            const SampleLook& own = centre(i, j);
+            bool edge = (i > apron.x0 && looksDiffer(own, centre(i - 1, j), threshold)) ||
+                        (i + 1 < apron.x1 && looksDiffer(own, centre(i + 1, j), threshold)) ||
+                        (j > apron.y0 && looksDiffer(own, centre(i, j - 1), threshold)) ||
+                        (j + 1 < apron.y1 && looksDiffer(own, centre(i, j + 1), threshold));
+            if (!edge || levels.empty()) continue;
+            ++worker.refined;
+            for (std::size_t level = 0; level < levels.size(); ++level) {
+              SampleSpread spread;
+              spread.add(own);
+              bool last = level + 1 == levels.size();
+              PixelSamples pixel =
+                  tracer.trace(i, j, levels[level], tracer.tolerance(), media, worker.context,
+                               [&](const SampleColour& sample) {
+                                 if (!last) spread.add(lookOf(sample.colour, sample.object));
+                               });
+              worker.samples += static_cast<std::uint64_t>(levels[level]);
+              if (last || !spread.exceeds(threshold)) {
+                if (last) ++worker.fullySampled;
+                writer.store(i, j, tracer.certified(i, j, pixel, media, worker));
+                break;
               }
-            }
-            std::size_t pixel = static_cast<std::size_t>(j) * settings.width + i;
-            float* p = &image.rgb[3 * pixel];
-            for (int c = 0; c < 3; ++c) p[c] = toStoredChannel(sum[c]);
-            if (settings.coverage) {
-              image.coverage[pixel] = static_cast<float>(static_cast<double>(hits) / spp);
             }
           }
         }
       },
-      progress);
+      secondProgress);
+}
+
+}  // namespace
+
+Image renderImage(const RenderScene& scene, const RenderSettings& settings,
+                  RenderStatistics* statistics, const ProgressCallback& progress,
+                  const CancelFlag* cancel) {
+  auto start = std::chrono::steady_clock::now();
+  PixelRegion region = regionToRender(settings);
+  Image image;
+  image.width = region.width();
+  image.height = region.height();
+  image.originX = region.x0;
+  image.originY = region.y0;
+  image.fullWidth = std::max(0, settings.width);
+  image.fullHeight = std::max(0, settings.height);
+  std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  image.rgb.assign(pixels * Image::kChannels, 0.0f);
+  if (settings.coverage) image.coverage.assign(pixels, 0.0f);
+
+  PixelTracer tracer(scene, settings);
+  std::vector<Worker> workers(threadCount(settings.threads));
+  ImageWriter writer(image);
+  if (settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1) {
+    renderAdaptive(tracer, region, settings, workers, writer, progress, cancel);
+  } else {
+    renderUniform(tracer, region, settings, workers, writer, progress, cancel);
+  }
 
   if (statistics) {
-    statistics->rays = RayCounts{};
-    for (const TraceContext& c : contexts) statistics->rays += c.counts;
-    statistics->retracedPixels = 0;
-    for (std::uint64_t r : retraced) statistics->retracedPixels += r;
+    *statistics = RenderStatistics{};
+    for (const Worker& w : workers) {
+      statistics->rays += w.context.counts;
+      statistics->retracedPixels += w.retraced;
+      statistics->samples += w.samples;
+      statistics->refinedPixels += w.refined;
+      statistics->fullySampledPixels += w.fullySampled;
+    }
+    statistics->pixels = pixels;
     statistics->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -275,10 +556,10 @@ std::vector<std::int32_t> renderObjectIds(const RenderScene& scene,
   std::vector<std::int32_t> ids(static_cast<std::size_t>(settings.width) * settings.height, -1);
   PinholeCamera camera(scene.camera(), settings);
   forEachTile(
-      settings.width, settings.height, threadCount(settings.threads),
-      [&](int, int x0, int y0, int x1, int y1) {
-        for (int j = y0; j < y1; ++j) {
-          for (int i = x0; i < x1; ++i) {
+      PixelRegion{0, 0, settings.width, settings.height}, threadCount(settings.threads),
+      [&](int, const PixelRegion& tile) {
+        for (int j = tile.y0; j < tile.y1; ++j) {
+          for (int i = tile.x0; i < tile.x1; ++i) {
             if (auto hit = scene.closestHit(camera.rayThrough(i + 0.5, j + 0.5), RaySource{})) {
               ids[static_cast<std::size_t>(j) * settings.width + i] =
                   static_cast<std::int32_t>(hit->object);

@@ -14,6 +14,21 @@
 
 namespace render {
 
+// A rectangle of pixels of the full image, half-open: columns x0 to x1 - 1,
+// rows y0 to y1 - 1.
+struct PixelRegion {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  int width() const { return empty() ? 0 : x1 - x0; }
+  int height() const { return empty() ? 0 : y1 - y0; }
+};
+
+// Tile `index` (0-based) of `count` of a `width` x `height` image: the
+// index-th of `count` horizontal bands of whole rows, from the top, their
+// heights differing by at most 1 (the taller first). Empty where the index
+// is out of range or there are more bands than rows.
+PixelRegion imageTile(int width, int height, int index, int count);
+
 struct RenderSettings {
   int width = 640;
   int height = 480;
@@ -39,8 +54,26 @@ struct RenderSettings {
   double levels = 255.0;
   // Whether the image gets Image::coverage, for an image with alpha.
   bool coverage = false;
+  // Whether camera rays find their hits as packets (RenderScene::closestHits,
+  // docs/RENDERING.md, "Packets"): the same image, bit for bit, either way;
+  // false traces each alone, for the tests and benchmarks that compare.
+  bool packets = true;
   int threads = 0;  // 0: every core
   std::uint64_t seed = 0;
+  // Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"): 0
+  // samples every pixel samplesPerPixel times. Above 0, every pixel first
+  // gets its centre sample, and only a pixel whose centre differs from a
+  // neighbour's by more than this (in some channel, in the image's units
+  // 0..1) or shows another object gets samplesPerPixel stratified samples.
+  double adaptiveThreshold = 0.0;
+  // Above 1: a refined pixel first gets this many stratified samples, and
+  // samplesPerPixel only where they disagree. 0 (measured better,
+  // docs/RENDERING.md "Adaptive sampling"): straight to samplesPerPixel.
+  int adaptiveFirstLevel = 0;
+  // The part of the width x height image to render; empty: all of it. Its
+  // pixels are exactly those of the full image's render (a region reaching
+  // outside the image is cut to it).
+  PixelRegion region;
 };
 
 // Primary rays of the scene's camera: a pinhole at the eye, forward and up
@@ -67,15 +100,22 @@ struct Image {
   /// Floats a pixel in `rgb`: red, green, blue.
   static constexpr std::size_t kChannels = 3;
 
+  /// The pixels held: the region's size (RenderSettings::region).
   int width = 0;
   int height = 0;
+  /// Where the region's top-left pixel lies in the full image, and the full
+  /// image's size (its display window); 0, 0 and width x height for a full
+  /// render.
+  int originX = 0, originY = 0, fullWidth = 0, fullHeight = 0;
   std::vector<float> rgb;
   /// With RenderSettings::coverage, one float a pixel: the fraction of its
   /// samples whose camera ray meets an object (0 where only the background
-  /// shows, 1 where every sample hits); empty otherwise. The background is
+  /// shows, 1 where every sample hits; with adaptive sampling, of the samples
+  /// the pixel's colour is the mean of); empty otherwise. The background is
   /// black, so `rgb` is already that coverage times the mean colour of the
   /// samples that hit: premultiplied.
   std::vector<float> coverage;
+  /// Pixel (x, y) of those held: (originX + x, originY + y) of the full image.
   glm::vec3 pixel(int x, int y) const {
     const float* p = &rgb[kChannels * (static_cast<std::size_t>(y) * width + x)];
     return {p[0], p[1], p[2]};
@@ -94,6 +134,16 @@ struct RenderStatistics {
   // because what adaptive depth control left out could have moved their
   // 8-bit level (their primary rays count again).
   std::uint64_t retracedPixels = 0;
+  // The pixels rendered, and the camera samples traced for them (retraces
+  // aside; with adaptive sampling the centre samples of the apron and the
+  // levels a pixel went past count too): samples / pixels is the mean
+  // samples a pixel.
+  std::uint64_t pixels = 0;
+  std::uint64_t samples = 0;
+  // Adaptive sampling: the pixels given more than their centre sample, and
+  // those of them given samplesPerPixel.
+  std::uint64_t refinedPixels = 0;
+  std::uint64_t fullySampledPixels = 0;
 };
 
 // Called after each finished tile with the tiles done and the total.
@@ -127,7 +177,8 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
                   const CancelFlag* cancel = nullptr);
 
 // The index of the object each pixel's centre ray meets first, or -1: the
-// picture that geometry tests compare.
+// picture that geometry tests compare (of the whole image, whatever the
+// region).
 std::vector<std::int32_t> renderObjectIds(const RenderScene& scene, const RenderSettings& settings);
 
 // The position of sample `index` of `count` in pixel (i, j): the centre for

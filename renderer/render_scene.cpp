@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
 #include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
@@ -50,32 +51,36 @@ std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
 }
 
 RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t lights) {
-  // The vectors of the constructor below. objects_ and lights_ are
-  // reserved. bounded_ and planes_ hold one index an object between them,
-  // and the boxes one box a bounded object; both grow by doubling, so the
-  // boxes are counted twice over, and the indices (4 bytes beside some 550
-  // an object) once.
+  // The vectors of the constructor below. objects_, linearToWorld_,
+  // materials_ and lights_ are sized once. bounded_ and planes_ hold one
+  // index an object between them, and the boxes one box a bounded object;
+  // both grow by doubling, so the boxes are counted twice over, and the
+  // indices (4 bytes beside some 450 an object) once.
   Bytes bytes;
-  bytes.scene =
-      saturatingSum(saturatingProduct(objects, sizeof(RenderObject) + sizeof(std::uint32_t)),
-                    saturatingProduct(lights, sizeof(RenderLight)));
+  std::uint64_t perObject =
+      sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) + sizeof(std::uint32_t);
+  bytes.scene = saturatingSum(saturatingProduct(objects, perObject),
+                              saturatingProduct(lights, sizeof(RenderLight)));
   bytes.bvh = saturatingSum(saturatingProduct(objects, 2 * sizeof(Bounds)), Bvh::bytesFor(objects));
   return bytes;
 }
 
-RenderScene::RenderScene(const scene::Scene& scene) : camera_(scene.camera) {
-  objects_.reserve(scene.objects.size());
+RenderScene::RenderScene(const scene::Scene& scene, int threads) : camera_(scene.camera) {
+  const std::size_t count = scene.objects.size();
+  objects_.resize(count);
+  linearToWorld_.resize(count);
+  materials_.resize(count);
   std::vector<Bounds> boxes;
-  for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+  for (std::uint32_t i = 0; i < count; ++i) {
     const scene::Object& o = scene.objects[i];
-    RenderObject r;
+    glm::dmat3 linear(o.matrix);
+    RenderObject& r = objects_[i];
     r.kind = o.kind;
-    r.toWorld = o.matrix;
-    r.toLocal = inverse3(glm::dmat3(o.matrix));
-    r.normalToWorld = glm::transpose(r.toLocal);
-    r.material = o.material;
+    r.translation = glm::dvec3(o.matrix[3]);
+    r.toLocal = inverse3(linear);
+    linearToWorld_[i] = linear;
+    materials_[i] = o.material;
     hasTransparency_ |= o.material.transparency > 0.0;
-    objects_.push_back(r);
     if (auto box = worldBounds(o.kind, o.matrix)) {
       bounded_.push_back(i);
       boxes.push_back(*box);
@@ -83,7 +88,7 @@ RenderScene::RenderScene(const scene::Scene& scene) : camera_(scene.camera) {
       planes_.push_back(i);
     }
   }
-  bvh_ = Bvh(boxes);
+  bvh_ = Bvh(boxes, threads);
   lights_.reserve(scene.lights.size());
   for (const scene::Light& light : scene.lights) {
     lights_.push_back(RenderLight{light.position(), light.colour});
@@ -125,10 +130,13 @@ Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate&
   Hit hit;
   hit.t = c.t;
   hit.object = index;
-  const glm::dmat4& m = object.toWorld;
-  hit.point = glm::dvec3(m * glm::dvec4(s.point, 1.0));
+  // m * (point, 1) as glm's dmat4 product adds it up: the first two
+  // columns' products, then the third's with the translation (times 1).
+  const glm::dmat3& m = linearToWorld_[index];
+  const glm::dvec3& translation = object.translation;
+  hit.point = (m[0] * s.point.x + m[1] * s.point.y) + (m[2] * s.point.z + translation);
   for (int r = 0; r < 3; ++r) {
-    double magnitude = std::abs(m[3][r]);
+    double magnitude = std::abs(translation[r]);
     double carried = 0.0;
     for (int k = 0; k < 3; ++k) {
       magnitude += std::abs(m[k][r] * s.point[k]);
@@ -137,7 +145,7 @@ Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate&
     hit.pointError[r] = gamma(3) * magnitude + (1.0 + gamma(3)) * carried;
   }
   // Step 2: the normal, through the inverse transpose.
-  hit.normal = glm::normalize(object.normalToWorld * s.normal);
+  hit.normal = glm::normalize(object.normalToWorld(s.normal));
   hit.fromInside = c.atExit;
   return hit;
 }
@@ -160,6 +168,44 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
   });
   if (best == RaySource::kNone) return std::nullopt;
   return finishHit(best, ray, bestCandidate);
+}
+
+void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int count,
+                              std::optional<Hit>* out, double tMax) const {
+  constexpr int kPacket = Bvh::kPacketSize;
+  for (int first = 0; first < count; first += kPacket) {
+    int n = std::min(kPacket, count - first);
+    const Ray* ray = rays + first;
+    const RaySource* source = sources + first;
+    std::uint32_t best[kPacket];
+    Candidate bestCandidate[kPacket];
+    BoxRay boxRays[kPacket];
+    double tMaxes[kPacket];
+    // Per ray, as closestHit: the planes first, then the hierarchy.
+    auto consider = [&](int lane, std::uint32_t index) {
+      if (auto c = intersectObject(index, ray[lane], source[lane], bestCandidate[lane].t)) {
+        best[lane] = index;
+        bestCandidate[lane] = *c;
+      }
+    };
+    for (int lane = 0; lane < n; ++lane) {
+      best[lane] = RaySource::kNone;
+      bestCandidate[lane] = Candidate{tMax, false, SpanFace::None};
+      for (std::uint32_t plane : planes_) consider(lane, plane);
+      boxRays[lane] = BoxRay{ray[lane].origin, 1.0 / ray[lane].direction};
+      tMaxes[lane] = bestCandidate[lane].t;
+    }
+    bvh_.traversePacket(boxRays, n, tMaxes, [&](int lane, std::uint32_t item) {
+      consider(lane, bounded_[item]);
+      return bestCandidate[lane].t;
+    });
+    for (int lane = 0; lane < n; ++lane) {
+      out[first + lane] =
+          best[lane] == RaySource::kNone
+              ? std::nullopt
+              : std::optional<Hit>(finishHit(best[lane], ray[lane], bestCandidate[lane]));
+    }
+  }
 }
 
 std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySource& source,
@@ -205,7 +251,7 @@ std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) con
   std::vector<std::uint32_t> media;
   for (std::uint32_t i = 0; i < objects_.size(); ++i) {
     const RenderObject& object = objects_[i];
-    if (object.kind == scene::ObjectKind::Plane || object.material.transparency <= 0.0) continue;
+    if (object.kind == scene::ObjectKind::Plane || materials_[i].transparency <= 0.0) continue;
     glm::dvec3 local = object.toLocalPoint(p);
     bool inside = false;
     switch (object.kind) {
@@ -225,8 +271,8 @@ std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) con
   }
   // Larger solids first: the smallest is the innermost.
   std::sort(media.begin(), media.end(), [this](std::uint32_t a, std::uint32_t b) {
-    return std::abs(glm::determinant(glm::dmat3(objects_[a].toWorld))) >
-           std::abs(glm::determinant(glm::dmat3(objects_[b].toWorld)));
+    return std::abs(glm::determinant(linearToWorld_[a])) >
+           std::abs(glm::determinant(linearToWorld_[b]));
   });
   return media;
 }

@@ -10,9 +10,9 @@
 #include <optional>
 #include <vector>
 
-#include "scenefile/scene.h"
 #include "renderer/bvh.h"
 #include "renderer/unit_shapes.h"
+#include "scenefile/scene.h"
 
 namespace render {
 
@@ -30,19 +30,23 @@ struct RaySource {
   bool inward = false;
 };
 
+// What every ray that reaches an object reads of it, and nothing else (104
+// bytes): the rest, read once per hit, is kept apart in RenderScene (the
+// 3x3 block of the object's matrix, and its material), and the normal
+// matrix, the transpose of toLocal, is not kept at all.
 struct RenderObject {
+  glm::dmat3 toLocal{1.0};      // inverse of the 3x3 block of the object's matrix
+  glm::dvec3 translation{0.0};  // the matrix's last column
   scene::ObjectKind kind = scene::ObjectKind::Sphere;
-  glm::dmat4 toWorld{1.0};
-  glm::dmat3 toLocal{1.0};        // inverse of the 3x3 block
-  glm::dmat3 normalToWorld{1.0};  // inverse transpose of the 3x3 block
-  scene::Material material;
 
   // A world point in object space. The translation comes off first, in
   // world space: folding it into an offset (toLocal * t) would cancel large
   // terms for a small object far from the origin.
-  glm::dvec3 toLocalPoint(const glm::dvec3& p) const {
-    return toLocal * (p - glm::dvec3(toWorld[3]));
-  }
+  glm::dvec3 toLocalPoint(const glm::dvec3& p) const { return toLocal * (p - translation); }
+  // A normal in object space to world space, by the inverse transpose of
+  // the 3x3 block: v * toLocal is transpose(toLocal) * v in glm, with the
+  // same products added in the same order, so the same bits.
+  glm::dvec3 normalToWorld(const glm::dvec3& n) const { return n * toLocal; }
 };
 
 struct RenderLight {
@@ -62,7 +66,9 @@ struct Hit {
 
 class RenderScene {
  public:
-  explicit RenderScene(const scene::Scene& scene);
+  /// Compiles the scene, its BVH built on `threads` threads (0: every
+  /// core), which changes how long that takes, never what it builds.
+  explicit RenderScene(const scene::Scene& scene, int threads = 0);
 
   /// What the constructor allocates for a scene of `objects` objects and
   /// `lights` lights, in bytes, as two parts.
@@ -81,6 +87,7 @@ class RenderScene {
   static Bytes bytesFor(std::uint64_t objects, std::uint64_t lights);
 
   const std::vector<RenderObject>& objects() const { return objects_; }
+  const scene::Material& material(std::uint32_t object) const { return materials_[object]; }
   const std::vector<RenderLight>& lights() const { return lights_; }
   const scene::Camera& camera() const { return camera_; }
   bool hasTransparency() const { return hasTransparency_; }
@@ -89,6 +96,12 @@ class RenderScene {
   // The nearest surface with 0 < t < tMax.
   std::optional<Hit> closestHit(const Ray& ray, const RaySource& source,
                                 double tMax = std::numeric_limits<double>::infinity()) const;
+  // closestHit for each of `count` rays (out[k] for rays[k], sources[k]),
+  // found as packets of Bvh::kPacketSize rays walked down the hierarchy
+  // together (Bvh::traversePacket): the same hits, bit for bit, at less cost
+  // where the rays are coherent (a row of camera rays).
+  void closestHits(const Ray* rays, const RaySource* sources, int count, std::optional<Hit>* out,
+                   double tMax = std::numeric_limits<double>::infinity()) const;
   // Whether any surface lies at 0 < t < tMax (shadow rays: transparent
   // objects cast shadows too). `lastOccluder`, when given, is a hint kept by
   // the caller: the object tested first (neighbouring shadow rays toward one
@@ -120,6 +133,10 @@ class RenderScene {
   Hit finishHit(std::uint32_t index, const Ray& ray, const Candidate& candidate) const;
 
   std::vector<RenderObject> objects_;
+  // Per object, read once per hit: the 3x3 block of its matrix (toWorld)
+  // and its material.
+  std::vector<glm::dmat3> linearToWorld_;
+  std::vector<scene::Material> materials_;
   std::vector<std::uint32_t> bounded_;  // BVH item -> object index
   std::vector<std::uint32_t> planes_;   // unbounded objects, tested for every ray
   std::vector<RenderLight> lights_;

@@ -3,9 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <set>
-
 #include <glm/geometric.hpp>
+#include <set>
 
 #include "renderer/default_scene.h"
 #include "renderer/test_scenes.h"

@@ -61,7 +61,7 @@ void MediumStack::remove(std::uint32_t object) {
 }
 
 double MediumStack::refractiveIndex(const RenderScene& scene) const {
-  return size_ == 0 ? 1.0 : scene.objects()[objects_[size_ - 1]].material.ri;
+  return size_ == 0 ? 1.0 : scene.material(objects_[size_ - 1]).ri;
 }
 
 double schlickReflectance(double n1, double n2, double cosIncident) {
@@ -112,7 +112,7 @@ bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, TraceContext& con
 
 glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
                                 const glm::dvec3& toViewer, TraceContext& context) const {
-  const scene::Material& m = scene_.objects()[hit.object].material;
+  const scene::Material& m = scene_.material(hit.object);
   glm::dvec3 colour(0.0);
   const std::vector<RenderLight>& lights = scene_.lights();
   for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -157,12 +157,19 @@ template <bool kRefraction>
 glm::dvec3 Tracer::traceWith(const Ray& ray, const RaySource& source, int bounce,
                              MediumStack& media, TraceContext& context, double tolerance) const {
   if (bounce > maxDepth_) return glm::dvec3(0.0);
-  std::optional<Hit> found = scene_.closestHit(ray, source);
-  if (bounce == 0) context.primaryHit = found.has_value();
+  return shade<kRefraction>(ray, scene_.closestHit(ray, source), bounce, media, context, tolerance);
+}
+
+template <bool kRefraction>
+glm::dvec3 Tracer::shade(const Ray& ray, const std::optional<Hit>& found, int bounce,
+                         MediumStack& media, TraceContext& context, double tolerance) const {
+  if (bounce == 0) {
+    context.primaryHit = found.has_value();
+    context.primaryObject = found ? found->object : RaySource::kNone;
+  }
   if (!found) return glm::dvec3(0.0);
   const Hit& hit = *found;
-  const RenderObject& object = scene_.objects()[hit.object];
-  const scene::Material& m = object.material;
+  const scene::Material& m = scene_.material(hit.object);
 
   glm::dvec3 d = glm::normalize(ray.direction);
   // The normal that faces the incoming ray.
@@ -198,7 +205,7 @@ glm::dvec3 Tracer::reflectAndRefract(const Hit& hit, const glm::dvec3& d, const 
                                      int bounce, MediumStack& media, TraceContext& context,
                                      double tolerance) const {
   const RenderObject& object = scene_.objects()[hit.object];
-  const scene::Material& m = object.material;
+  const scene::Material& m = scene_.material(hit.object);
 
   // Where the refracted ray goes, and the share of each part, come first:
   // they are what the branches are weighed by before either is traced.
@@ -275,6 +282,10 @@ glm::dvec3 Tracer::reflectAndRefract(const Hit& hit, const glm::dvec3& d, const 
   return refracted;
 }
 
+template glm::dvec3 Tracer::shade<true>(const Ray&, const std::optional<Hit>&, int, MediumStack&,
+                                        TraceContext&, double) const;
+template glm::dvec3 Tracer::shade<false>(const Ray&, const std::optional<Hit>&, int, MediumStack&,
+                                         TraceContext&, double) const;
 template glm::dvec3 Tracer::traceWith<true>(const Ray&, const RaySource&, int, MediumStack&,
                                             TraceContext&, double) const;
 template glm::dvec3 Tracer::traceWith<false>(const Ray&, const RaySource&, int, MediumStack&,

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <limits>
+#include <optional>
 
 #include "renderer/radiance_bound.h"
 #include "renderer/render_scene.h"
@@ -74,6 +75,10 @@ struct alignas(64) TraceContext {
   // Whether the last camera ray traced (bounce 0) met an object: its
   // sample's share of the pixel's coverage (Image::coverage).
   bool primaryHit = false;
+  // The object that camera ray met first, or RaySource::kNone: what adaptive
+  // anti-aliasing compares between neighbouring pixels (an edge between two
+  // objects of one colour).
+  std::uint32_t primaryObject = RaySource::kNone;
   std::array<std::uint32_t, kOccluderSlots> lastOccluder = filledWithNone();
 
  private:
@@ -113,6 +118,17 @@ class Tracer {
                : traceWith<false>(ray, source, bounce, media, context, tolerance);
   }
 
+  // trace for a camera ray (bounce 0, leaving no surface) whose closest hit
+  // is already found (RenderScene::closestHits, for a packet of them):
+  // `found` is scene.closestHit(ray, RaySource{}), and the colour is the one
+  // trace gives.
+  glm::dvec3 traceFromHit(const Ray& ray, const std::optional<Hit>& found, MediumStack& media,
+                          TraceContext& context, double tolerance = 0.0) const {
+    if (0 > maxDepth_) return glm::dvec3(0.0);
+    return scene_.hasTransparency() ? shade<true>(ray, found, 0, media, context, tolerance)
+                                    : shade<false>(ray, found, 0, media, context, tolerance);
+  }
+
   const RadianceBound& bound() const { return bound_; }
 
   // The Phong surface term at a hit (ambient per light, diffuse and specular
@@ -131,6 +147,12 @@ class Tracer {
   template <bool kRefraction>
   glm::dvec3 traceWith(const Ray& ray, const RaySource& source, int bounce, MediumStack& media,
                        TraceContext& context, double tolerance) const;
+
+  // traceWith after the search: the colour from the closest hit `found`
+  // along `ray` (black where there is none).
+  template <bool kRefraction>
+  glm::dvec3 shade(const Ray& ray, const std::optional<Hit>& found, int bounce, MediumStack& media,
+                   TraceContext& context, double tolerance) const;
 
   // The reflected and refracted parts of a hit on a transparent object,
   // weighed against each other by Schlick's approximation when it has both.

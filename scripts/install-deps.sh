@@ -19,6 +19,10 @@ packages=(
   doxygen help2man man-db bash-completion
   # make bench draws the plots of docs/PERFORMANCE.md with gnuplot.
   gnuplot-nox
+  # Optional, for the benchmarks only: bench/embree_trace traces sfrender's
+  # primary rays with Embree 3 ("Against Embree" in docs/PERFORMANCE.md);
+  # without it CMake leaves that target out and the rest builds as before.
+  libembree-dev
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).
   blender python3-numpy
   # The Python module (python/): pybind11 and Python's headers to build it,
@@ -38,7 +42,8 @@ packages=(
   libimgui-dev
   # The hostile-input tests measure sfcheck's peak memory with GNU time.
   time
-  # make test-valgrind runs the tools' end-to-end tests under valgrind.
+  # make test-valgrind runs the tools' end-to-end tests under valgrind;
+  # bench/tracers.sh counts instructions with its callgrind.
   valgrind
   # make fuzz builds the libFuzzer targets with clang and its runtime.
   clang libclang-rt-14-dev

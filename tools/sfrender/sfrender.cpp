@@ -10,8 +10,10 @@
 #include <string>
 #include <variant>
 
+#include "renderer/adaptive_sampling.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
+#include "renderer/saturating.h"
 #include "scenefile/read.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
@@ -22,6 +24,7 @@
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
 #include "tools/sfrender/image_file.h"
+#include "tools/sfrender/image_region.h"
 #include "tools/sfrender/thread_probe.h"
 
 namespace tools {
@@ -63,17 +66,37 @@ std::string statisticsText(const render::RenderStatistics& s,
   std::uint64_t total = s.rays.primary + s.rays.secondary + s.rays.shadow;
   std::ostringstream line;
   line << std::fixed << std::setprecision(3) << "sfrender: " << settings.width << "x"
-       << settings.height << ", " << settings.samplesPerPixel << " spp, depth " << settings.maxDepth
-       << ": " << s.seconds << " s, " << withThousands(total) << " rays ("
-       << withThousands(s.rays.primary) << " primary, " << withThousands(s.rays.secondary)
-       << " reflected or refracted, " << withThousands(s.rays.shadow) << " shadow), "
-       << std::setprecision(2) << (s.seconds > 0 ? total / s.seconds / 1e6 : 0.0)
-       << " million rays/s\n";
+       << settings.height;
+  if (!settings.region.empty()) {
+    const render::PixelRegion& r = settings.region;
+    line << " (region " << r.x0 << "," << r.y0 << "," << r.x1 << "," << r.y1 << ")";
+  }
+  line << ", " << settings.samplesPerPixel << " spp, depth " << settings.maxDepth << ": "
+       << s.seconds << " s, " << withThousands(total) << " rays (" << withThousands(s.rays.primary)
+       << " primary, " << withThousands(s.rays.secondary) << " reflected or refracted, "
+       << withThousands(s.rays.shadow) << " shadow), " << std::setprecision(2)
+       << (s.seconds > 0 ? total / s.seconds / 1e6 : 0.0) << " million rays/s\n";
   // What adaptive depth control (docs/RENDERING.md, "Cost") left out.
   line << "sfrender: left out " << withThousands(s.rays.pruned)
        << " branches (past the depth, or within their share of half a level of the image), traced "
        << withThousands(s.retracedPixels) << " pixels again\n";
+  if (settings.adaptiveThreshold > 0) {
+    line << std::setprecision(2) << "sfrender: adaptive sampling refined "
+         << withThousands(s.refinedPixels) << " of " << withThousands(s.pixels) << " pixels ("
+         << (s.pixels > 0 ? 100.0 * s.refinedPixels / s.pixels : 0.0) << "%), "
+         << withThousands(s.fullySampledPixels) << " of them to " << settings.samplesPerPixel
+         << " samples; " << (s.pixels > 0 ? static_cast<double>(s.samples) / s.pixels : 0.0)
+         << " samples a pixel on average\n";
+  }
   return line.str();
+}
+
+// The pixels the image file holds: the region's, or the whole image's.
+int imageWidth(const render::RenderSettings& s) {
+  return s.region.empty() ? s.width : s.region.width();
+}
+int imageHeight(const render::RenderSettings& s) {
+  return s.region.empty() ? s.height : s.region.height();
 }
 
 // The scene's own view (a POV-Ray or glTF camera's) where the command line
@@ -118,6 +141,7 @@ class Renderer {
   void chooseTarget();
   std::optional<int> targetRefusal();
   std::optional<int> resourceRefusal();
+  std::optional<int> chooseRegion();
   int writeImage(const render::Image& image, const render::RenderStatistics& statistics);
 
   SfrenderOptions& o_;
@@ -220,7 +244,8 @@ std::optional<int> Renderer::targetRefusal() {
     return toInt(ExitCode::IoError);
   }
   std::string error;
-  if (!checkCanWrite(target, true, ppmFileSize(settings_.width, settings_.height, target, o_.image),
+  if (!checkCanWrite(target, true,
+                     ppmFileSize(imageWidth(settings_), imageHeight(settings_), target, o_.image),
                      error)) {
     output_.fileError(target.string(), "cannot write the image: " + error);
     return toInt(ExitCode::IoError);
@@ -231,9 +256,14 @@ std::optional<int> Renderer::targetRefusal() {
 // Whether the render fits in memory and its threads start: refused before
 // it starts rather than killed, or aborted, half-way.
 std::optional<int> Renderer::resourceRefusal() {
-  render::RenderMemoryEstimate estimate =
-      render::estimateRenderMemory(job_.scene.objects.size(), job_.scene.lights.size(),
-                                   settings_.width, settings_.height, settings_.coverage);
+  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
+      job_.scene.objects.size(), job_.scene.lights.size(), imageWidth(settings_),
+      imageHeight(settings_), settings_.coverage);
+  if (settings_.adaptiveThreshold > 0) {
+    estimate.image = render::saturatingSum(
+        estimate.image,
+        render::adaptiveSamplingBytes(imageWidth(settings_), imageHeight(settings_)));
+  }
   if (std::optional<std::string> refusal =
           render::renderMemoryRefusal(estimate, memory_ ? memory_() : std::nullopt)) {
     output_.error(*refusal);
@@ -251,6 +281,27 @@ std::optional<int> Renderer::resourceRefusal() {
       " at a vertical field of view of " + std::to_string(settings_.verticalFovDegrees) +
       " degrees, " + std::to_string(settings_.samplesPerPixel) + " spp, depth " +
       std::to_string(settings_.maxDepth) + ", on " + std::to_string(threads) + " threads");
+  return std::nullopt;
+}
+
+// --region or --tile, against the image's size once it is known (the
+// scene's aspect ratio may set it).
+std::optional<int> Renderer::chooseRegion() {
+  if (!o_.region.empty()) {
+    settings_.region = parseRegion(o_.region).value_or(render::PixelRegion{});
+    if (std::optional<std::string> refusal =
+            regionRefusal(settings_.region, settings_.width, settings_.height)) {
+      output_.error("--region: " + *refusal);
+      return toInt(ExitCode::Usage);
+    }
+  } else if (!o_.tile.empty()) {
+    TileChoice tile = parseTile(o_.tile).value_or(TileChoice{});
+    if (std::optional<std::string> refusal = tileRefusal(tile, settings_.height)) {
+      output_.error("--tile: " + *refusal);
+      return toInt(ExitCode::Usage);
+    }
+    settings_.region = render::imageTile(settings_.width, settings_.height, tile.index, tile.count);
+  }
   return std::nullopt;
 }
 
@@ -285,8 +336,12 @@ int Renderer::writeImage(const render::Image& image, const render::RenderStatist
                     " already, so the picture may differ from a full trace by more than half a "
                     "level");
   }
-  output_.info("wrote " + written + " (" + std::to_string(settings_.width) + "x" +
-               std::to_string(settings_.height) + (o_.input.empty() ? ", the default scene" : "") +
+  std::string size = std::to_string(image.width) + "x" + std::to_string(image.height);
+  if (!settings_.region.empty()) {
+    size += " pixels at " + std::to_string(image.originX) + "," + std::to_string(image.originY) +
+            " of " + std::to_string(image.fullWidth) + "x" + std::to_string(image.fullHeight);
+  }
+  output_.info("wrote " + written + " (" + size + (o_.input.empty() ? ", the default scene" : "") +
                ")");
   return toInt(ExitCode::Success);
 }
@@ -312,6 +367,7 @@ int Renderer::run() {
     output_.error(*overLimit + " (at the scene's aspect ratio)");
     return toInt(ExitCode::Usage);
   }
+  if (std::optional<int> refused = chooseRegion()) return *refused;
   chooseTarget();
   if (std::optional<int> refused = targetRefusal()) return *refused;
   fitRenderToImage(job_.toStdout ? fs::path("standard output.ppm") : job_.target, o_.image,
@@ -320,7 +376,7 @@ int Renderer::run() {
   // and its threads start.
   if (std::optional<int> refused = resourceRefusal()) return *refused;
   stage_.set("preparing the scene");
-  render::RenderScene compiled(job_.scene);
+  render::RenderScene compiled(job_.scene, renderThreadCount(settings_.threads));
   output_.step("preparing the scene");
   render::RenderStatistics statistics;
   render::ProgressCallback progress;

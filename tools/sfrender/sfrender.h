@@ -36,7 +36,10 @@ struct SfrenderOptions {
   std::optional<int> width;
   std::optional<int> height;
   std::optional<double> fov;
-  render::RenderSettings settings;
+  render::RenderSettings settings;  // --adaptive among them
+  // --region x0,y0,x1,y1 and --tile i/N, as given (checked when parsed).
+  std::string region;
+  std::string tile;
   ImageOptions image;  // --bits, --alpha
   bool stats = false;
   bool noClobber = false;

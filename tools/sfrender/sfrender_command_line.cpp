@@ -2,6 +2,7 @@
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
 #include "tools/sfrender/image_file.h"
+#include "tools/sfrender/image_region.h"
 #include "tools/sfrender/sfrender.h"
 
 namespace tools {
@@ -37,6 +38,31 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
       ->check(wholeNumberIn(0, 1024));
   app.add_option("--seed", o.settings.seed, "seed of the sample positions")
       ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
+  app.add_option("--adaptive", o.settings.adaptiveThreshold,
+                 "adaptive anti-aliasing: every pixel gets its centre sample, and only one whose "
+                 "centre differs from a neighbour's by more than THRESHOLD (above 0, at most 1, "
+                 "in any channel; 0.03 is a good start) or shows another object gets the --spp "
+                 "stratified samples; with --spp 1 nothing is refined")
+      ->option_text("THRESHOLD")
+      ->default_str("")  // 0, uniform sampling, is what leaving it out gives
+      ->check(numberIn(0, 1))
+      ->check(CLI::Validator(
+          [](std::string& value) -> std::string {
+            return std::stod(value) > 0 ? std::string() : value + " is not above 0";
+          },
+          "", "above 0"));
+  CLI::Option* region =
+      app.add_option("--region", o.region,
+                     "render only the pixels from column x0 and row y0 up to, not including, x1 "
+                     "and y1 of the --width x --height image; the file holds just those")
+          ->option_text("x0,y0,x1,y1")
+          ->check(regionOption());
+  app.add_option("--tile", o.tile,
+                 "render only tile i (from 0) of N: the image cut into N bands of whole rows, "
+                 "their heights differing by at most one, the first at the top")
+      ->option_text("i/N")
+      ->check(tileOption())
+      ->excludes(region);
 }
 
 void addLimitOptions(CLI::App& app, SfrenderOptions& o) {

@@ -1,0 +1,229 @@
+// Bvh::traversePacket: up to Bvh::kPacketSize coherent rays (a row of a
+// tile's camera rays) walked down the hierarchy together, each box tested
+// for all of them at once in SIMD lanes, with every ray visiting exactly the
+// leaves, in exactly the order, that Bvh::traverse visits for it alone.
+//
+// Why the hits are the same, bit for bit (docs/RENDERING.md, "Packets"): a
+// ray's closest hit is the first item, in its own visiting order, that
+// reaches the least t under the strict t < tMax test, so a ray that visits
+// the same items in the same order with the same tMax before each ends with
+// the same Hit. The packet walk keeps, per node, the set (a bit mask) of rays
+// whose own walk reaches that node, and replays Bvh::traverse per ray:
+//  - the near child is chosen by the split axis' direction sign, which is
+//    the same for every ray of the packet (a packet whose rays differ in a
+//    sign on any axis is traced ray by ray with Bvh::traverse instead);
+//  - each ray's box test is hitsNode's arithmetic on its own lane (the float
+//    planes converted to double, the far distance widened, NaN ignored,
+//    against the ray's own current tMax), so each ray meets exactly the
+//    boxes it meets alone;
+//  - a ray that meets the near child goes down it; one that meets only the
+//    far child waits with the far child on the stack while the others take
+//    the near subtree, where it visits nothing and its tMax does not change,
+//    so its pop test (entry distance <= tMax) passes as the direct descent
+//    did; one that meets both pushes the far child with its entry distance,
+//    as Bvh::traverse does, and is dropped at the pop under the same test
+//    with the same tMax;
+//  - at a leaf, each ray in the mask runs the caller's exact object test on
+//    the leaf's items in order (rays between them in any order: one ray's
+//    tests do not change another's tMax).
+// By induction over the depth-first walk, each ray's sequence of leaf
+// visits, and its tMax before each, is the single-ray one.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <utility>
+
+#include "renderer/bvh.h"
+
+namespace render {
+
+namespace detail {
+
+// The packet's rays as the lanes of the box test want them, and the plane
+// indices that their shared direction signs pick (Bvh::NodeRay per ray).
+struct PacketNodeRays {
+  static constexpr int kLanes = Bvh::kPacketSize;
+  static_assert(kLanes == 4, "the SSE2 test below holds four lanes in two vectors");
+
+  // Fills lanes past `count` with the first ray's values; their tMax of
+  // -infinity keeps them out of every box.
+  PacketNodeRays(const BoxRay* rays, int count) {
+    for (int i = 0; i < 3; ++i) {
+      negative[i] = rays[0].inverseDirection[i] < 0.0;
+      nearPlane[i] = negative[i] ? 3 + i : i;
+      farPlane[i] = negative[i] ? i : 3 + i;
+      for (int lane = 0; lane < kLanes; ++lane) {
+        const BoxRay& ray = rays[lane < count ? lane : 0];
+        origin[i][lane] = ray.origin[i];
+        inverseDirection[i][lane] = ray.inverseDirection[i];
+      }
+    }
+  }
+
+  // Whether every ray's direction has the same sign as the first ray's on
+  // each axis (the test Bvh::NodeRay makes), so that one near child suits
+  // them all.
+  static bool sameSigns(const BoxRay* rays, int count) {
+    for (int i = 0; i < 3; ++i) {
+      bool first = rays[0].inverseDirection[i] < 0.0;
+      for (int lane = 1; lane < count; ++lane) {
+        if ((rays[lane].inverseDirection[i] < 0.0) != first) return false;
+      }
+    }
+    return true;
+  }
+
+  // hitsNode on every lane for the box `node`: bit `lane` set where that
+  // ray meets it within tMax[lane], its entry distance in tEntry[lane].
+  int hits(const BvhNode& node, const double* tMax, double* tEntry) const {
+    const double widen = 1.0 + 2.0 * gamma(3);
+#if defined(__SSE2__)
+    __m128d tMinLow = _mm_setzero_pd();
+    __m128d tMinHigh = _mm_setzero_pd();
+    __m128d tMaxLow = _mm_loadu_pd(tMax);
+    __m128d tMaxHigh = _mm_loadu_pd(tMax + 2);
+    const __m128d widenBoth = _mm_set1_pd(widen);
+    for (int i = 0; i < 3; ++i) {
+      // The float planes convert to double exactly, as in hitsNode.
+      __m128d nearBoth = _mm_set1_pd(static_cast<double>(node.planes[nearPlane[i]]));
+      __m128d farBoth = _mm_set1_pd(static_cast<double>(node.planes[farPlane[i]]));
+      __m128d originLow = _mm_loadu_pd(&origin[i][0]);
+      __m128d originHigh = _mm_loadu_pd(&origin[i][2]);
+      __m128d inverseLow = _mm_loadu_pd(&inverseDirection[i][0]);
+      __m128d inverseHigh = _mm_loadu_pd(&inverseDirection[i][2]);
+      __m128d nearLow = _mm_mul_pd(_mm_sub_pd(nearBoth, originLow), inverseLow);
+      __m128d nearHigh = _mm_mul_pd(_mm_sub_pd(nearBoth, originHigh), inverseHigh);
+      __m128d farLow =
+          _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(farBoth, originLow), inverseLow), widenBoth);
+      __m128d farHigh =
+          _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(farBoth, originHigh), inverseHigh), widenBoth);
+      // _mm_max_pd(x, m) is x > m ? x : m, _mm_min_pd(x, m) is x < m ? x : m:
+      // a NaN distance leaves m as it was, as in hitsNode.
+      tMinLow = _mm_max_pd(nearLow, tMinLow);
+      tMinHigh = _mm_max_pd(nearHigh, tMinHigh);
+      tMaxLow = _mm_min_pd(farLow, tMaxLow);
+      tMaxHigh = _mm_min_pd(farHigh, tMaxHigh);
+    }
+    _mm_storeu_pd(tEntry, tMinLow);
+    _mm_storeu_pd(tEntry + 2, tMinHigh);
+    return _mm_movemask_pd(_mm_cmple_pd(tMinLow, tMaxLow)) |
+           (_mm_movemask_pd(_mm_cmple_pd(tMinHigh, tMaxHigh)) << 2);
+#else
+    int mask = 0;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      double tMin = 0.0;
+      double tFarthest = tMax[lane];
+      for (int i = 0; i < 3; ++i) {
+        double nearOne = node.planes[nearPlane[i]];
+        double farOne = node.planes[farPlane[i]];
+        double tNear = (nearOne - origin[i][lane]) * inverseDirection[i][lane];
+        double tFar = (farOne - origin[i][lane]) * inverseDirection[i][lane];
+        tFar *= widen;
+        tMin = tNear > tMin ? tNear : tMin;
+        tFarthest = tFar < tFarthest ? tFar : tFarthest;
+      }
+      tEntry[lane] = tMin;
+      if (tMin <= tFarthest) mask |= 1 << lane;
+    }
+    return mask;
+#endif
+  }
+
+  // The lanes of `mask` whose entry distance lies within their tMax.
+  static int within(int mask, const double* tEntry, const double* tMax) {
+    int kept = 0;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      if (tEntry[lane] <= tMax[lane]) kept |= 1 << lane;
+    }
+    return mask & kept;
+  }
+
+  alignas(32) double origin[3][kLanes];
+  alignas(32) double inverseDirection[3][kLanes];
+  bool negative[3];
+  int nearPlane[3];
+  int farPlane[3];
+};
+
+}  // namespace detail
+
+template <typename Visit>
+void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visit&& visit) const {
+  if (nodes_.empty() || count <= 0) return;
+  if (count > kPacketSize) count = kPacketSize;
+  if (count == 1 || !detail::PacketNodeRays::sameSigns(rays, count)) {
+    for (int lane = 0; lane < count; ++lane) {
+      traverse(rays[lane], tMax[lane], [&](std::uint32_t item) { return visit(lane, item); });
+    }
+    return;
+  }
+  detail::PacketNodeRays r(rays, count);
+  constexpr double kOut = -std::numeric_limits<double>::infinity();
+  // Each ray's current tMax; -infinity for a lane without a ray, or whose
+  // ray has stopped (visit returned a negative value), which then meets no
+  // box.
+  double tMaxes[kPacketSize] = {kOut, kOut, kOut, kOut};
+  for (int lane = 0; lane < count; ++lane) tMaxes[lane] = tMax[lane];
+  struct Pending {
+    double tEntry[kPacketSize];
+    std::uint32_t node;
+    int mask;
+  };
+  Pending stack[kStackSize];
+  int top = 0;
+  double tEntries[kPacketSize];
+  int mask = r.hits(nodes_[0], tMaxes, tEntries);
+  int stopped = 0;
+  std::uint32_t current = 0;
+  while (mask != 0) {
+    const BvhNode& node = nodes_[current];
+    if (node.count > 0) {
+      for (std::uint32_t i = 0; i < node.count && mask != 0; ++i) {
+        std::uint32_t item = items_[node.offset + i];
+        for (int lane = 0; lane < kPacketSize; ++lane) {
+          if (!(mask & (1 << lane))) continue;
+          double t = visit(lane, item);
+          if (t < 0.0) {
+            stopped |= 1 << lane;
+            mask &= ~(1 << lane);
+            tMaxes[lane] = kOut;
+          } else {
+            tMaxes[lane] = t;
+          }
+        }
+      }
+    } else {
+      std::uint32_t nearChild = current + 1;
+      std::uint32_t farChild = node.offset;
+      if (r.negative[node.axis]) std::swap(nearChild, farChild);
+      double nearEntries[kPacketSize];
+      Pending far;
+      int hitNear = r.hits(nodes_[nearChild], tMaxes, nearEntries) & mask;
+      int hitFar = r.hits(nodes_[farChild], tMaxes, far.tEntry) & mask;
+      if (hitNear != 0) {
+        if (hitFar != 0) {
+          far.node = farChild;
+          far.mask = hitFar;
+          stack[top++] = far;
+        }
+        current = nearChild;
+        mask = hitNear;
+        continue;
+      }
+      if (hitFar != 0) {
+        current = farChild;
+        mask = hitFar;
+        continue;
+      }
+    }
+    mask = 0;
+    while (mask == 0 && top > 0) {
+      const Pending& next = stack[--top];
+      mask = detail::PacketNodeRays::within(next.mask & ~stopped, next.tEntry, tMaxes);
+      current = next.node;
+    }
+  }
+}
+
+}  // namespace render

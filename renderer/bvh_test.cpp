@@ -1,0 +1,106 @@
+// The BVH build gives the same tree, node for node and item for item,
+// whatever the number of threads that share it.
+#include "renderer/bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace render {
+namespace {
+
+std::vector<Bounds> randomBoxes(std::uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  auto uniform = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+  };
+  std::vector<Bounds> boxes;
+  for (int i = 0; i < count; ++i) {
+    glm::dvec3 centre(uniform(-100, 100), uniform(-100, 100), uniform(-100, 100));
+    // A few share one centre, so that median splits of equal centres occur.
+    if (i % 50 == 0) centre = glm::dvec3(1.0, -0.0, 0.0);
+    glm::dvec3 half(uniform(0.01, 2), uniform(0.01, 2), uniform(0.01, 2));
+    boxes.push_back(Bounds{centre - half, centre + half});
+  }
+  return boxes;
+}
+
+// Boxes farther and farther out along x from the origin, each 20 times as
+// far as the last, all tiny: wherever they end up, the surface area
+// heuristic finds the farthest alone in its last bin and the others in the
+// first, so it peels them off one by one, and the tree reaches the depth
+// past which the build makes leaves of many boxes. Being tiny, they share a
+// subtree with the few boxes about the origin, below the top of the tree.
+void addOutliers(std::vector<Bounds>& boxes, int count) {
+  for (int i = 0; i < count; ++i) {
+    double x = 1e-200 * std::pow(20.0, i);
+    glm::dvec3 half(0.1 * x);
+    boxes.push_back(Bounds{glm::dvec3(x, 0, 0) - half, glm::dvec3(x, 0, 0) + half});
+  }
+}
+
+void expectSameTree(const Bvh& a, const Bvh& b, int threads) {
+  ASSERT_EQ(a.items(), b.items()) << threads << " threads";
+  ASSERT_EQ(a.nodes().size(), b.nodes().size()) << threads << " threads";
+  for (std::size_t i = 0; i < a.nodes().size(); ++i) {
+    const BvhNode& x = a.nodes()[i];
+    const BvhNode& y = b.nodes()[i];
+    // The planes' bits, so that -0 and +0 differ.
+    ASSERT_EQ(std::memcmp(x.planes, y.planes, sizeof x.planes), 0)
+        << threads << " threads, node " << i;
+    ASSERT_EQ(x.offset, y.offset) << threads << " threads, node " << i;
+    ASSERT_EQ(x.count, y.count) << threads << " threads, node " << i;
+    ASSERT_EQ(x.axis, y.axis) << threads << " threads, node " << i;
+  }
+}
+
+// Every item in exactly one leaf, every second child after its sibling.
+void expectWellFormed(const Bvh& bvh, std::size_t boxes) {
+  std::vector<int> seen(boxes, 0);
+  const std::vector<BvhNode>& nodes = bvh.nodes();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const BvhNode& node = nodes[i];
+    if (node.count > 0) {
+      for (std::uint32_t k = 0; k < node.count; ++k) ++seen[bvh.items()[node.offset + k]];
+    } else {
+      ASSERT_GT(node.offset, i + 1);
+      ASSERT_LT(node.offset, nodes.size());
+    }
+  }
+  for (std::size_t item = 0; item < boxes; ++item) ASSERT_EQ(seen[item], 1) << "item " << item;
+}
+
+TEST(BvhBuild, TheTreeIsTheSameWhateverTheThreadCount) {
+  for (int count : {1, 2, 17, 1000, 40000}) {
+    std::vector<Bounds> boxes = randomBoxes(count, count);
+    Bvh one(boxes, 1);
+    expectWellFormed(one, boxes.size());
+    EXPECT_LE(one.nodes().size(), 2 * boxes.size() - 1);
+    for (int threads : {2, 4}) expectSameTree(one, Bvh(boxes, threads), threads);
+  }
+}
+
+// Past the greatest depth the build makes leaves of many boxes, which take
+// fewer nodes than the threads' subtrees kept for them: the gaps are closed
+// and the second children renumbered, to the one-thread tree exactly.
+TEST(BvhBuild, DeepTreesWithLeavesOfManyBoxesAreTheSameWhateverTheThreadCount) {
+  std::vector<Bounds> boxes = randomBoxes(7, 30000);
+  addOutliers(boxes, 90);
+  Bvh one(boxes, 1);
+  expectWellFormed(one, boxes.size());
+  bool manyInALeaf = false;
+  for (const BvhNode& node : one.nodes()) manyInALeaf |= node.count > 1;
+  ASSERT_TRUE(manyInALeaf) << "the scene no longer reaches the greatest depth";
+  EXPECT_LT(one.nodes().size(), 2 * boxes.size() - 1);
+  for (int threads : {2, 3, 4}) expectSameTree(one, Bvh(boxes, threads), threads);
+}
+
+TEST(BvhBuild, NoBoxesMakeAnEmptyTree) {
+  EXPECT_TRUE(Bvh(std::vector<Bounds>{}, 4).empty());
+}
+
+}  // namespace
+}  // namespace render

@@ -1,0 +1,38 @@
+// --region and --tile: the part of the image sfrender renders
+// (docs/RENDERING.md, "Regions and tiles").
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "renderer/render.h"
+
+namespace tools {
+
+// "x0,y0,x1,y1": four whole numbers, half-open pixel bounds; nothing for any
+// other text (the bounds themselves are not checked).
+std::optional<render::PixelRegion> parseRegion(const std::string& text);
+
+// "i/N": tile i (0-based) of N.
+struct TileChoice {
+  int index = 0;
+  int count = 1;
+};
+std::optional<TileChoice> parseTile(const std::string& text);
+
+// --region's check on the command line: four whole numbers x0,y0,x1,y1, x0
+// and y0 not negative, the region not empty.
+CLI::Validator regionOption();
+
+// --tile's check: i/N with N at least 1 and 0 <= i < N.
+CLI::Validator tileOption();
+
+// Why `region` does not lie within a `width` x `height` image, or nothing.
+std::optional<std::string> regionRefusal(const render::PixelRegion& region, int width, int height);
+
+// The region of tile `tile` of a `width` x `height` image (render::imageTile:
+// horizontal bands), or why there is none: more bands than rows.
+std::optional<std::string> tileRefusal(const TileChoice& tile, int height);
+
+}  // namespace tools
