@@ -12,7 +12,15 @@
 #  5. a number typed into the properties panel moves the selection, and
 #     undo takes it back;
 #  6. the saved scene opened and saved again is the same file, byte for byte;
-#  7. no key is lost: a 40-key sequence replayed 20 times with both cores
+#  7. the ray-traced view (T), once it says it is done, is sfrender's image
+#     of the saved scene at the window's size and the view's samples: at
+#     least 99% of the pixels outside the panels within 8 of 255 (compared
+#     by bench's image_compare; skipped where it was not built);
+#  8. Ctrl+O opens an instruction file, Ctrl+S saves it as another one that
+#     sfcheck passes and that keeps its materials, P then saves what
+#     sfconvert makes of it; a missing file and a broken one are told in
+#     the title, the broken one at its line and column;
+#  9. no key is lost: a 40-key sequence replayed 20 times with both cores
 #     kept busy saves the same bytes every time.
 # Usage: x11_session.sh BIN_DIR SOURCE_DIR [SCREENSHOT_OUT.png]
 # Exits 77 (skipped) when Xvfb, xdotool, xwd or netpbm is missing.
@@ -59,9 +67,9 @@ export DISPLAY=":$(head -1 "$work/display")"
 export LIBGL_ALWAYS_SOFTWARE=1
 cd "$work"
 
-# Waits up to 5 s for the window title to contain $1.
+# Waits up to 5 s (or $2 tenths of a second) for the window title to contain $1.
 wait_for_title() {
-  for _ in $(seq 50); do
+  for _ in $(seq "${2:-50}"); do
     case "$(xdotool getwindowname "$window")" in *"$1"*) return 0 ;; esac
     sleep 0.1
   done
@@ -177,10 +185,57 @@ keys p
 wait_for_file Scene7.sf
 cmp Scene1.sf Scene7.sf || fail "Scene1.sf saved again differs"
 
+# 7. The ray-traced view of Scene7.sf, the key list hidden. The panels on
+# the left (220 px) and the status line (22 px) are left out of the
+# comparison.
+keys h t
+wait_for_title ", done" 300
+screenshot traced.ppm
+"$bin/sfrender" Scene7.sf -o reference.ppm --width 640 --height 480 --spp 16 --adaptive 0.03 \
+  --quiet || fail "sfrender cannot render Scene7.sf"
+if [ -x "$bin/image_compare" ]; then
+  pnmcut -left 220 -top 0 -width 420 -height 458 traced.ppm >traced-view.ppm
+  pnmcut -left 220 -top 0 -width 420 -height 458 reference.ppm >reference-view.ppm
+  close="$("$bin/image_compare" traced-view.ppm reference-view.ppm | sed -n 's/^close_8: //p')"
+  echo "ray-traced view against sfrender: $close of the pixels within 8/255"
+  awk -v c="$close" 'BEGIN { exit !(c >= 0.99) }' ||
+    fail "the ray-traced view differs from sfrender's image: $close within 8/255"
+else
+  echo "skipped the ray-traced comparison: image_compare (bench/) was not built"
+fi
+keys t
+
+# 8. Files: an instruction file opened, saved as another, then with P.
+cp "$src/testdata/valid/manual-shiny-blue-cube.txt" shiny.txt
+# Types into the name field of the prompt that Ctrl+S or Ctrl+O opens.
+prompt() {
+  xdotool key "$1"
+  wait_for_title ": type a file name"
+  xdotool type --delay 20 "$2"
+  xdotool key Return
+}
+prompt ctrl+o missing.sf
+wait_for_title "could not open missing.sf"
+printf 'CAMERA\n1 0 0 0\n' >broken.sf
+prompt ctrl+o broken.sf
+wait_for_title "could not open broken.sf:2:7: "
+prompt ctrl+o shiny.txt
+wait_for_title "opened shiny.txt"
+prompt ctrl+s copy.txt
+wait_for_file copy.txt
+"$bin/sfcheck" --werror copy.txt || fail "sfcheck rejects copy.txt"
+for value in 'SPECULAR 0.8' 'SHININESS 4000' 'REFLECTIVITY 0.6' 'AMBIENT 0.15'; do
+  grep -q "$value" copy.txt || fail "copy.txt lost $value: $(cat copy.txt)"
+done
+keys p
+wait_for_file Scene8.sf
+"$bin/sfconvert" --quiet shiny.txt converted.sf || fail "sfconvert cannot convert shiny.txt"
+cmp Scene8.sf converted.sf || fail "the opened file saved with P is not sfconvert's: $(diff Scene8.sf converted.sf)"
+
 stop_builder
 rm -f Scene*.sf
 
-# 7. The same 40 keys, then undo back to the empty scene, 20 times over with
+# 9. The same 40 keys, then undo back to the empty scene, 20 times over with
 # both cores busy: 20 identical files. The keys go without pause between
 # them (xdotool's 12 ms), far faster than a person types.
 sequence=(3 g x 1 period 5 Return  l g y 2 Return  2 g x minus 2 Return b

@@ -374,6 +374,15 @@ void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files) 
     case 'P':
       saveScene(state, files);
       break;
+    case 'T':
+      state.rayTraced = !state.rayTraced;
+      break;
+    case kKeySaveAs:
+      state.filePrompt = FilePrompt::SaveAs;
+      break;
+    case kKeyOpen:
+      state.filePrompt = FilePrompt::Open;
+      break;
     case 'H':
     case kKeyToggleHelp:
       state.showHelp = !state.showHelp;
@@ -490,16 +499,28 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y) {
     pickScene.objects.push_back(sphere);
   }
   render::RenderScene renderScene(pickScene);
-  render::RenderSettings settings;
-  settings.width = state.width;
-  settings.height = state.height;
-  settings.verticalFovDegrees = kVerticalFovDegrees;
+  render::RenderSettings settings = viewRenderSettings(state);
   render::PinholeCamera camera(renderScene.camera(), settings);
   auto hit = renderScene.closestHit(camera.rayThrough(x, y), render::RaySource{});
   if (!hit) return {};
   std::size_t objects = state.scene.objects.size();
   if (hit->object < objects) return Selection{false, hit->object};
   return Selection{true, hit->object - objects};
+}
+
+double verticalFovDegrees(const BuilderState& state) {
+  // As sfrender's applySceneView, which --width and --height both given
+  // leave the aspect ratio to.
+  if (state.scene.view) return std::clamp(state.scene.view->verticalFovDegrees, 0.001, 179.999);
+  return kVerticalFovDegrees;
+}
+
+render::RenderSettings viewRenderSettings(const BuilderState& state) {
+  render::RenderSettings settings;
+  settings.width = state.width;
+  settings.height = state.height;
+  settings.verticalFovDegrees = verticalFovDegrees(state);
+  return settings;
 }
 
 glm::dmat4 viewMatrix(const BuilderState& state) {
@@ -519,7 +540,7 @@ glm::dmat4 viewMatrix(const BuilderState& state) {
 glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far) {
   // x_ndc = (r.d / f.d) / tanHalfWidth: the pinhole of render::PinholeCamera,
   // whose pixel (i, j) centre is OpenGL's fragment centre too.
-  double tanHalfHeight = std::tan(kVerticalFovDegrees * std::numbers::pi / 360.0);
+  double tanHalfHeight = std::tan(verticalFovDegrees(state) * std::numbers::pi / 360.0);
   double aspect = static_cast<double>(state.width) / state.height;
   glm::dmat4 p(0.0);
   p[0][0] = 1.0 / (tanHalfHeight * aspect);
@@ -541,6 +562,7 @@ std::string windowTitle(const BuilderState& state) {
     title += std::string(scene::objectKindName(state.scene.objects[state.selection->index].kind)) +
              " " + std::to_string(state.selection->index + 1);
   }
+  if (state.rayTraced) title += " | " + state.renderStatus;
   if (!state.lastSave.empty()) title += " | " + state.lastSave;
   if (!state.showHelp) title += " | H: keys";
   return title;
@@ -592,7 +614,10 @@ void setCameraView(BuilderState& state, const glm::dvec3& eye, const glm::dvec3&
 
 std::string modeText(const BuilderState& state) {
   std::string title;
-  if (state.operation == Operation::None) {
+  if (state.filePrompt != FilePrompt::None && state.filePromptTyping) {
+    title += state.filePrompt == FilePrompt::SaveAs ? "save as: type a file name"
+                                                    : "open: type a file name";
+  } else if (state.operation == Operation::None) {
     title += "ready";
   } else if (state.axis == Axis::None) {
     title += std::string(operationName(state.operation)) + ": press X, Y or Z";
@@ -614,7 +639,8 @@ const std::vector<std::string>& helpLines() {
       "S alone: scale on all axes",
       "type a number, Enter: exact amount; Esc: cancel",
       "V red  B green  N blue  M purple",
-      "P save Scene<n>.sf",
+      "P save Scene<n>.sf  Ctrl+S save as (.sf, .txt ...)  Ctrl+O open",
+      "T ray-traced view (sfrender's picture, refined as it renders)",
       "Ctrl+Z undo  Ctrl+Shift+Z or Ctrl+Y redo",
       "F9 id view (each object in a flat colour)",
       "left click select; middle drag pan; right drag look; wheel forward",

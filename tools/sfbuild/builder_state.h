@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/render.h"
 #include "scenefile/scene.h"
 #include "tools/sfbuild/scene_history.h"
 
@@ -27,7 +28,12 @@ enum Key : int {
   kKeyUndo,          // Ctrl+Z
   kKeyRedo,          // Ctrl+Shift+Z, Ctrl+Y
   kKeyToggleHelp,    // F1, as H
+  kKeySaveAs,        // Ctrl+S: asks for a file name
+  kKeyOpen,          // Ctrl+O: asks for a file name
 };
+
+// The file name the window is asking for, if any (Ctrl+S, Ctrl+O).
+enum class FilePrompt { None, SaveAs, Open };
 
 enum class MouseButton { Left, Right, Middle };
 
@@ -74,6 +80,21 @@ struct BuilderState {
   std::uint64_t saveAttempts = 0;
   bool idView = false;
   bool showHelp = false;
+  // T: the renderer's picture of the view instead of OpenGL's; the window
+  // renders it (progressive_render.h) and says how far it has got.
+  bool rayTraced = false;
+  std::string renderStatus;
+  FilePrompt filePrompt = FilePrompt::None;
+  // Set by the panels once the prompt's field takes the keys: from then on
+  // the title asks for the name (what a script waits for before typing).
+  bool filePromptTyping = false;
+  // Enter (true) or Escape (false) pressed while the prompt is up, from the
+  // window's key queue: Dear ImGui 1.86 reads keys once a frame and misses a
+  // press and release between two frames, and a script presses fast.
+  std::optional<bool> filePromptAnswer;
+  // The file last opened or saved with Ctrl+S: the one file Ctrl+S may
+  // write over.
+  std::string currentFile;
 
   // Every change to `scene` that is finished (not a transform in progress,
   // not a drag of the view) becomes a step of the history: recordChange.
@@ -91,6 +112,8 @@ struct FileSystem {
   std::function<bool(const std::string&)> exists;
   std::function<bool(const std::string& name, const std::string& content, std::string& error)>
       write;
+  // The file's bytes, or nothing and the reason in `error` (Ctrl+O).
+  std::function<std::optional<std::string>(const std::string& name, std::string& error)> read;
 };
 
 // Each of these records what it changed in the history.
@@ -121,6 +144,14 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y);
 double currentAmount(const BuilderState& state);
 // The matrix of `op` along `axis` by `amount`, to compose on the right.
 glm::dmat4 operationMatrix(Operation op, Axis axis, double amount);
+
+// The vertical field of view sfrender gives the scene: a POV-Ray or glTF
+// camera's own, else kVerticalFovDegrees (what --fov defaults to). The
+// builder's view and its ray-traced view both use it.
+double verticalFovDegrees(const BuilderState& state);
+// sfrender's settings for the window's size and that field of view (its
+// other defaults: depth 5, seed 0, 1 spp): what the ray-traced view renders.
+render::RenderSettings viewRenderSettings(const BuilderState& state);
 
 // The camera-to-world matrix of the view (the CAMERA record), and the
 // matrices OpenGL draws with: they match render::PinholeCamera exactly.

@@ -26,6 +26,13 @@ struct FakeFiles {
             [this](const std::string& n, const std::string& c, std::string&) {
               files[n] = c;
               return true;
+            },
+            [this](const std::string& n, std::string& error) -> std::optional<std::string> {
+              if (files.count(n) == 0) {
+                error = "no such file";
+                return std::nullopt;
+              }
+              return files[n];
             }};
   }
 };

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scenefile/transform.h"
+#include "tools/sfbuild/scene_files.h"
 
 namespace sfbuild {
 namespace {
@@ -15,6 +16,7 @@ constexpr float kSceneHeight = 170.0f;
 constexpr float kHelpWidth = 330.0f;
 constexpr float kHelpHeight = 230.0f;
 constexpr float kStatusHeight = 22.0f;
+constexpr float kPromptWidth = 420.0f;
 constexpr ImGuiWindowFlags kFixed =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings;
 // 15 digits: 0.1 reads 0.1, not 0.10000000000000001. A field not edited
@@ -39,11 +41,47 @@ std::string objectLabel(const scene::Object& object, std::size_t index) {
 
 }  // namespace
 
-void Panels::draw(BuilderState& state) {
+void Panels::draw(BuilderState& state, const FileSystem& files) {
   drawScene(state, 0.0f);
   drawProperties(state, kSceneHeight);
   if (state.showHelp) drawHelp(state);
   drawStatus(state);
+  if (state.filePrompt != FilePrompt::None) drawFilePrompt(state, files);
+}
+
+void Panels::drawFilePrompt(BuilderState& state, const FileSystem& files) {
+  ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.4f), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(kPromptWidth, 0.0f));
+  bool saving = state.filePrompt == FilePrompt::SaveAs;
+  ImGui::Begin(saving ? "Save as (Enter saves, Esc cancels)" : "Open (Enter opens, Esc cancels)",
+               nullptr, kFixed | ImGuiWindowFlags_NoCollapse);
+  ImGui::TextDisabled(saving ? ".sf a scene file, .txt an instruction file (materials kept)"
+                             : "any format sfrender reads");
+  if (!promptFocused_) {
+    ImGui::SetKeyboardFocusHere();
+    promptFocused_ = true;
+  }
+  ImGui::PushItemWidth(-1.0f);
+  ImGui::InputText("##file name", fileName_.data(), fileName_.size());
+  if (ImGui::IsItemActive()) state.filePromptTyping = true;
+  ImGui::PopItemWidth();
+  ImGui::End();
+  if (!state.filePromptAnswer) return;
+  if (*state.filePromptAnswer) {
+    std::string name(fileName_.data());
+    if (saving) {
+      saveSceneAs(state, name, files);
+    } else {
+      openSceneFile(state, name, files);
+    }
+  }
+  state.filePrompt = FilePrompt::None;
+  state.filePromptTyping = false;
+  state.filePromptAnswer.reset();
+  promptFocused_ = false;
+  fileName_.fill('\0');  // the next prompt starts empty
 }
 
 void Panels::drawScene(BuilderState& state, float top) {
@@ -134,6 +172,7 @@ void Panels::drawStatus(const BuilderState& state) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6.0f, 3.0f));
   ImGui::Begin("status", nullptr, kFixed | ImGuiWindowFlags_NoTitleBar);
   std::string text = modeText(state);
+  if (state.rayTraced) text += "   |   " + state.renderStatus;
   if (!state.lastSave.empty()) text += "   |   " + state.lastSave;
   ImGui::TextUnformatted(text.c_str());
   ImGui::End();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/render.h"
+#include "tools/common/quantize.h"
 #include "tools/sfrender/image_formats.h"
 
 namespace tools {
@@ -63,12 +64,6 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
 // says): what a ".ppm" file holds, and what `sfrender -o -` writes to
 // standard output.
 std::string ppmImageBytes(const render::Image& image, const ImageOptions& options = {});
-
-// The 8-bit level of a display value: round(clamp(v, 0, 1) * 255).
-unsigned char quantizeChannel(float value);
-
-// The 16-bit level of a display value: round(clamp(v, 0, 1) * 65535).
-std::uint16_t quantizeChannel16(float value);
 
 // The linear value of a display value: the sRGB decoding (IEC 61966-2-1),
 // extended past [0, 1] as in scRGB (IEC 61966-2-2) and extended sRGB: the
