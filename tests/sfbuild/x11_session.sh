@@ -127,7 +127,11 @@ fi
 
 # 2. A left click on the sphere (its centre, (1.5, 1, 0), is at about pixel
 # (396, 192); the cube covers up to about x = 380) selects it.
-xdotool mousemove --window "$window" 412 195 click 1
+# The pointer rests there first: it starts over the key panel, and a click
+# goes to a panel when the last frame saw the pointer over it.
+xdotool mousemove --window "$window" 412 195
+sleep 0.3
+xdotool click 1
 wait_for_title "SPHERE 1"
 
 # 3. The id view against the renderer's object ids.
