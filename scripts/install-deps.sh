@@ -39,6 +39,9 @@ packages=(
   # Mesa's software OpenGL, types with xdotool and takes screenshots with xwd
   # and netpbm.
   libglfw3-dev libepoxy-dev libgl1-mesa-dri xvfb xauth xdotool x11-apps netpbm
+  # sfbuild's panels (key list, scene, properties, status line): Dear ImGui
+  # 1.86, whose libimgui.a carries the GLFW and OpenGL 3 backends.
+  libimgui-dev
   # The hostile-input tests measure sfcheck's peak memory with GNU time.
   time
   # The Slurm test (tests/slurm) starts a single-node cluster of its own

@@ -11,6 +11,7 @@
 #include "scenefile/convert.h"
 #include "scenefile/matrix.h"
 #include "scenefile/transform.h"
+#include "tools/sfbuild/placement.h"
 
 namespace sfbuild {
 namespace {
@@ -106,12 +107,15 @@ void addObject(BuilderState& state, scene::ObjectKind kind) {
   scene::Object object;
   object.kind = kind;
   object.material.colour = kRed;
+  object.matrix = placedObjectMatrix(kind, state.scene.camera);
   state.scene.objects.push_back(object);
   state.selection = Selection{false, state.scene.objects.size() - 1};
 }
 
 void addLight(BuilderState& state) {
-  state.scene.lights.push_back(scene::Light{});
+  scene::Light light;
+  light.matrix[3] = glm::dvec4(placedLightPosition(state.scene), 1.0);
+  state.scene.lights.push_back(light);
   state.selection = Selection{true, state.scene.lights.size() - 1};
 }
 
@@ -167,6 +171,10 @@ const char* axisName(Axis axis) {
   return "";
 }
 
+void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files);
+void handleMouseButtonUnrecorded(BuilderState& state, MouseButton button, bool pressed, double x,
+                                 double y);
+
 std::string formatAmount(double value) {
   char buffer[32];
   auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
@@ -180,6 +188,7 @@ BuilderState initialState(int width, int height) {
   state.width = width;
   state.height = height;
   state.scene.camera.matrix = scene::cameraFromLookAt({0.0, 3.0, 8.0}, {0.0, 0.0, 0.0});
+  state.history = SceneHistory(state.scene);
   return state;
 }
 
@@ -188,6 +197,7 @@ BuilderState stateForScene(scene::Scene scene, int width, int height) {
   state.width = width;
   state.height = height;
   state.scene = std::move(scene);
+  state.history = SceneHistory(state.scene);
   return state;
 }
 
@@ -246,6 +256,45 @@ glm::dmat4 operationMatrix(Operation op, Axis axis, double amount) {
 }
 
 void handleKey(BuilderState& state, int key, const FileSystem& files) {
+  handleKeyUnrecorded(state, key, files);
+  recordChange(state);
+}
+
+void recordChange(BuilderState& state) {
+  if (state.operation != Operation::None || state.looking || state.panning) return;
+  state.history.record(state.scene);
+}
+
+namespace {
+void restore(BuilderState& state, const scene::Scene* snapshot) {
+  if (!snapshot) return;
+  state.scene = *snapshot;
+  if (state.selection && !selectedMatrix(state)) state.selection.reset();
+}
+}  // namespace
+
+void undo(BuilderState& state) {
+  cancelOperation(state);
+  recordChange(state);
+  restore(state, state.history.undo());
+}
+
+void redo(BuilderState& state) {
+  cancelOperation(state);
+  recordChange(state);
+  restore(state, state.history.redo());
+}
+
+namespace {
+void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files) {
+  if (key == kKeyUndo) {
+    undo(state);
+    return;
+  }
+  if (key == kKeyRedo) {
+    redo(state);
+    return;
+  }
   if (key == kKeyToggleIdView) {
     state.idView = !state.idView;
     return;
@@ -325,7 +374,17 @@ void handleKey(BuilderState& state, int key, const FileSystem& files) {
     case 'P':
       saveScene(state, files);
       break;
+    case 'T':
+      state.rayTraced = !state.rayTraced;
+      break;
+    case kKeySaveAs:
+      state.filePrompt = FilePrompt::SaveAs;
+      break;
+    case kKeyOpen:
+      state.filePrompt = FilePrompt::Open;
+      break;
     case 'H':
+    case kKeyToggleHelp:
       state.showHelp = !state.showHelp;
       break;
     case kKeyEscape:
@@ -336,7 +395,16 @@ void handleKey(BuilderState& state, int key, const FileSystem& files) {
   }
 }
 
+}  // namespace
+
 void handleMouseButton(BuilderState& state, MouseButton button, bool pressed, double x, double y) {
+  handleMouseButtonUnrecorded(state, button, pressed, x, y);
+  recordChange(state);
+}
+
+namespace {
+void handleMouseButtonUnrecorded(BuilderState& state, MouseButton button, bool pressed, double x,
+                                 double y) {
   state.mouse = {x, y};
   switch (button) {
     case MouseButton::Left:
@@ -359,6 +427,8 @@ void handleMouseButton(BuilderState& state, MouseButton button, bool pressed, do
       return;
   }
 }
+
+}  // namespace
 
 void handleMouseMove(BuilderState& state, double x, double y) {
   glm::dvec2 delta = glm::dvec2(x, y) - state.mouse;
@@ -385,6 +455,7 @@ void handleMouseMove(BuilderState& state, double x, double y) {
 void handleScroll(BuilderState& state, double offset) {
   Frame f = cameraFrame(state.scene.camera);
   setCamera(state, f.eye + f.forward * (offset * kWheelUnitsPerStep), f.forward);
+  recordChange(state);
 }
 
 std::optional<std::string> saveScene(BuilderState& state, const FileSystem& files) {
@@ -428,16 +499,28 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y) {
     pickScene.objects.push_back(sphere);
   }
   render::RenderScene renderScene(pickScene);
-  render::RenderSettings settings;
-  settings.width = state.width;
-  settings.height = state.height;
-  settings.verticalFovDegrees = kVerticalFovDegrees;
+  render::RenderSettings settings = viewRenderSettings(state);
   render::PinholeCamera camera(renderScene.camera(), settings);
   auto hit = renderScene.closestHit(camera.rayThrough(x, y), render::RaySource{});
   if (!hit) return {};
   std::size_t objects = state.scene.objects.size();
   if (hit->object < objects) return Selection{false, hit->object};
   return Selection{true, hit->object - objects};
+}
+
+double verticalFovDegrees(const BuilderState& state) {
+  // As sfrender's applySceneView, which --width and --height both given
+  // leave the aspect ratio to.
+  if (state.scene.view) return std::clamp(state.scene.view->verticalFovDegrees, 0.001, 179.999);
+  return kVerticalFovDegrees;
+}
+
+render::RenderSettings viewRenderSettings(const BuilderState& state) {
+  render::RenderSettings settings;
+  settings.width = state.width;
+  settings.height = state.height;
+  settings.verticalFovDegrees = verticalFovDegrees(state);
+  return settings;
 }
 
 glm::dmat4 viewMatrix(const BuilderState& state) {
@@ -457,7 +540,7 @@ glm::dmat4 viewMatrix(const BuilderState& state) {
 glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far) {
   // x_ndc = (r.d / f.d) / tanHalfWidth: the pinhole of render::PinholeCamera,
   // whose pixel (i, j) centre is OpenGL's fragment centre too.
-  double tanHalfHeight = std::tan(kVerticalFovDegrees * std::numbers::pi / 360.0);
+  double tanHalfHeight = std::tan(verticalFovDegrees(state) * std::numbers::pi / 360.0);
   double aspect = static_cast<double>(state.width) / state.height;
   glm::dmat4 p(0.0);
   p[0][0] = 1.0 / (tanHalfHeight * aspect);
@@ -469,8 +552,72 @@ glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far) 
 }
 
 std::string windowTitle(const BuilderState& state) {
-  std::string title = "sfbuild | ";
-  if (state.operation == Operation::None) {
+  std::string title = "sfbuild | " + modeText(state);
+  title += " | ";
+  if (!state.selection) {
+    title += "nothing selected";
+  } else if (state.selection->light) {
+    title += "LIGHT " + std::to_string(state.selection->index + 1);
+  } else if (state.selection->index < state.scene.objects.size()) {
+    title += std::string(scene::objectKindName(state.scene.objects[state.selection->index].kind)) +
+             " " + std::to_string(state.selection->index + 1);
+  }
+  if (state.rayTraced) title += " | " + state.renderStatus;
+  if (!state.lastSave.empty()) title += " | " + state.lastSave;
+  if (!state.showHelp) title += " | H: keys";
+  return title;
+}
+
+void setObjectTransform(BuilderState& state, std::size_t index, const glm::dvec3& translation,
+                        const glm::dvec3& rotationDegrees, const glm::dvec3& scale) {
+  if (index >= state.scene.objects.size()) return;
+  std::vector<scene::TransformOp> ops;
+  auto add = [&ops](scene::TransformKind kind, const glm::dvec3& value) {
+    scene::TransformOp op;
+    op.kind = kind;
+    op.value = value;
+    ops.push_back(op);
+  };
+  constexpr double kRadians = std::numbers::pi / 180.0;
+  add(scene::TransformKind::Scale, scale);
+  add(scene::TransformKind::RotateX, glm::dvec3(rotationDegrees.x * kRadians, 0, 0));
+  add(scene::TransformKind::RotateY, glm::dvec3(rotationDegrees.y * kRadians, 0, 0));
+  add(scene::TransformKind::RotateZ, glm::dvec3(rotationDegrees.z * kRadians, 0, 0));
+  add(scene::TransformKind::Translate, translation);
+  cancelOperation(state);
+  state.scene.objects[index].matrix = scene::composeTransform(ops);
+  state.scene.objects[index].transforms.reset();
+  recordChange(state);
+}
+
+void setObjectMaterial(BuilderState& state, std::size_t index, const scene::Material& material) {
+  if (index >= state.scene.objects.size()) return;
+  state.scene.objects[index].material = material;
+  recordChange(state);
+}
+
+void setLight(BuilderState& state, std::size_t index, const glm::dvec3& position,
+              const glm::dvec3& colour) {
+  if (index >= state.scene.lights.size()) return;
+  cancelOperation(state);
+  state.scene.lights[index].matrix[3] = glm::dvec4(position, 1.0);
+  state.scene.lights[index].colour = colour;
+  recordChange(state);
+}
+
+void setCameraView(BuilderState& state, const glm::dvec3& eye, const glm::dvec3& lookAt) {
+  if (eye == lookAt) return;
+  state.scene.camera.matrix = scene::cameraFromLookAt(eye, lookAt);
+  state.scene.camera.lookAt.reset();
+  recordChange(state);
+}
+
+std::string modeText(const BuilderState& state) {
+  std::string title;
+  if (state.filePrompt != FilePrompt::None && state.filePromptTyping) {
+    title += state.filePrompt == FilePrompt::SaveAs ? "save as: type a file name"
+                                                    : "open: type a file name";
+  } else if (state.operation == Operation::None) {
     title += "ready";
   } else if (state.axis == Axis::None) {
     title += std::string(operationName(state.operation)) + ": press X, Y or Z";
@@ -481,36 +628,23 @@ std::string windowTitle(const BuilderState& state) {
              : state.operation == Operation::Rotate ? " degrees"
                                                     : " times";
   }
-  title += " | ";
-  if (!state.selection) {
-    title += "nothing selected";
-  } else if (state.selection->light) {
-    title += "LIGHT " + std::to_string(state.selection->index + 1);
-  } else if (state.selection->index < state.scene.objects.size()) {
-    title += std::string(scene::objectKindName(state.scene.objects[state.selection->index].kind)) +
-             " " + std::to_string(state.selection->index + 1);
-  }
-  if (!state.lastSave.empty()) title += " | " + state.lastSave;
-  if (state.showHelp) {
-    title += " | keys:";
-    for (const std::string& line : helpLines()) title += "  " + line + ";";
-  } else {
-    title += " | H: keys";
-  }
   return title;
 }
 
 const std::vector<std::string>& helpLines() {
   static const std::vector<std::string> lines = {
-      "1 plane  2 cube  3 sphere  4 cylinder  L light",
+      "1 plane  2 cube  3 sphere  4 cylinder  L light (where the camera looks)",
       "X delete the selection",
       "G / R / S then X, Y or Z: move, rotate, scale on the object's axis",
       "S alone: scale on all axes",
       "type a number, Enter: exact amount; Esc: cancel",
       "V red  B green  N blue  M purple",
-      "P save Scene<n>.sf",
+      "P save Scene<n>.sf  Ctrl+S save as (.sf, .txt ...)  Ctrl+O open",
+      "T ray-traced view (sfrender's picture, refined as it renders)",
+      "Ctrl+Z undo  Ctrl+Shift+Z or Ctrl+Y redo",
+      "F9 id view (each object in a flat colour)",
       "left click select; middle drag pan; right drag look; wheel forward",
-      "H hide this list",
+      "H or F1 show or hide this list",
   };
   return lines;
 }

@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "renderer/render.h"
 #include "scenefile/scene.h"
+#include "tools/sfbuild/scene_history.h"
 
 namespace sfbuild {
 
@@ -23,7 +25,15 @@ enum Key : int {
   kKeyEscape,
   kKeyBackspace,
   kKeyToggleIdView,  // F9: each object in a flat colour of its own (tests)
+  kKeyUndo,          // Ctrl+Z
+  kKeyRedo,          // Ctrl+Shift+Z, Ctrl+Y
+  kKeyToggleHelp,    // F1, as H
+  kKeySaveAs,        // Ctrl+S: asks for a file name
+  kKeyOpen,          // Ctrl+O: asks for a file name
 };
+
+// The file name the window is asking for, if any (Ctrl+S, Ctrl+O).
+enum class FilePrompt { None, SaveAs, Open };
 
 enum class MouseButton { Left, Right, Middle };
 
@@ -70,6 +80,25 @@ struct BuilderState {
   std::uint64_t saveAttempts = 0;
   bool idView = false;
   bool showHelp = false;
+  // T: the renderer's picture of the view instead of OpenGL's; the window
+  // renders it (progressive_render.h) and says how far it has got.
+  bool rayTraced = false;
+  std::string renderStatus;
+  FilePrompt filePrompt = FilePrompt::None;
+  // Set by the panels once the prompt's field takes the keys: from then on
+  // the title asks for the name (what a script waits for before typing).
+  bool filePromptTyping = false;
+  // Enter (true) or Escape (false) pressed while the prompt is up, from the
+  // window's key queue: Dear ImGui 1.86 reads keys once a frame and misses a
+  // press and release between two frames, and a script presses fast.
+  std::optional<bool> filePromptAnswer;
+  // The file last opened or saved with Ctrl+S: the one file Ctrl+S may
+  // write over.
+  std::string currentFile;
+
+  // Every change to `scene` that is finished (not a transform in progress,
+  // not a drag of the view) becomes a step of the history: recordChange.
+  SceneHistory history;
 };
 
 // The builder's opening state: an empty scene and the start camera.
@@ -83,12 +112,24 @@ struct FileSystem {
   std::function<bool(const std::string&)> exists;
   std::function<bool(const std::string& name, const std::string& content, std::string& error)>
       write;
+  // The file's bytes, or nothing and the reason in `error` (Ctrl+O).
+  std::function<std::optional<std::string>(const std::string& name, std::string& error)> read;
 };
 
+// Each of these records what it changed in the history.
 void handleKey(BuilderState& state, int key, const FileSystem& files);
 void handleMouseButton(BuilderState& state, MouseButton button, bool pressed, double x, double y);
 void handleMouseMove(BuilderState& state, double x, double y);
 void handleScroll(BuilderState& state, double offset);
+
+// Makes the scene as it is now a step of the history, unless a transform or
+// a drag of the view is under way (then its end does). What edits
+// state.scene from outside (the panels) calls it once the edit is done.
+void recordChange(BuilderState& state);
+// Ctrl+Z and Ctrl+Shift+Z: a transform in progress is cancelled first; the
+// selection is kept where it still names something.
+void undo(BuilderState& state);
+void redo(BuilderState& state);
 
 // P: the scene as the next free Scene<n>.sf; returns the name written, or
 // nothing (the reason in state.lastSave).
@@ -104,13 +145,36 @@ double currentAmount(const BuilderState& state);
 // The matrix of `op` along `axis` by `amount`, to compose on the right.
 glm::dmat4 operationMatrix(Operation op, Axis axis, double amount);
 
+// The vertical field of view sfrender gives the scene: a POV-Ray or glTF
+// camera's own, else kVerticalFovDegrees (what --fov defaults to). The
+// builder's view and its ray-traced view both use it.
+double verticalFovDegrees(const BuilderState& state);
+// sfrender's settings for the window's size and that field of view (its
+// other defaults: depth 5, seed 0, 1 spp): what the ray-traced view renders.
+render::RenderSettings viewRenderSettings(const BuilderState& state);
+
 // The camera-to-world matrix of the view (the CAMERA record), and the
 // matrices OpenGL draws with: they match render::PinholeCamera exactly.
 glm::dmat4 viewMatrix(const BuilderState& state);
 glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far);
 
+// The edits of the properties panel, each recorded in the history: an
+// object's placement as the instruction file writes it (M = T Rz Ry Rx S,
+// angles in degrees), its material, a light, the camera by eye and look-at
+// point (the look-at point must differ from the eye). An index past the end
+// does nothing.
+void setObjectTransform(BuilderState& state, std::size_t index, const glm::dvec3& translation,
+                        const glm::dvec3& rotationDegrees, const glm::dvec3& scale);
+void setObjectMaterial(BuilderState& state, std::size_t index, const scene::Material& material);
+void setLight(BuilderState& state, std::size_t index, const glm::dvec3& position,
+              const glm::dvec3& colour);
+void setCameraView(BuilderState& state, const glm::dvec3& eye, const glm::dvec3& lookAt);
+
+// What the builder is doing: "ready", "move: press X, Y or Z",
+// "move X 1.5_ units" (the status line, and the title).
+std::string modeText(const BuilderState& state);
 std::string windowTitle(const BuilderState& state);
-// The key list that H shows.
+// The key list that H (or F1) shows and hides.
 const std::vector<std::string>& helpLines();
 
 // The flat colour of object `index` in the id view, 8 bits a channel, and

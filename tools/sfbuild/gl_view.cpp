@@ -16,6 +16,9 @@ constexpr double kNear = 0.05;
 constexpr double kFar = 5000.0;
 constexpr int kSegments = 64;
 constexpr int kGridHalfLines = 10;
+// The lights the preview shades with (the shader's kMaxLights); sfrender
+// uses them all.
+constexpr std::size_t kMaxLights = 16;
 
 const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
@@ -32,16 +35,25 @@ void main() {
 }
 )";
 
-// A key light from above and one side, a weaker one from the other: enough
-// for a shape to read. Both sides of a surface are lit (planes, mirrors).
-// The selection gets an orange tint and an orange rim along its outline.
+// The scene's own lights, Phong as RENDERING.md writes it (ambient per
+// light, the normal turned toward the eye), without shadows, reflection or
+// refraction: what sfrender draws at --depth 0 where nothing is in shadow.
+// A scene with no light would be black, as sfrender draws it; so that
+// shapes can still be placed, the builder then lights it with a fixed key
+// and fill light (`lightCount` 0). The selection gets an orange tint and
+// rim along its outline.
 const char* kFragmentShader = R"(#version 330 core
+const int kMaxLights = 16;
 in vec3 worldNormal;
 in vec3 worldPosition;
 uniform vec3 colour;
 uniform int lit;
 uniform int highlight;
 uniform vec3 eye;
+uniform int lightCount;
+uniform vec3 lightPositions[kMaxLights];
+uniform vec3 lightColours[kMaxLights];
+uniform vec4 material;  // AMBIENT, DIFFUSE, SPECULAR, SHININESS
 out vec4 fragment;
 void main() {
   if (lit == 0) {
@@ -49,16 +61,30 @@ void main() {
     return;
   }
   vec3 n = normalize(worldNormal);
-  if (!gl_FrontFacing) n = -n;
-  float key = max(dot(n, normalize(vec3(0.5, 1.0, 0.7))), 0.0);
-  float fill = max(dot(n, normalize(vec3(-0.7, 0.3, 0.4))), 0.0);
-  vec3 shaded = colour * (0.2 + 0.65 * key + 0.25 * fill);
+  vec3 v = normalize(eye - worldPosition);
+  if (dot(n, v) < 0.0) n = -n;
+  vec3 shaded = vec3(0.0);
+  if (lightCount == 0) {
+    float key = max(dot(n, normalize(vec3(0.5, 1.0, 0.7))), 0.0);
+    float fill = max(dot(n, normalize(vec3(-0.7, 0.3, 0.4))), 0.0);
+    shaded = colour * (0.2 + 0.65 * key + 0.25 * fill);
+  }
+  for (int i = 0; i < lightCount; ++i) {
+    vec3 l = normalize(lightPositions[i] - worldPosition);
+    vec3 light = lightColours[i];
+    shaded += colour * light * material.x;
+    float cosine = dot(l, n);
+    if (cosine > 0.0) {
+      shaded += colour * light * material.y * cosine;
+      shaded += light * material.z * pow(max(0.0, dot(reflect(-l, n), v)), material.w);
+    }
+  }
   if (highlight != 0) {
     vec3 orange = vec3(1.0, 0.6, 0.1);
-    float rim = 1.0 - abs(dot(n, normalize(eye - worldPosition)));
+    float rim = 1.0 - abs(dot(n, v));
     shaded = mix(shaded, orange, 0.1) + orange * pow(rim, 4.0);
   }
-  fragment = vec4(min(shaded, vec3(1.0)), 1.0);
+  fragment = vec4(clamp(shaded, 0.0, 1.0), 1.0);
 }
 )";
 
@@ -101,6 +127,10 @@ GlView::GlView() {
   normalLocation_ = glGetUniformLocation(program_, "normalMatrix");
   colourLocation_ = glGetUniformLocation(program_, "colour");
   litLocation_ = glGetUniformLocation(program_, "lit");
+  lightCountLocation_ = glGetUniformLocation(program_, "lightCount");
+  lightPositionsLocation_ = glGetUniformLocation(program_, "lightPositions");
+  lightColoursLocation_ = glGetUniformLocation(program_, "lightColours");
+  materialLocation_ = glGetUniformLocation(program_, "material");
 
   for (scene::ObjectKind kind : {scene::ObjectKind::Plane, scene::ObjectKind::Sphere,
                                  scene::ObjectKind::Cylinder, scene::ObjectKind::Cube}) {
@@ -203,6 +233,22 @@ void GlView::draw(const BuilderState& state) {
 
   glm::vec3 eye = glm::vec3(state.scene.camera.matrix[3]);
   glUniform3fv(eyeLocation_, 1, glm::value_ptr(eye));
+  std::vector<glm::vec3> lightPositions, lightColours;
+  for (const scene::Light& light : state.scene.lights) {
+    if (lightPositions.size() == kMaxLights) break;
+    lightPositions.push_back(glm::vec3(light.position()));
+    lightColours.push_back(glm::vec3(light.colour));
+  }
+  auto lightCount = static_cast<GLsizei>(lightPositions.size());
+  glUniform1i(lightCountLocation_, lightCount);
+  if (lightCount > 0) {
+    glUniform3fv(lightPositionsLocation_, lightCount, glm::value_ptr(lightPositions[0]));
+    glUniform3fv(lightColoursLocation_, lightCount, glm::value_ptr(lightColours[0]));
+  }
+  auto setMaterial = [&](const scene::Material& m) {
+    glUniform4f(materialLocation_, static_cast<float>(m.ambient), static_cast<float>(m.diffuse),
+                static_cast<float>(m.specular), static_cast<float>(m.shininess));
+  };
   auto selected = [&](bool light, std::size_t index) {
     return state.selection && state.selection->light == light && state.selection->index == index;
   };
@@ -211,9 +257,12 @@ void GlView::draw(const BuilderState& state) {
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
   for (std::size_t i = 0; i < objects.size(); ++i) {
+    setMaterial(objects[i].material);
     drawMesh(meshes_[static_cast<std::size_t>(objects[i].kind)], objects[i].matrix,
              glm::vec3(objects[i].material.colour), true, GL_TRIANGLES, selected(false, i));
   }
+  // The lights' markers are lit flat: a light is not lit by itself.
+  glUniform1i(lightCountLocation_, 0);
   for (std::size_t i = 0; i < state.scene.lights.size(); ++i) {
     glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1.0), state.scene.lights[i].position()),
                                   glm::dvec3(kLightRadius));

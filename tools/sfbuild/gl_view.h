@@ -1,4 +1,5 @@
-// Draws a BuilderState with OpenGL 3.3 core: lit objects, the ground grid,
+// Draws a BuilderState with OpenGL 3.3 core: objects lit by the scene's
+// lights (Phong, as sfrender), the ground grid,
 // lights as small yellow spheres, the selection outlined; or, in the id view,
 // each object in its flat idColour. Needs a current context.
 #pragma once
@@ -31,6 +32,8 @@ class GlView {
   GLuint program_ = 0;
   GLint mvpLocation_ = -1, normalLocation_ = -1, colourLocation_ = -1, litLocation_ = -1;
   GLint modelLocation_ = -1, highlightLocation_ = -1, eyeLocation_ = -1;
+  GLint lightCountLocation_ = -1, lightPositionsLocation_ = -1, lightColoursLocation_ = -1;
+  GLint materialLocation_ = -1;
   std::array<Mesh, 4> meshes_{};  // by scene::ObjectKind
   Mesh grid_;
 };

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "scenefile/read.h"
 #include "renderer/render.h"
+#include "scenefile/read.h"
 #include "tools/common/file_io.h"
 #include "tools/sfbuild/builder_state.h"
 

@@ -3,13 +3,20 @@
 #include <epoxy/gl.h>
 // GLFW after the loader, which brings the GL declarations.
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <cctype>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "scenefile/read.h"
 #include "tools/common/command_line.h"
@@ -21,12 +28,26 @@
 #include "tools/common/tool_streams.h"
 #include "tools/sfbuild/builder_state.h"
 #include "tools/sfbuild/gl_view.h"
+#include "tools/sfbuild/panels.h"
+#include "tools/sfbuild/progressive_render.h"
+#include "tools/sfbuild/ray_traced_view.h"
 #include "tools/sfbuild/sfbuild_command_line.h"
 
 namespace {
 
+// A key as GLFW's callback gave it, kept for the main loop.
+struct KeyPress {
+  int key = 0;
+  int mods = 0;
+};
+
 struct App {
   sfbuild::BuilderState state;
+  // Filled by the key callback during glfwWaitEventsTimeout, emptied by the
+  // main loop right after, in order: no press is missed or reordered,
+  // however long a frame takes (glfwGetKey would only see the state at the
+  // time of asking, and miss a press and release between two frames).
+  std::vector<KeyPress> pendingKeys;
   sfbuild::FileSystem files;
   std::string title;
   bool quiet = false;
@@ -47,16 +68,80 @@ void tellSave(App& app) {
   }
 }
 
+// The ray-traced view (T): what it renders, to restart when that changes.
+struct RayTracing {
+  sfbuild::ProgressiveRender renders;
+  std::optional<scene::Scene> scene;  // of the render under way
+  int width = 0, height = 0;
+  bool done = false;
+  std::chrono::steady_clock::time_point started;
+};
+
+std::string frameStatus(const sfbuild::RenderedFrame& frame) {
+  if (!frame.error.empty()) return "ray traced: failed: " + frame.error;
+  std::ostringstream text;
+  text << "ray traced: level " << frame.level + 1 << " of " << frame.levelCount << ", "
+       << frame.width << "x" << frame.height << ", " << frame.settings.samplesPerPixel << " spp";
+  if (frame.settings.adaptiveThreshold > 0) {
+    text << " adaptive " << frame.settings.adaptiveThreshold;
+  }
+  if (frame.last()) text << ", done";
+  return text.str();
+}
+
+// Restarts the render when the scene or the window has changed since it
+// began, and shows its newest level; says each level's time with -v.
+void drawRayTraced(App& app, RayTracing& rt, sfbuild::RayTracedView& view) {
+  sfbuild::BuilderState& state = app.state;
+  if (!rt.scene || rt.width != state.width || rt.height != state.height ||
+      !(*rt.scene == state.scene)) {
+    rt.renders.start(state.scene, sfbuild::viewRenderSettings(state));
+    rt.scene = state.scene;
+    rt.width = state.width;
+    rt.height = state.height;
+    rt.done = false;
+    rt.started = std::chrono::steady_clock::now();
+    state.renderStatus = "ray traced: rendering";
+  }
+  if (std::optional<sfbuild::RenderedFrame> frame = rt.renders.takeFrame()) {
+    view.upload(*frame);
+    state.renderStatus = frameStatus(*frame);
+    rt.done = frame->last() || !frame->error.empty();
+    std::chrono::duration<double, std::milli> elapsed =
+        std::chrono::steady_clock::now() - rt.started;
+    std::ostringstream ms;
+    ms << std::fixed << std::setprecision(1) << elapsed.count();
+    if (app.output) app.output->detail(state.renderStatus + " after " + ms.str() + " ms");
+  }
+  view.draw(state.width, state.height);
+}
+
+void stopRayTracing(RayTracing& rt, sfbuild::RayTracedView& view) {
+  if (!rt.scene) return;
+  rt.renders.stop();
+  rt.scene.reset();
+  view.clear();
+}
+
 App* appOf(GLFWwindow* window) {
   return static_cast<App*>(glfwGetWindowUserPointer(window));
 }
 
-int builderKey(int key) {
+int builderKey(int key, int mods) {
+  if (mods & GLFW_MOD_CONTROL) {
+    if (key == GLFW_KEY_Z) return (mods & GLFW_MOD_SHIFT) ? sfbuild::kKeyRedo : sfbuild::kKeyUndo;
+    if (key == GLFW_KEY_Y) return sfbuild::kKeyRedo;
+    if (key == GLFW_KEY_S) return sfbuild::kKeySaveAs;
+    if (key == GLFW_KEY_O) return sfbuild::kKeyOpen;
+    return -1;  // no other Ctrl combination means anything yet
+  }
   if ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) || (key >= GLFW_KEY_0 && key <= GLFW_KEY_9)) {
     return key;  // GLFW's codes for these are their ASCII characters
   }
   if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) return '0' + (key - GLFW_KEY_KP_0);
   switch (key) {
+    case GLFW_KEY_F1:
+      return sfbuild::kKeyToggleHelp;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT:
       return '-';
@@ -77,21 +162,47 @@ int builderKey(int key) {
   }
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
   if (action != GLFW_PRESS && !(action == GLFW_REPEAT && key == GLFW_KEY_BACKSPACE)) return;
-  int k = builderKey(key);
-  if (k < 0) return;
-  App& app = *appOf(window);
-  bool helpBefore = app.state.showHelp;
-  sfbuild::handleKey(app.state, k, app.files);
-  tellSave(app);
-  if (app.state.showHelp && !helpBefore && !app.quiet) {
-    for (const std::string& line : sfbuild::helpLines()) std::cout << line << "\n";
-    std::cout.flush();
+  appOf(window)->pendingKeys.push_back({key, mods});
+}
+
+// Hands the keys pressed since the last frame to the builder, in order;
+// while a text field of the panels has the keyboard, they are its alone.
+void handleKeys(App& app) {
+  std::vector<KeyPress> keys;
+  keys.swap(app.pendingKeys);
+  if (app.state.filePrompt != sfbuild::FilePrompt::None) {
+    // The name's characters reach the field through ImGui's own queue.
+    for (const KeyPress& press : keys) {
+      int k = builderKey(press.key, press.mods);
+      if (k == sfbuild::kKeyEnter) app.state.filePromptAnswer = true;
+      if (k == sfbuild::kKeyEscape) app.state.filePromptAnswer = false;
+      if (app.state.filePromptAnswer) break;
+    }
+    return;
+  }
+  // WantCaptureKeyboard dates from the start of the last frame: a field
+  // that Enter closed during it still counts, and the key pressed right
+  // after (Ctrl+O after a name typed in the prompt) would be lost; whether
+  // an item is active is how the frame ended.
+  if (ImGui::GetIO().WantCaptureKeyboard && ImGui::IsAnyItemActive()) return;
+  for (const KeyPress& press : keys) {
+    int k = builderKey(press.key, press.mods);
+    if (k < 0) continue;
+    bool helpBefore = app.state.showHelp;
+    sfbuild::handleKey(app.state, k, app.files);
+    tellSave(app);
+    if (app.state.showHelp && !helpBefore && !app.quiet) {
+      for (const std::string& line : sfbuild::helpLines()) std::cout << line << "\n";
+      std::cout.flush();
+    }
   }
 }
 
 void onMouseButton(GLFWwindow* window, int button, int action, int) {
+  // A press on a panel is the panel's; a release always ends a drag.
+  if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) return;
   double x = 0, y = 0;
   glfwGetCursorPos(window, &x, &y);
   sfbuild::MouseButton b;
@@ -113,6 +224,7 @@ void onCursor(GLFWwindow* window, double x, double y) {
 }
 
 void onScroll(GLFWwindow* window, double, double dy) {
+  if (ImGui::GetIO().WantCaptureMouse) return;
   sfbuild::handleScroll(appOf(window)->state, dy);
 }
 
@@ -221,6 +333,9 @@ int main(int argc, char** argv) {
   app.files.write = [](const std::string& name, const std::string& content, std::string& error) {
     return tools::writeFileAtomically(name, content, error);
   };
+  app.files.read = [](const std::string& name, std::string& error) {
+    return tools::readWholeFile(name, error);
+  };
   app.output = &output;
 
   GLFWwindow* window = openWindow(options, output);
@@ -238,23 +353,56 @@ int main(int argc, char** argv) {
   output.detail(std::string("OpenGL ") + reinterpret_cast<const char*>(glGetString(GL_VERSION)) +
                 " on " + reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 
+  // The panels: ImGui's GLFW backend calls the callbacks above after its
+  // own (it chains them); no imgui.ini, so every start looks the same.
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  app.state.showHelp = true;  // the key list, until H or F1 hides it
+
   int status = 0;
   try {
     sfbuild::GlView view;
+    sfbuild::RayTracedView rayTracedView;
+    RayTracing rayTracing;
+    sfbuild::Panels panels;
     while (!glfwWindowShouldClose(window)) {
-      view.draw(app.state);
+      handleKeys(app);
+      if (app.state.rayTraced && !app.state.idView) {
+        drawRayTraced(app, rayTracing, rayTracedView);
+      } else {
+        stopRayTracing(rayTracing, rayTracedView);
+        view.draw(app.state);
+      }
+      // The id view is compared pixel by pixel with the renderer's ids: no
+      // panels over it.
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      if (!app.state.idView) panels.draw(app.state, app.files);
+      tellSave(app);
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       glfwSwapBuffers(window);
       std::string title = sfbuild::windowTitle(app.state);
       if (title != app.title) {
         glfwSetWindowTitle(window, title.c_str());
         app.title = title;
       }
-      glfwWaitEventsTimeout(0.1);
+      // A render under way hands over levels: look for them often.
+      bool rendering = app.state.rayTraced && rayTracing.scene && !rayTracing.done;
+      glfwWaitEventsTimeout(rendering ? 0.005 : 0.1);
     }
   } catch (const std::exception& e) {
     output.error(e.what());
     status = 1;
   }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
   glfwDestroyWindow(window);
   glfwTerminate();
   return tools::closeStandardStreams("sfbuild", status);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/render.h"
+#include "tools/common/quantize.h"
 #include "tools/sfrender/image_formats.h"
 #include "tools/sfrender/oiio_module.h"
 
@@ -75,12 +76,6 @@ struct ImageRegionFile {
 // Reads the image at `path` through OpenImageIO's module; false with a
 // message in `error` when it cannot.
 bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file, std::string& error);
-
-// The 8-bit level of a display value: round(clamp(v, 0, 1) * 255).
-unsigned char quantizeChannel(float value);
-
-// The 16-bit level of a display value: round(clamp(v, 0, 1) * 65535).
-std::uint16_t quantizeChannel16(float value);
 
 // The linear value of a display value: the sRGB decoding (IEC 61966-2-1),
 // extended past [0, 1] as in scRGB (IEC 61966-2-2) and extended sRGB: the
