@@ -190,10 +190,6 @@ PixelRegion imageTile(int width, int height, int index, int count) {
   return PixelRegion{0, y0, width, y1};
 }
 
-namespace {
-
-// The pixels of the full image that `settings` asks for: its region cut to
-// the image, or all of it.
 PixelRegion regionToRender(const RenderSettings& settings) {
   PixelRegion full{0, 0, std::max(0, settings.width), std::max(0, settings.height)};
   if (settings.region.empty()) return full;
@@ -201,6 +197,23 @@ PixelRegion regionToRender(const RenderSettings& settings) {
                   std::min(settings.region.x1, full.x1), std::min(settings.region.y1, full.y1)};
   return cut.empty() ? PixelRegion{} : cut;
 }
+
+Image blankImageFor(const RenderSettings& settings) {
+  PixelRegion region = regionToRender(settings);
+  Image image;
+  image.width = region.width();
+  image.height = region.height();
+  image.originX = region.x0;
+  image.originY = region.y0;
+  image.fullWidth = std::max(0, settings.width);
+  image.fullHeight = std::max(0, settings.height);
+  std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  image.rgb.assign(pixels * Image::kChannels, 0.0f);
+  if (settings.coverage) image.coverage.assign(pixels, 0.0f);
+  return image;
+}
+
+namespace {
 
 // The mean of some of a pixel's samples, with the bound on what adaptive
 // depth control left out of it and how many of its camera rays met an
@@ -568,16 +581,8 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
   }
   auto start = std::chrono::steady_clock::now();
   PixelRegion region = regionToRender(settings);
-  Image image;
-  image.width = region.width();
-  image.height = region.height();
-  image.originX = region.x0;
-  image.originY = region.y0;
-  image.fullWidth = std::max(0, settings.width);
-  image.fullHeight = std::max(0, settings.height);
+  Image image = blankImageFor(settings);
   std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
-  image.rgb.assign(pixels * Image::kChannels, 0.0f);
-  if (settings.coverage) image.coverage.assign(pixels, 0.0f);
 
   PixelTracer tracer(scene, settings);
   std::vector<Worker> workers(threadCount(settings.threads));

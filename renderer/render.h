@@ -31,6 +31,7 @@ struct PixelRegion {
 // is out of range or there are more bands than rows.
 PixelRegion imageTile(int width, int height, int index, int count);
 
+
 // Where renderImage traces (docs/RENDERING.md, "The GPU path").
 enum class RenderDevice {
   Cpu,
@@ -229,6 +230,15 @@ class RenderCancelled : public std::exception {
  public:
   const char* what() const noexcept override { return "the render was cancelled"; }
 };
+
+/// The pixels of the full image that `settings` asks for: its region cut to
+/// the image, or all of it.
+PixelRegion regionToRender(const RenderSettings& settings);
+
+/// An image of the pixels `settings` asks for (regionToRender), every
+/// value 0, with its place in the full image, and coverage when asked for:
+/// what each device's render fills in.
+Image blankImageFor(const RenderSettings& settings);
 
 // The image of `scene`. With `cancel`, stops once it is requested: every
 // thread leaves its row, and RenderCancelled is thrown when all are joined.

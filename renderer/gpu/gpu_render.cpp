@@ -127,14 +127,6 @@ class Pipeline {
 };
 
 // The region as renderImage cuts it (render.cpp's regionToRender).
-PixelRegion regionOf(const RenderSettings& settings) {
-  PixelRegion full{0, 0, std::max(0, settings.width), std::max(0, settings.height)};
-  if (settings.region.empty()) return full;
-  PixelRegion cut{std::max(settings.region.x0, 0), std::max(settings.region.y0, 0),
-                  std::min(settings.region.x1, full.x1), std::min(settings.region.y1, full.y1)};
-  return cut.empty() ? PixelRegion{} : cut;
-}
-
 GpuParams paramsFor(const RenderScene& scene, const RenderSettings& settings,
                     const PixelRegion& region, bool idsOnly) {
   PinholeCamera camera(scene.camera(), settings);
@@ -315,18 +307,10 @@ Image renderImageGpu(const RenderScene& scene, const RenderSettings& settings,
                      RenderStatistics* statistics, const ProgressCallback& progress,
                      const CancelFlag* cancel) {
   auto start = std::chrono::steady_clock::now();
-  PixelRegion region = regionOf(settings);
-  Image image;
-  image.width = region.width();
-  image.height = region.height();
-  image.originX = region.x0;
-  image.originY = region.y0;
-  image.fullWidth = std::max(0, settings.width);
-  image.fullHeight = std::max(0, settings.height);
+  PixelRegion region = regionToRender(settings);
+  Image image = blankImageFor(settings);
   std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
   KernelOutput out = runKernel(scene, settings, region, false, progress, cancel);
-  image.rgb.resize(pixels * Image::kChannels);
-  if (settings.coverage) image.coverage.resize(pixels);
   RayCounts rays;
   for (std::size_t k = 0; k < pixels; ++k) {
     for (std::size_t c = 0; c < 3; ++c) image.rgb[3 * k + c] = out.colours[4 * k + c];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scenefile/mesh.h"
+#include "tools/sfbuild/gl_program.h"
 
 namespace sfbuild {
 namespace {
@@ -88,20 +89,6 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const char* source) {
-  GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("shader: ") + log);
-  }
-  return shader;
-}
-
 glm::mat4 toFloat(const glm::dmat4& m) {
   return glm::mat4(m);
 }
@@ -109,17 +96,7 @@ glm::mat4 toFloat(const glm::dmat4& m) {
 }  // namespace
 
 GlView::GlView() {
-  GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-  GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) throw std::runtime_error("shader program does not link");
+  program_ = linkGlProgram(kVertexShader, kFragmentShader, "the view's");
   mvpLocation_ = glGetUniformLocation(program_, "mvp");
   modelLocation_ = glGetUniformLocation(program_, "model");
   highlightLocation_ = glGetUniformLocation(program_, "highlight");

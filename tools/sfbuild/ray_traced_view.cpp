@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "tools/sfbuild/gl_program.h"
+
 namespace sfbuild {
 namespace {
 
@@ -26,34 +28,10 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const char* source) {
-  GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("ray-traced view shader: ") + log);
-  }
-  return shader;
-}
-
 }  // namespace
 
 RayTracedView::RayTracedView() {
-  GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-  GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) throw std::runtime_error("the ray-traced view's shader program does not link");
+  program_ = linkGlProgram(kVertexShader, kFragmentShader, "the ray-traced view's");
   glGenVertexArrays(1, &vao_);
   glGenTextures(1, &texture_);
   glBindTexture(GL_TEXTURE_2D, texture_);
