@@ -362,6 +362,12 @@ int Renderer::run() {
     output_.error(*overLimit);
     return toInt(ExitCode::Usage);
   }
+  // A usage error, told before the scene is read and compiled.
+  if (settings_.device == render::RenderDevice::Gpu && settings_.adaptiveThreshold > 0 &&
+      settings_.samplesPerPixel > 1) {
+    output_.error("--adaptive is not done on the gpu; leave it out or use --device cpu");
+    return toInt(ExitCode::Usage);
+  }
   if (isStandardStream(o_.input) && o_.output.empty()) {
     output_.error("the scene comes from standard input, so the image needs a name",
                   "name it with -o FILE, or -o - for a PPM on standard output");
@@ -395,11 +401,6 @@ int Renderer::run() {
     };
   }
   stage_.set("rendering");
-  if (settings_.device == render::RenderDevice::Gpu && settings_.adaptiveThreshold > 0 &&
-      settings_.samplesPerPixel > 1) {
-    output_.error("--adaptive is not done on the gpu; leave it out or use --device cpu");
-    return toInt(ExitCode::Usage);
-  }
   render::Image image;
   try {
     image = render::renderImage(compiled, settings_, &statistics, progress);
