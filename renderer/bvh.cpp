@@ -287,4 +287,26 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
   nodes_.resize(closeGaps(nodes_, subtrees, reserved));
 }
 
+std::vector<std::uint32_t> Bvh::visitRanks(std::uint8_t signs) const {
+  std::vector<std::uint32_t> rank(items_.size(), 0);
+  if (nodes_.empty()) return rank;
+  std::vector<std::uint32_t> stack{0};
+  std::uint32_t next = 0;
+  while (!stack.empty()) {
+    std::uint32_t current = stack.back();
+    stack.pop_back();
+    const BvhNode& node = nodes_[current];
+    if (node.count > 0) {
+      for (std::uint32_t i = 0; i < node.count; ++i) rank[items_[node.offset + i]] = next++;
+      continue;
+    }
+    std::uint32_t nearChild = current + 1;
+    std::uint32_t farChild = node.offset;
+    if (signs >> node.axis & 1) std::swap(nearChild, farChild);
+    stack.push_back(farChild);
+    stack.push_back(nearChild);
+  }
+  return rank;
+}
+
 }  // namespace render

@@ -2,6 +2,7 @@
 // heuristic in binned form, stored flat in depth-first order.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -13,6 +14,13 @@
 #include "renderer/bounds.h"
 
 namespace render {
+
+// A direction's signs as the BVH's walk takes them: bit i set where
+// component i is negative, -0 included (its inverse is -infinity).
+inline std::uint8_t directionSigns(const glm::dvec3& d) {
+  return static_cast<std::uint8_t>((std::signbit(d.x) ? 1 : 0) | (std::signbit(d.y) ? 2 : 0) |
+                                   (std::signbit(d.z) ? 4 : 0));
+}
 
 // 32 bytes: the box in float, rounded outward from the double bounds so that
 // it still contains them (a ray can only meet more boxes, never fewer), which
@@ -133,6 +141,13 @@ class Bvh {
   // traversed one by one.
   template <typename Visit>
   void traversePacket(const BoxRay* rays, int count, const double* tMax, Visit&& visit) const;
+
+  /// Per item, its place in the order in which traverse visits items for a
+  /// ray whose direction has the signs `signs` (directionSigns), whatever
+  /// boxes it meets: each leaf's items in turn, the near child first. The
+  /// nearest hit is the first in this order of the items at the nearest
+  /// distance.
+  std::vector<std::uint32_t> visitRanks(std::uint8_t signs) const;
 
  private:
   // The ray as the node test wants it, worked out once per ray: per axis,

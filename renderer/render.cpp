@@ -24,6 +24,8 @@ namespace render {
 namespace {
 
 constexpr int kTileSize = 32;
+// The side of a cell of the eye's direction grid, in pixels.
+constexpr int kEyeCellPixels = 4;
 
 // SplitMix64: a counter-based generator, so each pixel's samples depend on
 // the seed and the pixel alone.
@@ -105,7 +107,12 @@ void forEachTile(const PixelRegion& region, int threads, PerTile&& perTile,
 // float product is the one the 8-bit writer rounds.
 long levelOf(float v, double levels) {
   float clamped = std::clamp(v, 0.0f, 1.0f);
-  if (levels == 255.0) return std::lround(clamped * 255.0f);
+  if (levels == 255.0) {
+    // std::lround of the float product, as tools::quantizeChannel rounds it.
+    float level = clamped * 255.0f;
+    if (!(level >= 0.0f)) return 0;
+    return static_cast<long>(std::floor(static_cast<double>(level) + 0.5));
+  }
   return std::lround(static_cast<double>(clamped) * levels);
 }
 
@@ -271,6 +278,7 @@ class PixelTracer {
     if (scene.hasTransparency()) {
       for (std::uint32_t object : scene.mediaContaining(camera_.eye())) eyeMedia_.push(object);
     }
+    if (settings.eyeGrid && settings.packets) buildEyeGrid();
   }
 
   // The stack each sample starts with: copied afresh per sample only where
@@ -295,7 +303,9 @@ class PixelTracer {
       Ray rays[kPacket];
       for (int k = 0; k < n; ++k) rays[k] = camera_.rayThrough(at[first + k].x, at[first + k].y);
       std::optional<Hit> hits[kPacket];
-      if (settings_.packets) {
+      if (eyeGrid_) {
+        scene_.closestHitsFromEye(*eyeGrid_, rays, n, hits);
+      } else if (settings_.packets) {
         const RaySource fromCamera[kPacket] = {};
         scene_.closestHits(rays, fromCamera, n, hits);
       }
@@ -372,6 +382,31 @@ class PixelTracer {
   std::uint64_t allowance_;
   bool certifies_;
   MediumStack eyeMedia_;
+  std::optional<EyeGrid> eyeGrid_;
+
+  // The eye's direction grid, where it pays: cells of kEyeCellPixels
+  // pixels a side, for a render of at least as many samples as bounded
+  // objects (its build costs about what a sample's camera ray does, per
+  // object).
+  void buildEyeGrid() {
+    std::uint64_t objects = scene_.boundedObjects().size();
+    PixelRegion region = regionToRender(settings_);
+    std::uint64_t samples = static_cast<std::uint64_t>(region.width()) * region.height() *
+                            static_cast<std::uint64_t>(std::max(1, settings_.samplesPerPixel));
+    if (objects < RenderScene::kMinGridObjects || samples < objects) return;
+    GridWindow window;
+    window.forward = camera_.forward();
+    window.uAxis = camera_.right();
+    window.vAxis = camera_.up();
+    window.uLow = -camera_.tanHalfWidth();
+    window.uHigh = camera_.tanHalfWidth();
+    window.vLow = -camera_.tanHalfHeight();
+    window.vHigh = camera_.tanHalfHeight();
+    window.columns = (settings_.width + kEyeCellPixels - 1) / kEyeCellPixels;
+    window.rows = (settings_.height + kEyeCellPixels - 1) / kEyeCellPixels;
+    EyeGrid grid = scene_.eyeGrid(camera_.eye(), window);
+    if (grid.grid.built()) eyeGrid_ = std::move(grid);
+  }
 };
 
 // Where pixels go in the image of a region.

@@ -31,7 +31,6 @@ struct PixelRegion {
 // is out of range or there are more bands than rows.
 PixelRegion imageTile(int width, int height, int index, int count);
 
-
 // Where renderImage traces (docs/RENDERING.md, "The GPU path").
 enum class RenderDevice {
   Cpu,
@@ -79,6 +78,10 @@ struct RenderSettings {
   // docs/RENDERING.md, "Packets"): the same image, bit for bit, either way;
   // false traces each alone, for the tests and benchmarks that compare.
   bool packets = true;
+  // Whether camera rays find their hits through the eye's direction grid
+  // (RenderScene::closestHitsFromEye, docs/RENDERING.md, "Direction
+  // grids") where it can answer: the same image, bit for bit, either way.
+  bool eyeGrid = true;
   int threads = 0;  // 0: every core
   std::uint64_t seed = 0;
   // Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"): 0

@@ -43,15 +43,22 @@ TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
 TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   RenderMemoryEstimate e = estimateRenderMemory(1000, 7, 640, 480);
   EXPECT_EQ(e.image, 640u * 480 * (3 * sizeof(float) + 3 * sizeof(float)));
+  // The records, and each object's index in its list and its BVH leaf.
   EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
-                             sizeof(std::uint32_t)) +
+                             2 * sizeof(std::uint32_t)) +
                          7 * sizeof(RenderLight));
   // At least the nodes, items, centres and boxes; the rest is the
   // threads' list of subtrees, a few bytes a box.
   std::uint64_t parts = 1000 * (2 * sizeof(Bounds) + sizeof(glm::dvec3) + 2 * sizeof(BvhNode) +
                                 sizeof(std::uint32_t));
-  EXPECT_GE(e.bvh, parts);
-  EXPECT_LE(e.bvh, parts + 1000 * 4);
+  // And 7 lights' grids of 128 cells a side: per cell its start, count and
+  // full flag, per entry an index (16 a box, plus one a cell, at most), and
+  // while one builds, 6 ranges of cells a box in a vector that may double,
+  // and each item's leaf.
+  std::uint64_t cells = 6 * 128 * 128 + 1;
+  std::uint64_t grids = 7 * (cells * 13 + (16 * 1000 + cells) * 4) + 1000 * (2 * 6 * 20 + 4);
+  EXPECT_GE(e.bvh, parts + grids);
+  EXPECT_LE(e.bvh, parts + grids + 1000 * 4);
   EXPECT_EQ(estimateRenderMemory(5, 0, 0, -3).image, 0u);  // no pixels
 }
 
@@ -82,6 +89,15 @@ TEST(RenderMemory, TheEstimateBoundsWhatIsAllocated) {
                 compiled.lights().capacity() * sizeof(RenderLight),
             bytes.scene);
   EXPECT_GE(bytes.bvh, Bvh::bytesFor(s.objects.size()));
+  // The lights' direction grids, which a scene of 300 objects has.
+  std::uint64_t grids = 0;
+  for (std::size_t l = 0; l < s.lights.size(); ++l) {
+    ASSERT_NE(compiled.lightGrid(l), nullptr);
+    grids += compiled.lightGrid(l)->bytes();
+  }
+  EXPECT_LE(bvh.nodes().capacity() * sizeof(BvhNode) +
+                bvh.items().capacity() * sizeof(std::uint32_t) + grids + boxes * 2 * sizeof(Bounds),
+            bytes.bvh);
 
   RenderSettings settings;
   settings.width = 17;

@@ -62,10 +62,31 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
   bytes.scene = saturatingSum(saturatingProduct(objects, perObject),
                               saturatingProduct(lights, sizeof(RenderLight)));
   bytes.bvh = saturatingSum(saturatingProduct(objects, 2 * sizeof(Bounds)), Bvh::bytesFor(objects));
+  // The lights' grids (DirectionGrid::bytes, bounded by its limits), and
+  // while one is built, each box's cell ranges (at most one a window, in a
+  // vector that may double) and the leaf of each item.
+  std::uint64_t grids = std::min<std::uint64_t>(lights, kMaxLightGrids);
+  if (objects >= kMinGridObjects && grids > 0) {
+    DirectionGrid::Limits limits;
+    std::uint64_t side = static_cast<std::uint64_t>(lightGridResolution(objects));
+    std::uint64_t cells = DirectionGrid::kMaxWindows * side * side + 1;
+    std::uint64_t entries =
+        std::min(saturatingSum(saturatingProduct(limits.coverPerBox, objects), cells),
+                 saturatingProduct(limits.perCell, cells));
+    std::uint64_t perGrid = saturatingSum(saturatingProduct(cells, 9 + sizeof(std::uint32_t)),
+                                          saturatingProduct(entries, sizeof(std::uint32_t)));
+    std::uint64_t building =
+        saturatingProduct(objects, 2 * DirectionGrid::kMaxWindows * DirectionGrid::kRangeBytes +
+                                       sizeof(std::uint32_t));
+    bytes.bvh =
+        saturatingSum(bytes.bvh, saturatingSum(saturatingProduct(grids, perGrid), building));
+  }
+  bytes.scene = saturatingSum(bytes.scene, saturatingProduct(objects, sizeof(std::uint32_t)));
   return bytes;
 }
 
-RenderScene::RenderScene(const scene::Scene& scene, int threads) : camera_(scene.camera) {
+RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids)
+    : camera_(scene.camera) {
   const std::size_t count = scene.objects.size();
   objects_.resize(count);
   linearToWorld_.resize(count);
@@ -89,10 +110,105 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads) : camera_(scene
     }
   }
   bvh_ = Bvh(boxes, threads);
+  leafOf_.resize(boxes.size());
+  const std::vector<BvhNode>& nodes = bvh_.nodes();
+  for (std::uint32_t node = 0; node < nodes.size(); ++node) {
+    for (std::uint32_t i = 0; i < nodes[node].count; ++i) {
+      leafOf_[bvh_.items()[nodes[node].offset + i]] = node;
+    }
+  }
   lights_.reserve(scene.lights.size());
   for (const scene::Light& light : scene.lights) {
     lights_.push_back(RenderLight{light.position(), light.colour});
   }
+  // A grid per light, for its shadow rays (docs/RENDERING.md, "Direction
+  // grids"); not for a scene so small that the BVH is as quick.
+  if (lightGrids && boxes.size() >= kMinGridObjects) {
+    int resolution = lightGridResolution(boxes.size());
+    for (std::size_t i = 0; i < lights_.size() && i < kMaxLightGrids; ++i) {
+      lightGrids_.push_back(DirectionGrid::cubeAround(lights_[i].position, boxes, resolution,
+                                                      DirectionGrid::Limits{}));
+    }
+  }
+}
+
+Bounds RenderScene::itemBounds(std::uint32_t item) const {
+  std::uint32_t index = bounded_[item];
+  glm::dmat4 matrix(linearToWorld_[index]);
+  matrix[3] = glm::dvec4(objects_[index].translation, 1.0);
+  return *worldBounds(objects_[index].kind, matrix);
+}
+
+EyeGrid RenderScene::eyeGrid(const glm::dvec3& eye, const GridWindow& window) const {
+  std::vector<Bounds> boxes(bounded_.size());
+  for (std::uint32_t item = 0; item < boxes.size(); ++item) boxes[item] = itemBounds(item);
+  EyeGrid eyeGrid{
+      DirectionGrid(eye, {window}, boxes,
+                    DirectionGrid::Limits{.farLookup = std::numeric_limits<double>::infinity()}),
+      {}};
+  DirectionGrid& grid = eyeGrid.grid;
+  if (!grid.built()) return eyeGrid;
+  // Each cell's list in the BVH's order for its centre's direction signs.
+  std::array<std::vector<std::uint32_t>, 8> ranks;
+  eyeGrid.signs.resize(grid.cellCount());
+  for (std::uint32_t cell = 0; cell < grid.cellCount(); ++cell) {
+    std::array<glm::dvec3, 4> corners = grid.cellCorners(cell);
+    glm::dvec3 centre = (corners[0] + corners[3]) * 0.5;
+    std::uint8_t signs = directionSigns(centre);
+    eyeGrid.signs[cell] = signs;
+    std::span<std::uint32_t> items = grid.mutableItems(cell);
+    if (items.size() < 2) continue;
+    if (ranks[signs].empty()) ranks[signs] = bvh_.visitRanks(signs);
+    const std::vector<std::uint32_t>& rank = ranks[signs];
+    std::sort(items.begin(), items.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return rank[a] < rank[b]; });
+  }
+  return eyeGrid;
+}
+
+void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int count,
+                                     std::optional<Hit>* out) const {
+  constexpr int kPacket = Bvh::kPacketSize;
+  const RaySource fromEye[kPacket] = {};
+  Ray left[kPacket];
+  int leftAt[kPacket];
+  for (int first = 0; first < count; first += kPacket) {
+    int n = std::min(kPacket, count - first);
+    int leftCount = 0;
+    for (int k = first; k < first + n; ++k) {
+      const Ray& ray = rays[k];
+      std::uint32_t cell = ray.origin == eye.grid.apex() ? eye.grid.cellOf(0, ray.direction)
+                                                         : DirectionGrid::kNoCell;
+      if (cell == DirectionGrid::kNoCell || eye.grid.full(cell) ||
+          eye.signs[cell] != directionSigns(ray.direction)) {
+        left[leftCount] = ray;
+        leftAt[leftCount++] = k;
+        continue;
+      }
+      // As closestHit: the planes, then the items in the BVH's order.
+      std::uint32_t best = RaySource::kNone;
+      Candidate bestCandidate{std::numeric_limits<double>::infinity(), false, SpanFace::None};
+      auto consider = [&](std::uint32_t index) {
+        if (auto c = intersectObject(index, ray, fromEye[0], bestCandidate.t)) {
+          best = index;
+          bestCandidate = *c;
+        }
+      };
+      for (std::uint32_t plane : planes_) consider(plane);
+      for (std::uint32_t item : eye.grid.items(cell)) consider(bounded_[item]);
+      out[k] = best == RaySource::kNone ? std::nullopt
+                                        : std::optional<Hit>(finishHit(best, ray, bestCandidate));
+    }
+    if (leftCount == 0) continue;
+    std::optional<Hit> found[kPacket];
+    closestHits(left, fromEye, leftCount, found);
+    for (int k = 0; k < leftCount; ++k) out[leftAt[k]] = found[k];
+  }
+}
+
+int RenderScene::lightGridResolution(std::uint64_t bounded) {
+  double side = 4.0 * std::sqrt(static_cast<double>(bounded));
+  return static_cast<int>(std::clamp(side, 128.0, 512.0));
 }
 
 // Inlined into the searches: it runs for every object a ray reaches.
@@ -222,8 +338,8 @@ std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySo
   return finishHit(best, ray, bestCandidate);
 }
 
-bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax,
-                         std::uint32_t* lastOccluder) const {
+bool RenderScene::blockedByHintOrPlane(const Ray& ray, const RaySource& source, double tMax,
+                                       std::uint32_t* lastOccluder) const {
   if (lastOccluder && *lastOccluder < objects_.size() &&
       intersectObject(*lastOccluder, ray, source, tMax)) {
     return true;
@@ -234,6 +350,50 @@ bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax,
       return true;
     }
   }
+  return false;
+}
+
+[[gnu::always_inline]] inline bool RenderScene::meetsItemBox(std::uint32_t item, const BoxRay& ray,
+                                                             double tMax) const {
+  const float* planes = bvh_.nodes()[leafOf_[item]].planes;
+  Bounds box{glm::dvec3(planes[0], planes[1], planes[2]),
+             glm::dvec3(planes[3], planes[4], planes[5])};
+  return hitsBox(box, ray, 0.0, tMax);
+}
+
+bool RenderScene::anyHitTowardLight(std::size_t light, const Ray& ray, const RaySource& source,
+                                    double tMax, std::uint32_t* lastOccluder) const {
+  const DirectionGrid* grid = lightGrid(light);
+  if (!grid) return anyHit(ray, source, tMax, lastOccluder);
+  // The ray seen from the light: its direction is light - origin, so this
+  // is origin - light, bit for bit.
+  glm::dvec3 fromLight = -ray.direction;
+  std::uint32_t cell = grid->cubeCellOf(fromLight);
+  if (cell == DirectionGrid::kNoCell || grid->full(cell)) {
+    return anyHit(ray, source, tMax, lastOccluder);
+  }
+  // The cell lists every bounded object that can block the ray, so the
+  // hint, which saves a walk down the BVH, is not needed here.
+  for (std::uint32_t plane : planes_) {
+    if (intersectObject(plane, ray, source, tMax)) {
+      if (lastOccluder) *lastOccluder = plane;
+      return true;
+    }
+  }
+  BoxRay boxRay{ray.origin, 1.0 / ray.direction};
+  for (std::uint32_t item : grid->items(cell)) {
+    if (meetsItemBox(item, boxRay, tMax) && intersectObject(bounded_[item], ray, source, tMax)) {
+      if (lastOccluder) *lastOccluder = bounded_[item];
+      return true;
+    }
+  }
+  if (lastOccluder) *lastOccluder = RaySource::kNone;
+  return false;
+}
+
+bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax,
+                         std::uint32_t* lastOccluder) const {
+  if (blockedByHintOrPlane(ray, source, tMax, lastOccluder)) return true;
   std::uint32_t found = RaySource::kNone;
   BoxRay boxRay{ray.origin, 1.0 / ray.direction};
   bvh_.traverse(boxRay, tMax, [&](std::uint32_t item) {

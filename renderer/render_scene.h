@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "renderer/bvh.h"
+#include "renderer/direction_grid.h"
 #include "renderer/unit_shapes.h"
 #include "scenefile/scene.h"
 
@@ -64,11 +65,24 @@ struct Hit {
   bool fromInside = false;     // the ray was inside the solid
 };
 
+// The bounded objects binned by their direction from a camera's eye
+// (RenderScene::eyeGrid), for its camera rays, which all leave the eye.
+struct EyeGrid {
+  DirectionGrid grid;
+  // Per cell, the signs of its centre direction (bit i: component i is
+  // negative, as Bvh::traverse takes them): its list is in the order in
+  // which the BVH visits items for such a ray, and a ray with other signs
+  // walks the BVH.
+  std::vector<std::uint8_t> signs;
+};
+
 class RenderScene {
  public:
   /// Compiles the scene, its BVH built on `threads` threads (0: every
   /// core), which changes how long that takes, never what it builds.
-  explicit RenderScene(const scene::Scene& scene, int threads = 0);
+  /// `lightGrids` false leaves out the lights' direction grids (lightGrid),
+  /// for the tests and benchmarks that compare: the answers are the same.
+  explicit RenderScene(const scene::Scene& scene, int threads = 0, bool lightGrids = true);
 
   /// What the constructor allocates for a scene of `objects` objects and
   /// `lights` lights, in bytes, as two parts.
@@ -76,7 +90,8 @@ class RenderScene {
     /// Kept while the scene lives: the compiled objects and lights, and each
     /// object's index in the bounded or the plane list.
     std::uint64_t scene = 0;
-    /// The BVH, with its build's temporaries and the boxes it is built over.
+    /// The BVH, with its build's temporaries and the boxes it is built
+    /// over, and the lights' direction grids with theirs.
     std::uint64_t bvh = 0;
   };
   /// The most the constructor holds for such a scene, from the sizes and
@@ -117,6 +132,36 @@ class RenderScene {
   // only finds one sooner.
   bool anyHit(const Ray& ray, const RaySource& source, double tMax,
               std::uint32_t* lastOccluder = nullptr) const;
+  // anyHit for a shadow ray aimed at light `light`, whose direction is
+  // lights()[light].position - ray.origin: the same answer, found through
+  // the light's direction grid (lightGrid) where its cell can give it.
+  bool anyHitTowardLight(std::size_t light, const Ray& ray, const RaySource& source, double tMax,
+                         std::uint32_t* lastOccluder = nullptr) const;
+  // The objects binned by their direction from light `light` (bounded
+  // objects by their BVH item), or nullptr for a light that has none: only
+  // the first kMaxLightGrids lights have one.
+  const DirectionGrid* lightGrid(std::size_t light) const {
+    return light < lightGrids_.size() && lightGrids_[light].built() ? &lightGrids_[light] : nullptr;
+  }
+  static constexpr std::size_t kMaxLightGrids = 8;
+  // Scenes with fewer bounded objects have no grids.
+  static constexpr std::size_t kMinGridObjects = 64;
+  // The cells a side of each face of a light's grid for a scene of
+  // `bounded` bounded objects.
+  static int lightGridResolution(std::uint64_t bounded);
+  // The world box of BVH item `item`, as the constructor made it.
+  Bounds itemBounds(std::uint32_t item) const;
+
+  // The grid of the bounded objects' directions from `eye` in `window`
+  // (docs/RENDERING.md, "Direction grids"); not built (grid.built() false)
+  // where the objects would cover too many cells.
+  EyeGrid eyeGrid(const glm::dvec3& eye, const GridWindow& window) const;
+  // closestHits for camera rays: a ray leaving the grid's apex whose cell
+  // can answer tests the planes and that cell's objects alone, in the order
+  // the BVH would visit them, so that the hit is the same bit for bit; the
+  // others go down the BVH as packets.
+  void closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int count,
+                          std::optional<Hit>* out) const;
 
   // The same queries without the hierarchy: every object is tested. The
   // reference that the BVH must agree with.
@@ -136,6 +181,13 @@ class RenderScene {
   std::optional<Candidate> intersectObject(std::uint32_t index, const Ray& ray,
                                            const RaySource& source, double tMax) const;
   Hit finishHit(std::uint32_t index, const Ray& ray, const Candidate& candidate) const;
+  // Whether the ray meets the box of the leaf holding BVH item `item`
+  // within (0, tMax): hitsBox on the leaf's float box, which contains the
+  // object's box.
+  bool meetsItemBox(std::uint32_t item, const BoxRay& ray, double tMax) const;
+  // anyHit's first tests: the hint, then the planes.
+  bool blockedByHintOrPlane(const Ray& ray, const RaySource& source, double tMax,
+                            std::uint32_t* lastOccluder) const;
 
   std::vector<RenderObject> objects_;
   // Per object, read once per hit: the 3x3 block of its matrix (toWorld)
@@ -147,6 +199,10 @@ class RenderScene {
   std::vector<RenderLight> lights_;
   scene::Camera camera_;
   Bvh bvh_;
+  std::vector<DirectionGrid> lightGrids_;
+  // Per BVH item, the leaf that holds it: the grids' rays test its box
+  // before the object, as a walk down the BVH would.
+  std::vector<std::uint32_t> leafOf_;
   bool hasTransparency_ = false;
 };
 

@@ -88,9 +88,10 @@ bool refractDirection(const glm::dvec3& d, const glm::dvec3& n, double n1, doubl
   return true;
 }
 
-bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, TraceContext& context,
+bool Tracer::shadowed(const Hit& hit, std::size_t lightIndex, TraceContext& context,
                       std::uint32_t* lastOccluder) const {
   ++context.counts.shadow;
+  const glm::dvec3& light = scene_.lights()[lightIndex].position;
   Ray ray;
   glm::dvec3 toLight = light - hit.point;
   ray.origin = offsetRayOrigin(hit.point, hit.pointError, hit.normal, toLight);
@@ -107,7 +108,7 @@ bool Tracer::shadowed(const Hit& hit, const glm::dvec3& light, TraceContext& con
   if (length == 0.0) return false;
   double tMax = 1.0 - gamma(32) * extent / length;
   if (tMax <= 0.0) return false;
-  return scene_.anyHit(ray, source, tMax, lastOccluder);
+  return scene_.anyHitTowardLight(lightIndex, ray, source, tMax, lastOccluder);
 }
 
 glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
@@ -123,8 +124,8 @@ glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
     if (!(distance > 0.0)) continue;
     l /= distance;
     double cosine = glm::dot(l, normal);
-    if (cosine <= 0.0 || shadowed(hit, light.position, context,
-                                  &context.lastOccluder[i % TraceContext::kOccluderSlots])) {
+    if (cosine <= 0.0 ||
+        shadowed(hit, i, context, &context.lastOccluder[i % TraceContext::kOccluderSlots])) {
       continue;
     }
     colour += m.colour * light.colour * (m.diffuse * cosine);

@@ -137,9 +137,10 @@ class Tracer {
   glm::dvec3 shadeSurface(const Hit& hit, const glm::dvec3& normal, const glm::dvec3& toViewer,
                           TraceContext& context) const;
 
-  // Whether anything lies on the open segment from the hit to `light`;
-  // `lastOccluder` is RenderScene::anyHit's hint, when the caller keeps one.
-  bool shadowed(const Hit& hit, const glm::dvec3& light, TraceContext& context,
+  // Whether anything lies on the open segment from the hit to the scene's
+  // light `light`; `lastOccluder` is RenderScene::anyHit's hint, when the
+  // caller keeps one.
+  bool shadowed(const Hit& hit, std::size_t light, TraceContext& context,
                 std::uint32_t* lastOccluder = nullptr) const;
 
  private:

@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -429,6 +433,28 @@ TEST(ImageFile, QuantizesToTheNearestLevelWithoutGamma) {
   EXPECT_EQ(quantizeChannel(0.5f), 128);  // 127.5 rounds up
   EXPECT_EQ(quantizeChannel(0.25f), 64);  // 63.75
   EXPECT_EQ(quantizeChannel(0.2f), 51);
+  EXPECT_EQ(quantizeChannel(std::numeric_limits<float>::quiet_NaN()), 0);
+}
+
+// quantizeChannel rounds inline as std::lround rounds the same float
+// product: every level's halfway point and its float neighbours, and a
+// stride through all the floats of [0, 1].
+TEST(ImageFile, QuantizesAsLroundDoes) {
+  auto byLround = [](float v) {
+    return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+  };
+  for (int level = 0; level < 255; ++level) {
+    float half = (static_cast<float>(level) + 0.5f) / 255.0f;
+    float v = half;
+    for (int step = 0; step < 8; ++step) v = std::nextafter(v, 0.0f);
+    for (int step = 0; step < 16; ++step, v = std::nextafter(v, 2.0f)) {
+      ASSERT_EQ(quantizeChannel(v), byLround(v)) << v;
+    }
+  }
+  for (std::uint32_t bits = 0; bits <= 0x3F800000u; bits += 997) {
+    float v = std::bit_cast<float>(bits);
+    ASSERT_EQ(quantizeChannel(v), byLround(v)) << v;
+  }
 }
 
 // sfrender writes .ppm by hand: the file must be the one OpenImageIO writes

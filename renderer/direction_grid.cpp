@@ -1,0 +1,319 @@
+#include "renderer/direction_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "renderer/saturating.h"
+
+namespace render {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double largestMagnitude(const glm::dvec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+bool finite(const Bounds& b) {
+  return std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.lo.z) &&
+         std::isfinite(b.hi.x) && std::isfinite(b.hi.y) && std::isfinite(b.hi.z);
+}
+
+// The cells [low, high] of one axis of a window that the tangent range
+// [from, to] covers, widened by the margin; false when it misses the window.
+bool cellSpan(double from, double to, double windowLow, double scale, int cells, int& low,
+              int& high) {
+  from -= DirectionGrid::kMargin * (1.0 + std::abs(from));
+  to += DirectionGrid::kMargin * (1.0 + std::abs(to));
+  // The same expression as cellOf's, (u - windowLow) * scale, which only
+  // grows with u: a lookup inside [from, to] lands inside [low, high].
+  double x = (from - windowLow) * scale;
+  double y = (to - windowLow) * scale;
+  if (!(x < cells) || !(y >= 0.0)) return false;
+  low = x < 0.0 ? 0 : static_cast<int>(x);
+  high = y >= cells ? cells - 1 : static_cast<int>(y);
+  return true;
+}
+
+}  // namespace
+
+DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
+                             const std::vector<Bounds>& boxes, const Limits& limits)
+    : DirectionGrid(apex, std::move(windows), boxes, limits, 0) {}
+
+DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
+                             const std::vector<Bounds>& boxes, const Limits& limits,
+                             int cubeResolution)
+    : apex_(apex),
+      windows_(std::move(windows)),
+      cubeResolution_(cubeResolution),
+      cubeScale_(cubeResolution / 2.0) {
+  windows_.resize(std::min<std::size_t>(windows_.size(), kMaxWindows));
+
+  // Step 1: the scale of the scene as seen from the apex, which sets how
+  // near a box must be to be listed everywhere, and how far a lookup may go.
+  double reach = 0.0;
+  for (const Bounds& box : boxes) {
+    if (!finite(box)) continue;
+    reach = std::max({reach, largestMagnitude(box.lo - apex_), largestMagnitude(box.hi - apex_)});
+  }
+  nearApex_ = kNearApex * reach;
+  // Set once the grid is built: until then every lookup fails.
+  double farLookup = boxes.empty() ? kInfinity : limits.farLookup * reach;
+
+  // Step 2: the cells of each box, found once, giving up past the budget.
+  std::uint64_t windowCells = 0;
+  for (const GridWindow& w : windows_) {
+    windowCells += static_cast<std::uint64_t>(std::max(w.columns, 0)) * std::max(w.rows, 0);
+  }
+  std::uint64_t budget =
+      saturatingSum(saturatingProduct(limits.coverPerBox, boxes.size()), windowCells);
+  std::uint64_t covered = 0;
+  std::vector<CellRange> ranges;
+  ranges.reserve(boxes.size());
+  std::vector<std::uint32_t> firstRange(boxes.size() + 1, 0);
+  std::array<bool, kMaxWindows> used{};
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    firstRange[i] = static_cast<std::uint32_t>(ranges.size());
+    bool over = false;
+    forEachCover(boxes[i], [&](const CellRange& r) {
+      covered += static_cast<std::uint64_t>(r.columnHigh - r.columnLow + 1) *
+                 static_cast<std::uint64_t>(r.rowHigh - r.rowLow + 1);
+      if (covered > budget || ranges.size() >= kNoCell) over = true;
+      if (over) return;
+      ranges.push_back(r);
+      used[r.window] = true;
+    });
+    if (over) return;
+  }
+  firstRange[boxes.size()] = static_cast<std::uint32_t>(ranges.size());
+
+  // Step 3: cells for the windows that some box reaches; the others share
+  // one empty cell, the last.
+  std::uint64_t cells = 0;
+  for (std::size_t w = 0; w < windows_.size(); ++w) {
+    firstCell_.push_back(static_cast<std::uint32_t>(cells));
+    windowUsed_[w] = used[w];
+    if (used[w]) {
+      cells += static_cast<std::uint64_t>(windows_[w].columns) * windows_[w].rows;
+    }
+  }
+  if (cells + 1 >= kNoCell) return;
+  emptyCell_ = static_cast<std::uint32_t>(cells);
+  firstCell_.push_back(static_cast<std::uint32_t>(++cells));
+  auto forEachCell = [&](const CellRange& r, auto&& visit) {
+    std::uint64_t first = firstCell_[r.window];
+    int columns = windows_[r.window].columns;
+    for (int row = r.rowLow; row <= r.rowHigh; ++row) {
+      std::uint64_t line = first + static_cast<std::uint64_t>(row) * columns;
+      for (int column = r.columnLow; column <= r.columnHigh; ++column) visit(line + column);
+    }
+  };
+  std::vector<std::uint32_t> counts(cells, 0);
+  for (const CellRange& r : ranges) forEachCell(r, [&](std::uint64_t cell) { ++counts[cell]; });
+
+  // Step 4: the lists, a full cell's left empty; counts becomes each
+  // cell's next free place.
+  full_.assign(cells, 0);
+  start_.assign(cells + 1, 0);
+  std::uint64_t total = 0;
+  for (std::uint64_t c = 0; c < cells; ++c) {
+    start_[c] = static_cast<std::uint32_t>(total);
+    if (counts[c] > limits.perCell) {
+      full_[c] = 1;
+    } else {
+      total += counts[c];
+    }
+    counts[c] = start_[c];
+  }
+  start_[cells] = static_cast<std::uint32_t>(total);
+  items_.resize(total);
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    for (std::uint32_t r = firstRange[i]; r < firstRange[i + 1]; ++r) {
+      forEachCell(ranges[r], [&](std::uint64_t cell) {
+        if (!full_[cell]) items_[counts[cell]++] = i;
+      });
+    }
+  }
+  farLookup_ = farLookup;
+}
+
+DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
+                                        int resolution, const Limits& limits) {
+  std::vector<GridWindow> faces;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double sign : {1.0, -1.0}) {
+      GridWindow face;
+      face.forward = glm::dvec3(0.0);
+      face.forward[axis] = sign;
+      face.uAxis = glm::dvec3(0.0);
+      face.uAxis[(axis + 1) % 3] = 1.0;
+      face.vAxis = glm::dvec3(0.0);
+      face.vAxis[(axis + 2) % 3] = 1.0;
+      face.columns = face.rows = resolution;
+      faces.push_back(face);
+    }
+  }
+  return DirectionGrid(apex, std::move(faces), boxes, limits, resolution);
+}
+
+std::uint32_t DirectionGrid::cellOf(int window, const glm::dvec3& w) const {
+  if (start_.empty() || !(largestMagnitude(w) <= farLookup_)) return kNoCell;
+  const GridWindow& win = windows_[window];
+  double f = glm::dot(win.forward, w);
+  if (!(f > 0.0)) return kNoCell;
+  double x = (glm::dot(win.uAxis, w) / f - win.uLow) * (win.columns / (win.uHigh - win.uLow));
+  double y = (glm::dot(win.vAxis, w) / f - win.vLow) * (win.rows / (win.vHigh - win.vLow));
+  if (!(x >= 0.0 && x < win.columns && y >= 0.0 && y < win.rows)) return kNoCell;
+  if (!windowUsed_[window]) return emptyCell_;
+  return firstCell_[window] + static_cast<std::uint32_t>(y) * win.columns +
+         static_cast<std::uint32_t>(x);
+}
+
+bool DirectionGrid::coverOnCube(const Bounds& box, int window, CellRange& range) const {
+  // The frame is the axes: f, a and b are the box's own intervals, apex
+  // subtracted (for a -axis face, f's negated), and a / f over it is
+  // extreme at the ends of a and f.
+  int axis = window / 2;
+  int uAxis = (axis + 1) % 3;
+  int vAxis = (axis + 2) % 3;
+  double f0 = window % 2 ? apex_[axis] - box.hi[axis] : box.lo[axis] - apex_[axis];
+  double f1 = window % 2 ? apex_[axis] - box.lo[axis] : box.hi[axis] - apex_[axis];
+  if (!(f1 > 0.0)) return false;
+  auto tangentRange = [&](int along, double& from, double& to) {
+    double a0 = box.lo[along] - apex_[along];
+    double a1 = box.hi[along] - apex_[along];
+    if (f0 > 0.0) {
+      from = std::min(a0 / f0, a0 / f1);
+      to = std::max(a1 / f0, a1 / f1);
+    } else {
+      // Reaching f = 0, as in cover.
+      from = a0 < 0.0 ? -kInfinity : a0 / f1;
+      to = a1 > 0.0 ? kInfinity : a1 / f1;
+    }
+  };
+  double uFrom, uTo, vFrom, vTo;
+  tangentRange(uAxis, uFrom, uTo);
+  tangentRange(vAxis, vFrom, vTo);
+  range.window = window;
+  return cellSpan(uFrom, uTo, -1.0, cubeScale_, cubeResolution_, range.columnLow,
+                  range.columnHigh) &&
+         cellSpan(vFrom, vTo, -1.0, cubeScale_, cubeResolution_, range.rowLow, range.rowHigh);
+}
+
+bool DirectionGrid::cover(const Bounds& box, int window, CellRange& range) const {
+  if (cubeResolution_ > 0) return coverOnCube(box, window, range);
+  const GridWindow& win = windows_[window];
+  // The box's corners in the window's frame; a / f over a convex body lying
+  // in f > 0 is extreme at its corners.
+  double fMin = kInfinity, fMax = -kInfinity, aMin = kInfinity, aMax = -kInfinity;
+  double bMin = kInfinity, bMax = -kInfinity, size = 0.0;
+  double uFrom = kInfinity, uTo = -kInfinity, vFrom = kInfinity, vTo = -kInfinity;
+  // The low corner's coordinates and the step to the high side on each
+  // axis: each corner is their sum, within a rounding of the box's size,
+  // which the margin covers.
+  glm::dvec3 low = box.lo - apex_;
+  glm::dvec3 extent = box.hi - box.lo;
+  size = std::max(largestMagnitude(low), largestMagnitude(box.hi - apex_));
+  glm::dvec3 base(glm::dot(win.forward, low), glm::dot(win.uAxis, low), glm::dot(win.vAxis, low));
+  glm::dvec3 step[3];
+  for (int i = 0; i < 3; ++i) {
+    step[i] = glm::dvec3(win.forward[i], win.uAxis[i], win.vAxis[i]) * extent[i];
+  }
+  for (int k = 0; k < 8; ++k) {
+    glm::dvec3 c = base;
+    for (int i = 0; i < 3; ++i) {
+      if (k >> i & 1) c += step[i];
+    }
+    double f = c.x, a = c.y, b = c.z;
+    fMin = std::min(fMin, f);
+    fMax = std::max(fMax, f);
+    aMin = std::min(aMin, a);
+    aMax = std::max(aMax, a);
+    bMin = std::min(bMin, b);
+    bMax = std::max(bMax, b);
+    if (f > 0.0) {
+      double inverse = 1.0 / f;
+      uFrom = std::min(uFrom, a * inverse);
+      uTo = std::max(uTo, a * inverse);
+      vFrom = std::min(vFrom, b * inverse);
+      vTo = std::max(vTo, b * inverse);
+    }
+  }
+  if (!(fMax > 0.0)) return false;
+  if (fMin <= 1e-9 * size) {
+    // The box reaches the plane f = 0 through the apex, where a / f runs
+    // off to the side of a's sign. Over the box of the corners' frame
+    // coordinates, which holds the body, with 0 < f <= fMax: a / f is
+    // unbounded below where a < 0 can be, and at least aMin / fMax
+    // otherwise (the smallest a over the largest f); the same above.
+    uFrom = aMin < 0.0 ? -kInfinity : aMin / fMax;
+    uTo = aMax > 0.0 ? kInfinity : aMax / fMax;
+    vFrom = bMin < 0.0 ? -kInfinity : bMin / fMax;
+    vTo = bMax > 0.0 ? kInfinity : bMax / fMax;
+  }
+  range.window = window;
+  return cellSpan(uFrom, uTo, win.uLow, win.columns / (win.uHigh - win.uLow), win.columns,
+                  range.columnLow, range.columnHigh) &&
+         cellSpan(vFrom, vTo, win.vLow, win.rows / (win.vHigh - win.vLow), win.rows, range.rowLow,
+                  range.rowHigh);
+}
+
+template <typename Visit>
+void DirectionGrid::forEachCover(const Bounds& box, Visit&& visit) const {
+  // How far the box lies from the apex along each axis (0 where it spans
+  // the apex's coordinate).
+  glm::dvec3 away = glm::max(glm::max(box.lo - apex_, apex_ - box.hi), glm::dvec3(0.0));
+  bool everywhere = !finite(box) || !(largestMagnitude(away) > nearApex_);
+  for (int w = 0; w < static_cast<int>(windows_.size()); ++w) {
+    CellRange range{w, 0, windows_[w].columns - 1, 0, windows_[w].rows - 1};
+    if (windows_[w].columns <= 0 || windows_[w].rows <= 0) continue;
+    if (!everywhere && cubeResolution_ > 0) {
+      // A cube face sees only directions within 45 degrees of its axis (a
+      // lookup's |u| and |v| are at most 1, and a shadow ray's direction
+      // strays from its lookup's by far less than 1e-5): a box nearer the
+      // apex on another axis than its farthest reach along this one lies
+      // outside it.
+      int axis = w / 2;
+      double reach = w % 2 ? apex_[axis] - box.lo[axis] : box.hi[axis] - apex_[axis];
+      double limit = reach * (1.0 + 1e-5);
+      if (!(reach > 0.0) || away[(axis + 1) % 3] > limit || away[(axis + 2) % 3] > limit) {
+        continue;
+      }
+    }
+    if (everywhere || cover(box, w, range)) visit(range);
+  }
+}
+
+std::array<glm::dvec3, 4> DirectionGrid::cellCorners(std::uint32_t cell) const {
+  int w = 0;
+  while (w + 1 < static_cast<int>(windows_.size()) &&
+         (!windowUsed_[w] || firstCell_[w + 1] <= cell)) {
+    ++w;
+  }
+  const GridWindow& win = windows_[w];
+  std::uint32_t local = cell - firstCell_[w];
+  int column = static_cast<int>(local % win.columns);
+  int row = static_cast<int>(local / win.columns);
+  double du = (win.uHigh - win.uLow) / win.columns;
+  double dv = (win.vHigh - win.vLow) / win.rows;
+  std::array<glm::dvec3, 4> corners;
+  if (cell == emptyCell_) corners.fill(glm::dvec3(0.0));
+  if (cell == emptyCell_) return corners;
+  for (int k = 0; k < 4; ++k) {
+    double u = win.uLow + (column + (k & 1)) * du;
+    double v = win.vLow + (row + (k >> 1)) * dv;
+    corners[k] = win.forward + u * win.uAxis + v * win.vAxis;
+  }
+  return corners;
+}
+
+std::uint64_t DirectionGrid::bytes() const {
+  return start_.size() * sizeof(std::uint32_t) + items_.size() * sizeof(std::uint32_t) +
+         full_.size() + firstCell_.size() * sizeof(std::uint32_t);
+}
+
+}  // namespace render
