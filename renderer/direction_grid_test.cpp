@@ -14,6 +14,7 @@
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "renderer/test_scenes.h"
+#include "renderer/tracer.h"
 
 namespace render {
 namespace {
@@ -184,6 +185,40 @@ TEST(DirectionGrid, ShadowRaysThroughLightGridsAnswerAsTheBvhDoes) {
   }
   EXPECT_GT(blocked, rays / 10);
   EXPECT_LT(blocked, rays * 9 / 10);
+}
+
+// Shadow rays from points on the surfaces, as Tracer::shadowed makes them
+// (with its shortcut, RenderScene::clearTowardLight, for the floor's
+// points): the same answers with the grids as without.
+TEST(DirectionGrid, ShadowsFromSurfacePointsAreTheSameWithAndWithoutGrids) {
+  Random random(77);
+  int shortcuts = 0, shadowedCount = 0, total = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    scene::Scene s = randomScene(random, 70 + random.below(200));
+    std::erase_if(s.objects, [](const scene::Object& o) { return o.kind == ObjectKind::Plane; });
+    s.objects.push_back(object(ObjectKind::Plane, {translate(0, -12, 0)}));  // a floor
+    s.lights.push_back(light(random.point(8.0)));
+    RenderScene compiled(s, 1);
+    RenderScene plain(s, 1, false);
+    Tracer withGrids(compiled, 5);
+    Tracer without(plain, 5);
+    TraceContext a, b;
+    for (int r = 0; r < 1500; ++r) {
+      Ray ray{random.point(15.0) + glm::dvec3(0, 20, 0), random.direction()};
+      std::optional<Hit> hit = compiled.closestHit(ray, RaySource{});
+      if (!hit) continue;
+      for (std::size_t l = 0; l < s.lights.size(); ++l) {
+        shortcuts += compiled.clearTowardLight(l, hit->point, hit->pointError, hit->object);
+        bool expected = without.shadowed(*hit, l, b);
+        EXPECT_EQ(withGrids.shadowed(*hit, l, a), expected) << "trial " << trial << " ray " << r;
+        shadowedCount += expected;
+        ++total;
+      }
+    }
+  }
+  EXPECT_GT(shortcuts, total / 10);
+  EXPECT_GT(shadowedCount, total / 20);
+  EXPECT_LT(shadowedCount, total * 19 / 20);
 }
 
 // Camera rays through the eye's grid find the BVH's hit, bit for bit, ties

@@ -24,8 +24,10 @@ namespace render {
 namespace {
 
 constexpr int kTileSize = 32;
-// The side of a cell of the eye's direction grid, in pixels.
+// The side of a cell of the eye's direction grid, in pixels, and where
+// objects are dense.
 constexpr int kEyeCellPixels = 4;
+constexpr int kDenseEyeCellPixels = 2;
 
 // SplitMix64: a counter-based generator, so each pixel's samples depend on
 // the seed and the pixel alone.
@@ -111,7 +113,7 @@ long levelOf(float v, double levels) {
     // std::lround of the float product, as tools::quantizeChannel rounds it.
     float level = clamped * 255.0f;
     if (!(level >= 0.0f)) return 0;
-    return static_cast<long>(std::floor(static_cast<double>(level) + 0.5));
+    return static_cast<long>(static_cast<double>(level) + 0.5);
   }
   return std::lround(static_cast<double>(clamped) * levels);
 }
@@ -384,8 +386,7 @@ class PixelTracer {
   MediumStack eyeMedia_;
   std::optional<EyeGrid> eyeGrid_;
 
-  // The eye's direction grid, where it pays: cells of kEyeCellPixels
-  // pixels a side, for a render of at least as many samples as bounded
+  // The eye's direction grid, where it pays: for a render of at least as many samples as bounded
   // objects (its build costs about what a sample's camera ray does, per
   // object).
   void buildEyeGrid() {
@@ -402,8 +403,15 @@ class PixelTracer {
     window.uHigh = camera_.tanHalfWidth();
     window.vLow = -camera_.tanHalfHeight();
     window.vHigh = camera_.tanHalfHeight();
-    window.columns = (settings_.width + kEyeCellPixels - 1) / kEyeCellPixels;
-    window.rows = (settings_.height + kEyeCellPixels - 1) / kEyeCellPixels;
+    // Cells of 4 pixels a side, or of 2 where there is more than an object
+    // in 64 pixels: about one listed object a ray either way (the floor
+    // scenes of 1,000 and 100,000 objects at 1080p list 0.70 and 1.34; with
+    // cells of 4 the second lists 2.43).
+    double pixelsPerObject =
+        static_cast<double>(settings_.width) * settings_.height / static_cast<double>(objects);
+    int cell = pixelsPerObject < 64.0 ? kDenseEyeCellPixels : kEyeCellPixels;
+    window.columns = (settings_.width + cell - 1) / cell;
+    window.rows = (settings_.height + cell - 1) / cell;
     EyeGrid grid = scene_.eyeGrid(camera_.eye(), window);
     if (grid.grid.built()) eyeGrid_ = std::move(grid);
   }

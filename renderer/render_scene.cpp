@@ -361,6 +361,25 @@ bool RenderScene::blockedByHintOrPlane(const Ray& ray, const RaySource& source, 
   return hitsBox(box, ray, 0.0, tMax);
 }
 
+bool RenderScene::clearTowardLight(std::size_t light, const glm::dvec3& point,
+                                   const glm::dvec3& pointError, std::uint32_t source) const {
+  const DirectionGrid* grid = lightGrid(light);
+  if (!grid || planes_.size() > 1 || (planes_.size() == 1 && planes_[0] != source)) return false;
+  glm::dvec3 fromLight = point - lights_[light].position;
+  // The ray's origin lies off `point` by the error bound along the unit
+  // normal (at most sqrt(3) times its largest component) and a rounding:
+  // within `slack`, which must be a billionth of the distance or less, so
+  // that the ray's direction is that of fromLight to well within the
+  // grid's margin (docs/RENDERING.md, "Direction grids").
+  double largestError = std::max({pointError.x, pointError.y, pointError.z});
+  double largestCoordinate = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+  double slack = 2.0 * largestError + 0x1p-51 * largestCoordinate;
+  double distance = std::max({std::abs(fromLight.x), std::abs(fromLight.y), std::abs(fromLight.z)});
+  if (!(slack <= 1e-9 * distance)) return false;
+  std::uint32_t cell = grid->cubeCellOf(fromLight);
+  return cell != DirectionGrid::kNoCell && !grid->full(cell) && grid->items(cell).empty();
+}
+
 bool RenderScene::anyHitTowardLight(std::size_t light, const Ray& ray, const RaySource& source,
                                     double tMax, std::uint32_t* lastOccluder) const {
   const DirectionGrid* grid = lightGrid(light);

@@ -137,6 +137,14 @@ class RenderScene {
   // the light's direction grid (lightGrid) where its cell can give it.
   bool anyHitTowardLight(std::size_t light, const Ray& ray, const RaySource& source, double tMax,
                          std::uint32_t* lastOccluder = nullptr) const;
+  // Whether a shadow ray toward light `light` from a hit on `source` at
+  // `point` (within `pointError`), whatever origin off the surface it
+  // starts from, is surely clear, told by the light's grid alone: its
+  // direction's cell lists no object, and the scene has no plane but
+  // `source`, which a ray leaving it cannot meet. False where that cannot
+  // be told so: the caller then traces the ray (anyHitTowardLight).
+  bool clearTowardLight(std::size_t light, const glm::dvec3& point, const glm::dvec3& pointError,
+                        std::uint32_t source) const;
   // The objects binned by their direction from light `light` (bounded
   // objects by their BVH item), or nullptr for a light that has none: only
   // the first kMaxLightGrids lights have one.

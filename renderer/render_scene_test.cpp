@@ -196,8 +196,7 @@ TEST(RestingOnAPlane, NoLightGapAtTheContact) {
       ASSERT_EQ(hit->object, 0u);
       Tracer tracer(compiled, 0);
       TraceContext context;
-      EXPECT_TRUE(tracer.shadowed(*hit, 0, context))
-          << objectKindName(kind) << " gap " << gap;
+      EXPECT_TRUE(tracer.shadowed(*hit, 0, context)) << objectKindName(kind) << " gap " << gap;
     }
   }
 }

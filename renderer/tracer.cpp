@@ -91,6 +91,12 @@ bool refractDirection(const glm::dvec3& d, const glm::dvec3& n, double n1, doubl
 bool Tracer::shadowed(const Hit& hit, std::size_t lightIndex, TraceContext& context,
                       std::uint32_t* lastOccluder) const {
   ++context.counts.shadow;
+  // Most shadow rays toward a light with a grid meet an empty cell: told
+  // so before the ray is even made.
+  if (scene_.clearTowardLight(lightIndex, hit.point, hit.pointError, hit.object)) {
+    if (lastOccluder) *lastOccluder = RaySource::kNone;
+    return false;
+  }
   const glm::dvec3& light = scene_.lights()[lightIndex].position;
   Ray ray;
   glm::dvec3 toLight = light - hit.point;

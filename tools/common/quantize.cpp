@@ -8,10 +8,11 @@ namespace tools {
 unsigned char quantizeChannel(float value) {
   float level = std::clamp(value, 0.0f, 1.0f) * 255.0f;
   // std::lround of the float product, inline (a library call per channel
-  // was 3% of a render): a float plus 0.5 is exact in double, so its floor
-  // rounds halves up as lround does for a value of at least 0.
+  // was 3% of a render): a float plus 0.5 is exact in double, and at 0.5
+  // or more truncation is its floor, so this rounds halves up as lround
+  // does for a value of at least 0.
   if (!(level >= 0.0f)) return 0;
-  return static_cast<unsigned char>(std::floor(static_cast<double>(level) + 0.5));
+  return static_cast<unsigned char>(static_cast<int>(static_cast<double>(level) + 0.5));
 }
 
 std::uint16_t quantizeChannel16(float value) {
