@@ -13,10 +13,6 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-double largestMagnitude(const glm::dvec3& v) {
-  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
-
 bool finite(const Bounds& b) {
   return std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.lo.z) &&
          std::isfinite(b.hi.x) && std::isfinite(b.hi.y) && std::isfinite(b.hi.z);
@@ -52,6 +48,10 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
       cubeResolution_(cubeResolution),
       cubeScale_(cubeResolution / 2.0) {
   windows_.resize(std::min<std::size_t>(windows_.size(), kMaxWindows));
+  for (std::size_t w = 0; w < windows_.size(); ++w) {
+    const GridWindow& win = windows_[w];
+    scales_[w] = glm::dvec2(win.columns / (win.uHigh - win.uLow), win.rows / (win.vHigh - win.vLow));
+  }
 
   // Step 1: the scale of the scene as seen from the apex, which sets how
   // near a box must be to be listed everywhere, and how far a lookup may go.
@@ -160,18 +160,6 @@ DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vecto
   return DirectionGrid(apex, std::move(faces), boxes, limits, resolution);
 }
 
-std::uint32_t DirectionGrid::cellOf(int window, const glm::dvec3& w) const {
-  if (start_.empty() || !(largestMagnitude(w) <= farLookup_)) return kNoCell;
-  const GridWindow& win = windows_[window];
-  double f = glm::dot(win.forward, w);
-  if (!(f > 0.0)) return kNoCell;
-  double x = (glm::dot(win.uAxis, w) / f - win.uLow) * (win.columns / (win.uHigh - win.uLow));
-  double y = (glm::dot(win.vAxis, w) / f - win.vLow) * (win.rows / (win.vHigh - win.vLow));
-  if (!(x >= 0.0 && x < win.columns && y >= 0.0 && y < win.rows)) return kNoCell;
-  if (!windowUsed_[window]) return emptyCell_;
-  return firstCell_[window] + static_cast<std::uint32_t>(y) * win.columns +
-         static_cast<std::uint32_t>(x);
-}
 
 bool DirectionGrid::coverOnCube(const Bounds& box, int window, CellRange& range) const {
   // The frame is the axes: f, a and b are the box's own intervals, apex

@@ -17,9 +17,12 @@
 // full: its rays walk the BVH, as do rays outside every window.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <span>
 #include <vector>
@@ -38,6 +41,9 @@ struct GridWindow {
 
 class DirectionGrid {
  public:
+  static double largestMagnitude(const glm::dvec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  }
   static constexpr std::uint32_t kNoCell = 0xFFFFFFFF;
   /// The most windows a grid has (a cube's six); more are left out.
   static constexpr int kMaxWindows = 6;
@@ -85,7 +91,21 @@ class DirectionGrid {
   /// The cell of window `window` that the direction w from the apex falls
   /// in, or kNoCell where the grid cannot answer (w outside the window, too
   /// long, not a number, or the grid not built).
-  std::uint32_t cellOf(int window, const glm::dvec3& w) const;
+  std::uint32_t cellOf(int window, const glm::dvec3& w) const {
+    if (start_.empty() || !(largestMagnitude(w) <= farLookup_)) return kNoCell;
+    const GridWindow& win = windows_[window];
+    double f = glm::dot(win.forward, w);
+    if (!(f > 0.0)) return kNoCell;
+    // One division for both coordinates: a rounding apart from a / f,
+    // within the margin.
+    double inverse = 1.0 / f;
+    double x = (glm::dot(win.uAxis, w) * inverse - win.uLow) * scales_[window].x;
+    double y = (glm::dot(win.vAxis, w) * inverse - win.vLow) * scales_[window].y;
+    if (!(x >= 0.0 && x < win.columns && y >= 0.0 && y < win.rows)) return kNoCell;
+    if (!windowUsed_[window]) return emptyCell_;
+    return firstCell_[window] + static_cast<std::uint32_t>(y) * win.columns +
+           static_cast<std::uint32_t>(x);
+  }
   /// The cube face of cubeAround that holds w: 2 * axis of its largest
   /// component (the lowest axis on a tie), plus 1 where that is negative.
   static int cubeWindowOf(const glm::dvec3& w) {
@@ -153,6 +173,9 @@ class DirectionGrid {
   // reaches has no cells of its own, and its lookups get emptyCell_.
   std::vector<std::uint32_t> firstCell_;
   std::array<bool, kMaxWindows> windowUsed_{};
+  // Per window, cells per unit of u and of v: the one factor by which both
+  // a box's range and a lookup become cells.
+  std::array<glm::dvec2, kMaxWindows> scales_{};
   std::uint32_t emptyCell_ = 0;
   double nearApex_ = 0.0;
   double farLookup_ = -1.0;  // no lookup succeeds until the grid is built
