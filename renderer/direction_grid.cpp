@@ -50,7 +50,8 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   windows_.resize(std::min<std::size_t>(windows_.size(), kMaxWindows));
   for (std::size_t w = 0; w < windows_.size(); ++w) {
     const GridWindow& win = windows_[w];
-    scales_[w] = glm::dvec2(win.columns / (win.uHigh - win.uLow), win.rows / (win.vHigh - win.vLow));
+    scales_[w] =
+        glm::dvec2(win.columns / (win.uHigh - win.uLow), win.rows / (win.vHigh - win.vLow));
   }
 
   // Step 1: the scale of the scene as seen from the apex, which sets how
@@ -159,7 +160,6 @@ DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vecto
   }
   return DirectionGrid(apex, std::move(faces), boxes, limits, resolution);
 }
-
 
 bool DirectionGrid::coverOnCube(const Bounds& box, int window, CellRange& range) const {
   // The frame is the axes: f, a and b are the box's own intervals, apex

@@ -188,8 +188,8 @@ TEST(DirectionGrid, ShadowRaysThroughLightGridsAnswerAsTheBvhDoes) {
 }
 
 // Shadow rays from points on the surfaces, as Tracer::shadowed makes them
-// (with its shortcut, RenderScene::clearTowardLight, for the floor's
-// points): the same answers with the grids as without.
+// (with its shortcut for the floor's points, and the hit point's cell
+// used for the ray, RenderScene::shadowCell): the same answers with the grids as without.
 TEST(DirectionGrid, ShadowsFromSurfacePointsAreTheSameWithAndWithoutGrids) {
   Random random(77);
   int shortcuts = 0, shadowedCount = 0, total = 0;
@@ -208,7 +208,9 @@ TEST(DirectionGrid, ShadowsFromSurfacePointsAreTheSameWithAndWithoutGrids) {
       std::optional<Hit> hit = compiled.closestHit(ray, RaySource{});
       if (!hit) continue;
       for (std::size_t l = 0; l < s.lights.size(); ++l) {
-        shortcuts += compiled.clearTowardLight(l, hit->point, hit->pointError, hit->object);
+        std::uint32_t cell = compiled.shadowCell(l, hit->point, hit->pointError);
+        shortcuts += cell != DirectionGrid::kNoCell && compiled.lightGrid(l)->items(cell).empty() &&
+                     compiled.noPlaneBut(hit->object);
         bool expected = without.shadowed(*hit, l, b);
         EXPECT_EQ(withGrids.shadowed(*hit, l, a), expected) << "trial " << trial << " ray " << r;
         shadowedCount += expected;

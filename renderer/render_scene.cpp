@@ -361,10 +361,10 @@ bool RenderScene::blockedByHintOrPlane(const Ray& ray, const RaySource& source, 
   return hitsBox(box, ray, 0.0, tMax);
 }
 
-bool RenderScene::clearTowardLight(std::size_t light, const glm::dvec3& point,
-                                   const glm::dvec3& pointError, std::uint32_t source) const {
+std::uint32_t RenderScene::shadowCell(std::size_t light, const glm::dvec3& point,
+                                      const glm::dvec3& pointError) const {
   const DirectionGrid* grid = lightGrid(light);
-  if (!grid || planes_.size() > 1 || (planes_.size() == 1 && planes_[0] != source)) return false;
+  if (!grid) return DirectionGrid::kNoCell;
   glm::dvec3 fromLight = point - lights_[light].position;
   // The ray's origin lies off `point` by the error bound along the unit
   // normal (at most sqrt(3) times its largest component) and a rounding:
@@ -372,22 +372,20 @@ bool RenderScene::clearTowardLight(std::size_t light, const glm::dvec3& point,
   // that the ray's direction is that of fromLight to well within the
   // grid's margin (docs/RENDERING.md, "Direction grids").
   double largestError = std::max({pointError.x, pointError.y, pointError.z});
-  double largestCoordinate = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
-  double slack = 2.0 * largestError + 0x1p-51 * largestCoordinate;
-  double distance = std::max({std::abs(fromLight.x), std::abs(fromLight.y), std::abs(fromLight.z)});
-  if (!(slack <= 1e-9 * distance)) return false;
+  double slack = 2.0 * largestError + 0x1p-51 * DirectionGrid::largestMagnitude(point);
+  if (!(slack <= 1e-9 * DirectionGrid::largestMagnitude(fromLight))) return DirectionGrid::kNoCell;
   std::uint32_t cell = grid->cubeCellOf(fromLight);
-  return cell != DirectionGrid::kNoCell && !grid->full(cell) && grid->items(cell).empty();
+  return cell != DirectionGrid::kNoCell && !grid->full(cell) ? cell : DirectionGrid::kNoCell;
 }
 
 bool RenderScene::anyHitTowardLight(std::size_t light, const Ray& ray, const RaySource& source,
-                                    double tMax, std::uint32_t* lastOccluder) const {
+                                    double tMax, std::uint32_t* lastOccluder,
+                                    std::uint32_t cell) const {
   const DirectionGrid* grid = lightGrid(light);
   if (!grid) return anyHit(ray, source, tMax, lastOccluder);
   // The ray seen from the light: its direction is light - origin, so this
   // is origin - light, bit for bit.
-  glm::dvec3 fromLight = -ray.direction;
-  std::uint32_t cell = grid->cubeCellOf(fromLight);
+  if (cell == DirectionGrid::kNoCell) cell = grid->cubeCellOf(-ray.direction);
   if (cell == DirectionGrid::kNoCell || grid->full(cell)) {
     return anyHit(ray, source, tMax, lastOccluder);
   }

@@ -134,17 +134,25 @@ class RenderScene {
               std::uint32_t* lastOccluder = nullptr) const;
   // anyHit for a shadow ray aimed at light `light`, whose direction is
   // lights()[light].position - ray.origin: the same answer, found through
-  // the light's direction grid (lightGrid) where its cell can give it.
+  // the light's direction grid (lightGrid) where a cell can give it: `cell`
+  // when given (shadowCell's for the hit the ray leaves), else the cell of
+  // the ray's own direction.
   bool anyHitTowardLight(std::size_t light, const Ray& ray, const RaySource& source, double tMax,
-                         std::uint32_t* lastOccluder = nullptr) const;
-  // Whether a shadow ray toward light `light` from a hit on `source` at
-  // `point` (within `pointError`), whatever origin off the surface it
-  // starts from, is surely clear, told by the light's grid alone: its
-  // direction's cell lists no object, and the scene has no plane but
-  // `source`, which a ray leaving it cannot meet. False where that cannot
-  // be told so: the caller then traces the ray (anyHitTowardLight).
-  bool clearTowardLight(std::size_t light, const glm::dvec3& point, const glm::dvec3& pointError,
-                        std::uint32_t source) const;
+                         std::uint32_t* lastOccluder = nullptr,
+                         std::uint32_t cell = DirectionGrid::kNoCell) const;
+  // The cell of light `light`'s grid that lists every bounded object a
+  // shadow ray toward it from a hit at `point` (within `pointError`) can
+  // meet, whatever origin off the surface the ray starts from; kNoCell
+  // where the grid cannot tell (no grid, a full cell, an origin's possible
+  // offset too large beside the distance to the light).
+  std::uint32_t shadowCell(std::size_t light, const glm::dvec3& point,
+                           const glm::dvec3& pointError) const;
+  // Whether the scene has no plane but `source`, which a ray leaving it
+  // cannot meet: then a shadow ray from `source` whose shadowCell lists
+  // nothing is clear.
+  bool noPlaneBut(std::uint32_t source) const {
+    return planes_.empty() || (planes_.size() == 1 && planes_[0] == source);
+  }
   // The objects binned by their direction from light `light` (bounded
   // objects by their BVH item), or nullptr for a light that has none: only
   // the first kMaxLightGrids lights have one.

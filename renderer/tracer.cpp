@@ -91,9 +91,12 @@ bool refractDirection(const glm::dvec3& d, const glm::dvec3& n, double n1, doubl
 bool Tracer::shadowed(const Hit& hit, std::size_t lightIndex, TraceContext& context,
                       std::uint32_t* lastOccluder) const {
   ++context.counts.shadow;
-  // Most shadow rays toward a light with a grid meet an empty cell: told
-  // so before the ray is even made.
-  if (scene_.clearTowardLight(lightIndex, hit.point, hit.pointError, hit.object)) {
+  // The light's grid cell for the hit point: where it lists nothing and no
+  // other plane could block, the ray is clear before it is even made; else
+  // the cell serves the ray's search.
+  std::uint32_t cell = scene_.shadowCell(lightIndex, hit.point, hit.pointError);
+  if (cell != DirectionGrid::kNoCell && scene_.lightGrid(lightIndex)->items(cell).empty() &&
+      scene_.noPlaneBut(hit.object)) {
     if (lastOccluder) *lastOccluder = RaySource::kNone;
     return false;
   }
@@ -114,7 +117,7 @@ bool Tracer::shadowed(const Hit& hit, std::size_t lightIndex, TraceContext& cont
   if (length == 0.0) return false;
   double tMax = 1.0 - gamma(32) * extent / length;
   if (tMax <= 0.0) return false;
-  return scene_.anyHitTowardLight(lightIndex, ray, source, tMax, lastOccluder);
+  return scene_.anyHitTowardLight(lightIndex, ray, source, tMax, lastOccluder, cell);
 }
 
 glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
