@@ -237,17 +237,7 @@ TEST(DirectionGrid, CameraRaysThroughTheEyeGridFindTheBvhsHit) {
     settings.width = 64;
     settings.height = 48;
     PinholeCamera camera(compiled.camera(), settings);
-    GridWindow window;
-    window.forward = camera.forward();
-    window.uAxis = camera.right();
-    window.vAxis = camera.up();
-    window.uLow = -camera.tanHalfWidth();
-    window.uHigh = camera.tanHalfWidth();
-    window.vLow = -camera.tanHalfHeight();
-    window.vHigh = camera.tanHalfHeight();
-    window.columns = 16;
-    window.rows = 12;
-    EyeGrid eye = compiled.eyeGrid(camera.eye(), window);
+    EyeGrid eye = compiled.eyeGrid(camera.eye(), camera.imageWindow(16, 12));
     ASSERT_TRUE(eye.grid.built());
     std::vector<Ray> rays;
     for (int j = 0; j < settings.height; ++j) {

@@ -163,6 +163,20 @@ PinholeCamera::PinholeCamera(const scene::Camera& camera, const RenderSettings& 
   tanHalfWidth_ = tanHalfHeight_ * width_ / height_;
 }
 
+GridWindow PinholeCamera::imageWindow(int columns, int rows) const {
+  GridWindow window;
+  window.forward = forward_;
+  window.uAxis = right_;
+  window.vAxis = up_;
+  window.uLow = -tanHalfWidth_;
+  window.uHigh = tanHalfWidth_;
+  window.vLow = -tanHalfHeight_;
+  window.vHigh = tanHalfHeight_;
+  window.columns = columns;
+  window.rows = rows;
+  return window;
+}
+
 Ray PinholeCamera::rayThrough(double x, double y) const {
   double sx = (2.0 * x / width_ - 1.0) * tanHalfWidth_;
   double sy = (1.0 - 2.0 * y / height_) * tanHalfHeight_;
@@ -396,14 +410,6 @@ class PixelTracer {
     std::uint64_t samples = static_cast<std::uint64_t>(region.width()) * region.height() *
                             static_cast<std::uint64_t>(std::max(1, settings_.samplesPerPixel));
     if (objects < RenderScene::kMinGridObjects || samples < 4 * objects) return;
-    GridWindow window;
-    window.forward = camera_.forward();
-    window.uAxis = camera_.right();
-    window.vAxis = camera_.up();
-    window.uLow = -camera_.tanHalfWidth();
-    window.uHigh = camera_.tanHalfWidth();
-    window.vLow = -camera_.tanHalfHeight();
-    window.vHigh = camera_.tanHalfHeight();
     // Cells of 4 pixels a side, or of 2 where there is more than an object
     // in 64 pixels: about one listed object a ray either way (the floor
     // scenes of 1,000 and 100,000 objects at 1080p list 0.70 and 1.34; with
@@ -411,8 +417,8 @@ class PixelTracer {
     double pixelsPerObject =
         static_cast<double>(settings_.width) * settings_.height / static_cast<double>(objects);
     int cell = pixelsPerObject < 64.0 ? kDenseEyeCellPixels : kEyeCellPixels;
-    window.columns = (settings_.width + cell - 1) / cell;
-    window.rows = (settings_.height + cell - 1) / cell;
+    GridWindow window = camera_.imageWindow((settings_.width + cell - 1) / cell,
+                                            (settings_.height + cell - 1) / cell);
     EyeGrid grid = scene_.eyeGrid(camera_.eye(), window);
     if (grid.grid.built()) eyeGrid_ = std::move(grid);
   }

@@ -142,6 +142,9 @@ class PinholeCamera {
   const glm::dvec3& right() const { return right_; }
   double tanHalfWidth() const { return tanHalfWidth_; }
   double tanHalfHeight() const { return tanHalfHeight_; }
+  // The directions of the image as a window of a direction grid (the
+  // camera's frame, the image's tangent extents), cut into columns x rows.
+  GridWindow imageWindow(int columns, int rows) const;
 
  private:
   glm::dvec3 eye_, forward_, up_, right_;
