@@ -70,8 +70,10 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   for (const GridWindow& w : windows_) {
     windowCells += static_cast<std::uint64_t>(std::max(w.columns, 0)) * std::max(w.rows, 0);
   }
-  std::uint64_t budget =
-      saturatingSum(saturatingProduct(limits.coverPerBox, boxes.size()), windowCells);
+  // At most kNoCell - 1 entries in all, so that a cell's start fits its
+  // 32 bits.
+  std::uint64_t budget = std::min<std::uint64_t>(
+      saturatingSum(saturatingProduct(limits.coverPerBox, boxes.size()), windowCells), kNoCell - 1);
   std::uint64_t covered = 0;
   std::vector<CellRange> ranges;
   ranges.reserve(boxes.size());

@@ -145,7 +145,6 @@ class DirectionGrid {
   std::span<std::uint32_t> mutableItems(std::uint32_t cell) {
     return {items_.data() + start_[cell], items_.data() + start_[cell + 1]};
   }
-  void markFull(std::uint32_t cell) { full_[cell] = 1; }
   /// The directions through the four corners of a cell.
   std::array<glm::dvec3, 4> cellCorners(std::uint32_t cell) const;
 

@@ -28,6 +28,7 @@ constexpr int kTileSize = 32;
 // objects are dense.
 constexpr int kEyeCellPixels = 4;
 constexpr int kDenseEyeCellPixels = 2;
+constexpr std::uint64_t kMaxEyeCells = std::uint64_t{1} << 22;
 
 // SplitMix64: a counter-based generator, so each pixel's samples depend on
 // the seed and the pixel alone.
@@ -417,8 +418,17 @@ class PixelTracer {
     double pixelsPerObject =
         static_cast<double>(settings_.width) * settings_.height / static_cast<double>(objects);
     int cell = pixelsPerObject < 64.0 ? kDenseEyeCellPixels : kEyeCellPixels;
-    GridWindow window = camera_.imageWindow((settings_.width + cell - 1) / cell,
-                                            (settings_.height + cell - 1) / cell);
+    // At most kMaxEyeCells cells (about 50 MB), whatever the image's size.
+    auto cellsAcross = [&](int pixels, int side) {
+      return static_cast<int>((static_cast<std::int64_t>(pixels) + side - 1) / side);
+    };
+    while (static_cast<std::uint64_t>(cellsAcross(settings_.width, cell)) *
+               static_cast<std::uint64_t>(cellsAcross(settings_.height, cell)) >
+           kMaxEyeCells) {
+      cell *= 2;
+    }
+    GridWindow window = camera_.imageWindow(cellsAcross(settings_.width, cell),
+                                            cellsAcross(settings_.height, cell));
     EyeGrid grid = scene_.eyeGrid(camera_.eye(), window);
     if (grid.grid.built()) eyeGrid_ = std::move(grid);
   }
