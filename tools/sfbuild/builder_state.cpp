@@ -498,7 +498,8 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y) {
         glm::scale(glm::translate(glm::dmat4(1.0), light.position()), glm::dvec3(kLightRadius));
     pickScene.objects.push_back(sphere);
   }
-  render::RenderScene renderScene(pickScene);
+  // One ray, no shadows: no lights' grids.
+  render::RenderScene renderScene(pickScene, 0, false);
   render::RenderSettings settings = viewRenderSettings(state);
   render::PinholeCamera camera(renderScene.camera(), settings);
   auto hit = renderScene.closestHit(camera.rayThrough(x, y), render::RaySource{});

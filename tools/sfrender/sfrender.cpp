@@ -389,7 +389,9 @@ int Renderer::run() {
   // and its threads start.
   if (std::optional<int> refused = resourceRefusal()) return *refused;
   stage_.set("preparing the scene");
-  render::RenderScene compiled(job_.scene, renderThreadCount(settings_.threads));
+  // The lights' direction grids serve the CPU path only.
+  render::RenderScene compiled(job_.scene, renderThreadCount(settings_.threads),
+                               settings_.device != render::RenderDevice::Gpu);
   output_.step("preparing the scene");
   render::RenderStatistics statistics;
   render::ProgressCallback progress;
