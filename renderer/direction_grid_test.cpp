@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <set>
 #include <vector>
@@ -301,6 +302,60 @@ TEST(DirectionGrid, TiesFallAsTheBvhBreaksThem) {
     }
   }
   EXPECT_GT(twinsDecided, 500);
+}
+
+// Objects of every scale from 1e-6 to 1e6 placed out to 1e8, lights among
+// them and inside them: shadow rays near the light (where the grid lists
+// every box close by) and far from it (where lookups go to the BVH), and
+// the images, the same with and without grids.
+TEST(DirectionGrid, ObjectsOfEveryScaleAnswerAsTheBvhDoes) {
+  Random random(78);
+  int grids = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    scene::Scene s = sceneLookingAt({0, 0, 50}, {0, 0, 0});
+    for (int i = 0; i < 150; ++i) {
+      double size = std::pow(10.0, random.uniform(-6, 6));
+      glm::dvec3 at = random.direction() * std::pow(10.0, random.uniform(-3, 8));
+      constexpr ObjectKind kKinds[] = {ObjectKind::Sphere, ObjectKind::Cube, ObjectKind::Cylinder};
+      s.objects.push_back(
+          object(kKinds[i % 3], {scale(size, size * random.uniform(0.1, 10), size),
+                                 rotateX(random.uniform(-3, 3)), translate(at.x, at.y, at.z)}));
+    }
+    // One light inside an object, one beside a tiny one, one far away.
+    s.lights.push_back(light(glm::dvec3(s.objects[0].matrix[3])));
+    s.lights.push_back(light(glm::dvec3(s.objects[1].matrix[3]) + glm::dvec3(1e-5)));
+    s.lights.push_back(light({3e7, 2e7, -1e7}));
+    RenderScene compiled(s, 1);
+    RenderScene plain(s, 1, false);
+    for (std::size_t l = 0; l < s.lights.size(); ++l) grids += compiled.lightGrid(l) != nullptr;
+    Tracer withGrids(compiled, 5);
+    Tracer without(plain, 5);
+    TraceContext a, b;
+    for (int r = 0; r < 2000; ++r) {
+      const scene::Object& target = s.objects[random.below(static_cast<int>(s.objects.size()))];
+      glm::dvec3 origin = random.direction() * std::pow(10.0, random.uniform(-2, 9));
+      Ray ray{origin, glm::dvec3(target.matrix[3]) - origin};
+      std::optional<Hit> hit = compiled.closestHit(ray, RaySource{});
+      if (!hit) continue;
+      for (std::size_t l = 0; l < s.lights.size(); ++l) {
+        EXPECT_EQ(withGrids.shadowed(*hit, l, a), without.shadowed(*hit, l, b))
+            << "trial " << trial << " ray " << r << " light " << l;
+      }
+    }
+    RenderSettings settings;
+    settings.width = 64;
+    settings.height = 48;
+    settings.threads = 1;
+    settings.samplesPerPixel = 16;  // 4 samples an object or more: the eye's grid too
+    Image with = renderImage(compiled, settings);
+    settings.eyeGrid = false;
+    Image alone = renderImage(plain, settings);
+    EXPECT_EQ(with.rgb, alone.rgb) << "trial " << trial;
+  }
+  // Of 12: the far light of each trial has a grid; the lights among the
+  // huge objects mostly have none (their boxes would cover too many cells),
+  // and walk the BVH.
+  EXPECT_GE(grids, 4);
 }
 
 // Whole images: with both grids and without either, every float the same.
