@@ -338,12 +338,8 @@ std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySo
   return finishHit(best, ray, bestCandidate);
 }
 
-bool RenderScene::blockedByHintOrPlane(const Ray& ray, const RaySource& source, double tMax,
-                                       std::uint32_t* lastOccluder) const {
-  if (lastOccluder && *lastOccluder < objects_.size() &&
-      intersectObject(*lastOccluder, ray, source, tMax)) {
-    return true;
-  }
+bool RenderScene::blockedByPlane(const Ray& ray, const RaySource& source, double tMax,
+                                 std::uint32_t* lastOccluder) const {
   for (std::uint32_t plane : planes_) {
     if (intersectObject(plane, ray, source, tMax)) {
       if (lastOccluder) *lastOccluder = plane;
@@ -391,12 +387,7 @@ bool RenderScene::anyHitTowardLight(std::size_t light, const Ray& ray, const Ray
   }
   // The cell lists every bounded object that can block the ray, so the
   // hint, which saves a walk down the BVH, is not needed here.
-  for (std::uint32_t plane : planes_) {
-    if (intersectObject(plane, ray, source, tMax)) {
-      if (lastOccluder) *lastOccluder = plane;
-      return true;
-    }
-  }
+  if (blockedByPlane(ray, source, tMax, lastOccluder)) return true;
   BoxRay boxRay{ray.origin, 1.0 / ray.direction};
   for (std::uint32_t item : grid->items(cell)) {
     if (meetsItemBox(item, boxRay, tMax) && intersectObject(bounded_[item], ray, source, tMax)) {
@@ -410,7 +401,11 @@ bool RenderScene::anyHitTowardLight(std::size_t light, const Ray& ray, const Ray
 
 bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax,
                          std::uint32_t* lastOccluder) const {
-  if (blockedByHintOrPlane(ray, source, tMax, lastOccluder)) return true;
+  if (lastOccluder && *lastOccluder < objects_.size() &&
+      intersectObject(*lastOccluder, ray, source, tMax)) {
+    return true;
+  }
+  if (blockedByPlane(ray, source, tMax, lastOccluder)) return true;
   std::uint32_t found = RaySource::kNone;
   BoxRay boxRay{ray.origin, 1.0 / ray.direction};
   bvh_.traverse(boxRay, tMax, [&](std::uint32_t item) {

@@ -201,9 +201,10 @@ class RenderScene {
   // within (0, tMax): hitsBox on the leaf's float box, which contains the
   // object's box.
   bool meetsItemBox(std::uint32_t item, const BoxRay& ray, double tMax) const;
-  // anyHit's first tests: the hint, then the planes.
-  bool blockedByHintOrPlane(const Ray& ray, const RaySource& source, double tMax,
-                            std::uint32_t* lastOccluder) const;
+  // Whether a plane blocks the ray within (0, tMax); if so, it becomes
+  // `lastOccluder`, when there is one.
+  bool blockedByPlane(const Ray& ray, const RaySource& source, double tMax,
+                      std::uint32_t* lastOccluder) const;
 
   std::vector<RenderObject> objects_;
   // Per object, read once per hit: the 3x3 block of its matrix (toWorld)
