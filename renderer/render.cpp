@@ -222,6 +222,16 @@ PixelRegion regionToRender(const RenderSettings& settings) {
   return cut.empty() ? PixelRegion{} : cut;
 }
 
+bool samplesAdaptively(const RenderSettings& settings) {
+  return settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1;
+}
+
+std::uint64_t uniformSampleCount(const RenderSettings& settings) {
+  PixelRegion region = regionToRender(settings);
+  return static_cast<std::uint64_t>(region.width()) * static_cast<std::uint64_t>(region.height()) *
+         static_cast<std::uint64_t>(std::max(1, settings.samplesPerPixel));
+}
+
 Image blankImageFor(const RenderSettings& settings) {
   PixelRegion region = regionToRender(settings);
   Image image;
@@ -407,10 +417,9 @@ class PixelTracer {
   // made the render slower, not faster.
   void buildEyeGrid() {
     std::uint64_t objects = scene_.boundedObjects().size();
-    PixelRegion region = regionToRender(settings_);
-    std::uint64_t samples = static_cast<std::uint64_t>(region.width()) * region.height() *
-                            static_cast<std::uint64_t>(std::max(1, settings_.samplesPerPixel));
-    if (objects < RenderScene::kMinGridObjects || samples < 4 * objects) return;
+    if (objects < RenderScene::kMinGridObjects || uniformSampleCount(settings_) < 4 * objects) {
+      return;
+    }
     // Cells of 4 pixels a side, or of 2 where there is more than an object
     // in 64 pixels: about one listed object a ray either way (the floor
     // scenes of 1,000 and 100,000 objects at 1080p list 0.70 and 1.34; with
@@ -603,12 +612,8 @@ GpuProbe probeGpu(bool allowCpu) {
 
 RenderDevice chooseDevice(const RenderSettings& settings) {
   if (settings.device != RenderDevice::Auto) return settings.device;
-  if (settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1) return RenderDevice::Cpu;
-  PixelRegion region = regionToRender(settings);
-  std::uint64_t samples = static_cast<std::uint64_t>(region.width()) *
-                          static_cast<std::uint64_t>(region.height()) *
-                          static_cast<std::uint64_t>(std::max(1, settings.samplesPerPixel));
-  if (samples < kAutoGpuMinSamples) return RenderDevice::Cpu;
+  if (samplesAdaptively(settings)) return RenderDevice::Cpu;
+  if (uniformSampleCount(settings) < kAutoGpuMinSamples) return RenderDevice::Cpu;
   return probeGpu(false).available ? RenderDevice::Gpu : RenderDevice::Cpu;
 }
 
@@ -616,7 +621,7 @@ namespace {
 
 // The GPU path's refusals, before any device is touched.
 void checkGpuSettings(const RenderSettings& settings) {
-  if (settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1) {
+  if (samplesAdaptively(settings)) {
     throw DeviceUnavailable("adaptive anti-aliasing is not done on the gpu");
   }
 #if !SCENEFILE_VULKAN
@@ -647,7 +652,7 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
   PixelTracer tracer(scene, settings);
   std::vector<Worker> workers(threadCount(settings.threads));
   ImageWriter writer(image);
-  if (settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1) {
+  if (samplesAdaptively(settings)) {
     renderAdaptive(tracer, region, settings, workers, writer, progress, cancel);
   } else {
     renderUniform(tracer, region, settings, workers, writer, progress, cancel);

@@ -241,6 +241,15 @@ class RenderCancelled : public std::exception {
 /// the image, or all of it.
 PixelRegion regionToRender(const RenderSettings& settings);
 
+/// Whether a render with `settings` samples adaptively (docs/RENDERING.md,
+/// "Adaptive sampling"): a threshold above 0 and more than one sample a
+/// pixel to refine to.
+bool samplesAdaptively(const RenderSettings& settings);
+
+/// The camera samples a uniform render with `settings` takes: the pixels
+/// of regionToRender times samplesPerPixel (at least 1).
+std::uint64_t uniformSampleCount(const RenderSettings& settings);
+
 /// An image of the pixels `settings` asks for (regionToRender), every
 /// value 0, with its place in the full image, and coverage when asked for:
 /// what each device's render fills in.

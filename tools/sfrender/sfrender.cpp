@@ -363,8 +363,7 @@ int Renderer::run() {
     return toInt(ExitCode::Usage);
   }
   // A usage error, told before the scene is read and compiled.
-  if (settings_.device == render::RenderDevice::Gpu && settings_.adaptiveThreshold > 0 &&
-      settings_.samplesPerPixel > 1) {
+  if (settings_.device == render::RenderDevice::Gpu && render::samplesAdaptively(settings_)) {
     output_.error("--adaptive is not done on the gpu; leave it out or use --device cpu");
     return toInt(ExitCode::Usage);
   }
