@@ -110,13 +110,6 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     }
   }
   bvh_ = Bvh(boxes, threads);
-  leafOf_.resize(boxes.size());
-  const std::vector<BvhNode>& nodes = bvh_.nodes();
-  for (std::uint32_t node = 0; node < nodes.size(); ++node) {
-    for (std::uint32_t i = 0; i < nodes[node].count; ++i) {
-      leafOf_[bvh_.items()[nodes[node].offset + i]] = node;
-    }
-  }
   lights_.reserve(scene.lights.size());
   for (const scene::Light& light : scene.lights) {
     lights_.push_back(RenderLight{light.position(), light.colour});
@@ -124,6 +117,15 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
   // A grid per light, for its shadow rays (docs/RENDERING.md, "Direction
   // grids"); not for a scene so small that the BVH is as quick.
   if (lightGrids && boxes.size() >= kMinGridObjects) {
+    // Each item's leaf, whose box the grids' shadow rays test first
+    // (meetsItemBox): nothing else reads it.
+    leafOf_.resize(boxes.size());
+    const std::vector<BvhNode>& nodes = bvh_.nodes();
+    for (std::uint32_t node = 0; node < nodes.size(); ++node) {
+      for (std::uint32_t i = 0; i < nodes[node].count; ++i) {
+        leafOf_[bvh_.items()[nodes[node].offset + i]] = node;
+      }
+    }
     int resolution = lightGridResolution(boxes.size());
     for (std::size_t i = 0; i < lights_.size() && i < kMaxLightGrids; ++i) {
       lightGrids_.push_back(DirectionGrid::cubeAround(lights_[i].position, boxes, resolution,

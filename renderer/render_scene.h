@@ -217,8 +217,8 @@ class RenderScene {
   scene::Camera camera_;
   Bvh bvh_;
   std::vector<DirectionGrid> lightGrids_;
-  // Per BVH item, the leaf that holds it: the grids' rays test its box
-  // before the object, as a walk down the BVH would.
+  // Per BVH item, the leaf that holds it, made with the light grids: their
+  // rays test its box before the object, as a walk down the BVH would.
   std::vector<std::uint32_t> leafOf_;
   bool hasTransparency_ = false;
 };
