@@ -24,7 +24,7 @@
 //       Adaptive anti-aliasing against uniform sampling, on one thread (so
 //       that the time is CPU time): renders a reference at R samples a pixel,
 //       then uniform 1, 4, 16 and 64 spp and adaptive sampling at several
-//       thresholds, first levels and spp, and prints for each its CPU
+//       thresholds and spp, and prints for each its CPU
 //       seconds, mean samples a pixel and RMSE against the reference (values
 //       clamped to [0, 1], as the image stores them). docs/RENDERING.md,
 //       "Adaptive sampling", holds the figures.
@@ -175,28 +175,24 @@ int adaptiveSweep(const std::string& path, render::RenderSettings settings, int 
   reference.samplesPerPixel = referenceSpp;
   reference.seed = 12345;  // samples apart from those measured
   render::Image truth = render::renderImage(compiled, reference);
-  std::printf("%-9s %4s %5s %6s %9s %9s %10s %9s\n", "mode", "spp", "first", "thresh", "cpu_s",
-              "samples", "rmse", "refined%");
-  auto run = [&](int spp, double threshold, int firstLevel) {
+  std::printf("%-9s %4s %6s %9s %9s %10s %9s\n", "mode", "spp", "thresh", "cpu_s", "samples",
+              "rmse", "refined%");
+  auto run = [&](int spp, double threshold) {
     render::RenderSettings s = settings;
     s.samplesPerPixel = spp;
     s.adaptiveThreshold = threshold;
-    s.adaptiveFirstLevel = firstLevel;
     render::RenderStatistics stats;
     auto t0 = Clock::now();
     render::Image image = render::renderImage(compiled, s, &stats);
     double seconds = since(t0);
-    std::printf("%-9s %4d %5d %6.3f %9.3f %9.2f %10.6f %9.2f\n",
-                threshold > 0 ? "adaptive" : "uniform", spp, threshold > 0 ? firstLevel : 0,
-                threshold, seconds, static_cast<double>(stats.samples) / stats.pixels,
+    std::printf("%-9s %4d %6.3f %9.3f %9.2f %10.6f %9.2f\n", threshold > 0 ? "adaptive" : "uniform",
+                spp, threshold, seconds, static_cast<double>(stats.samples) / stats.pixels,
                 clampedRmse(image, truth), 100.0 * stats.refinedPixels / stats.pixels);
     std::fflush(stdout);
   };
-  for (int spp : {1, 4, 16, 64}) run(spp, 0.0, 0);
+  for (int spp : {1, 4, 16, 64}) run(spp, 0.0);
   for (int spp : {16, 64}) {
-    for (int first : {0, 4}) {
-      for (double threshold : {0.01, 0.03, 0.1}) run(spp, threshold, first);
-    }
+    for (double threshold : {0.01, 0.03, 0.1, 0.3}) run(spp, threshold);
   }
   return 0;
 }

@@ -46,16 +46,159 @@ bool SampleSpread::exceeds(double threshold) const {
   return false;
 }
 
-std::vector<int> refinementLevels(int samplesPerPixel, int firstLevel) {
-  if (samplesPerPixel <= 1) return {};
-  if (firstLevel > 1 && firstLevel < samplesPerPixel) return {firstLevel, samplesPerPixel};
-  return {samplesPerPixel};
+int subdivisionDepth(int samplesPerPixel) {
+  int depth = 0;
+  while (depth < kMaxSubdivisionDepth &&
+         (std::int64_t{1} << (2 * (depth + 1))) <= std::int64_t{samplesPerPixel}) {
+    ++depth;
+  }
+  return depth;
+}
+
+PixelLattice::PixelLattice(int depth)
+    : depth_(std::clamp(depth, 0, kMaxSubdivisionDepth)), side_((1 << depth_) + 1) {
+  std::size_t points = static_cast<std::size_t>(side_) * side_;
+  looks_.resize(points);
+  weightOf_.assign(points, 0.0);
+  known_.assign(points, 0);
+}
+
+void PixelLattice::start(const SampleLook corners[4]) {
+  // Forget the last pixel: only the points it touched.
+  for (int p : touched_) {
+    weightOf_[p] = 0.0;
+    known_[p] = 0;
+  }
+  touched_.clear();
+  const int last = side_ - 1;
+  preset(0, corners[0]);
+  preset(last, corners[1]);
+  preset(last * side_, corners[2]);
+  preset(last * side_ + last, corners[3]);
+}
+
+void PixelLattice::preset(int point, const SampleLook& look) {
+  looks_[point] = look;
+  if (!known_[point]) {
+    known_[point] = 1;
+    touched_.push_back(point);
+  }
+}
+
+int PixelLattice::subdivide(double threshold, const TraceLevel& traceLevel) {
+  const int last = side_ - 1;
+  // Squares of one level by their top-left points; `size` lattice steps a
+  // side, and each corner's share of a whole square's weight.
+  std::vector<int>& squares = squares_;
+  std::vector<int>& next = next_;
+  std::vector<int>& queued = queued_;
+  std::vector<SampleLook>& traced = traced_;
+  squares.assign(1, 0);
+  int size = last;
+  double share = 0.25;
+  int cuts = 0;
+  for (int level = 0; !squares.empty(); ++level) {
+    next.clear();
+    queued.clear();
+    int half = size / 2;
+    for (int p : squares) {
+      const int corner[4] = {p, p + size, p + size * side_, p + size * side_ + size};
+      SampleSpread spread;
+      for (int c : corner) spread.add(looks_[c]);
+      if (level == depth_ || !spread.exceeds(threshold)) {
+        for (int c : corner) weightOf_[c] += share;
+        continue;
+      }
+      // Cut in four: the midpoints of the sides and the centre.
+      for (int m : {p + half, p + half * side_, p + half * side_ + half, p + half * side_ + size,
+                    p + size * side_ + half}) {
+        if (!known_[m]) {
+          known_[m] = 1;
+          touched_.push_back(m);
+          queued.push_back(m);
+        }
+      }
+      for (int child : {p, p + half, p + half * side_, p + half * side_ + half}) {
+        next.push_back(child);
+      }
+    }
+    if (!queued.empty()) {
+      traced.assign(queued.size(), SampleLook{});
+      traceLevel(queued, traced);
+      for (std::size_t k = 0; k < queued.size(); ++k) looks_[queued[k]] = traced[k];
+    }
+    if (!next.empty()) cuts = level + 1;
+    squares.swap(next);
+    size = half;
+    share /= 4.0;
+  }
+
+  // The weighted points in lattice order, the order the pixel's sums take.
+  std::sort(touched_.begin(), touched_.end());
+  points_.clear();
+  weights_.clear();
+  for (int p : touched_) {
+    if (weightOf_[p] > 0.0) {
+      points_.push_back(p);
+      weights_.push_back(weightOf_[p]);
+    }
+  }
+  return cuts;
+}
+
+SharedSides::SharedSides(int side, int columns)
+    : side_(side),
+      right_(static_cast<std::size_t>(side)),
+      rightKnown_(static_cast<std::size_t>(side)),
+      bottom_(static_cast<std::size_t>(side) * columns),
+      bottomKnown_(static_cast<std::size_t>(side) * columns),
+      bottomValid_(static_cast<std::size_t>(columns)) {}
+
+void SharedSides::startTile() {
+  std::fill(bottomValid_.begin(), bottomValid_.end(), 0);
+  rightValid_ = false;
+}
+
+void SharedSides::lend(int column, PixelLattice& lattice, SampleColour* samples) const {
+  const int last = side_ - 1;
+  if (rightValid_) {
+    for (int b = 1; b < last; ++b) {
+      if (!rightKnown_[b]) continue;
+      samples[b * side_] = right_[b];
+      lattice.preset(b * side_, lookOf(right_[b].colour, right_[b].object));
+    }
+  }
+  if (bottomValid_[column]) {
+    for (int a = 1; a < last; ++a) {
+      std::size_t at = static_cast<std::size_t>(column) * side_ + a;
+      if (!bottomKnown_[at]) continue;
+      samples[a] = bottom_[at];
+      lattice.preset(a, lookOf(bottom_[at].colour, bottom_[at].object));
+    }
+  }
+}
+
+void SharedSides::keep(int column, const PixelLattice& lattice, const SampleColour* samples) {
+  const int last = side_ - 1;
+  for (int b = 1; b < last; ++b) {
+    int p = b * side_ + last;
+    rightKnown_[b] = lattice.known(p) ? 1 : 0;
+    if (rightKnown_[b]) right_[b] = samples[p];
+  }
+  for (int a = 1; a < last; ++a) {
+    int p = last * side_ + a;
+    std::size_t at = static_cast<std::size_t>(column) * side_ + a;
+    bottomKnown_[at] = lattice.known(p) ? 1 : 0;
+    if (bottomKnown_[at]) bottom_[at] = samples[p];
+  }
+  rightValid_ = true;
+  bottomValid_[column] = 1;
 }
 
 std::uint64_t adaptiveSamplingBytes(int width, int height) {
-  auto withApron = [](int side) { return static_cast<std::uint64_t>(side > 0 ? side + 2 : 0); };
-  return saturatingProduct(saturatingProduct(withApron(width), withApron(height)),
-                           sizeof(SampleLook));
+  auto corners = [](int side) { return static_cast<std::uint64_t>(side > 0 ? side + 1 : 0); };
+  return saturatingProduct(saturatingProduct(corners(width), corners(height)),
+                           sizeof(SampleColour) + sizeof(SampleLook));
 }
 
 }  // namespace render

@@ -6,12 +6,23 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <vector>
 
 #include "renderer/render_scene.h"
 
 namespace render {
+
+// A camera sample's colour, the bound on what adaptive depth control left
+// out of it (TraceContext::slack), and the object its ray met (or
+// RaySource::kNone).
+struct SampleColour {
+  glm::dvec3 colour{0.0};
+  double slack = 0.0;
+  std::uint32_t object = RaySource::kNone;
+  bool hit() const { return object != RaySource::kNone; }
+};
 
 // What one camera sample showed, as far as the decisions need it: its colour
 // as an image shows it (each channel clamped to [0, 1]) and the object its
@@ -42,17 +53,106 @@ class SampleSpread {
   bool empty_ = true;
 };
 
-// The sample counts a refined pixel goes through after its centre, the
-// last one `samplesPerPixel`: `firstLevel` stratified samples first where it
-// is above 1 and below samplesPerPixel, then all of them. Each level is a
-// stratified set of its own (samplePosition with that count) and replaces
-// the one before in the pixel's colour; the pixel stops at the first level
-// whose samples agree. Empty for one sample a pixel: nothing to refine.
-std::vector<int> refinementLevels(int samplesPerPixel, int firstLevel);
+// The depth of adaptive subdivision for `samplesPerPixel`: the most times a
+// pixel's squares are cut in four, floor(log4 samplesPerPixel), so that a
+// pixel holds at most samplesPerPixel squares; at most kMaxSubdivisionDepth.
+inline constexpr int kMaxSubdivisionDepth = 6;
+int subdivisionDepth(int samplesPerPixel);
+
+// One pixel's adaptive subdivision (docs/RENDERING.md, "Adaptive sampling").
+// Its samples lie on a lattice of side() x side() points, side() = 2^depth +
+// 1: point (a, b), index b * side() + a, sits at (a, b) / 2^depth of a pixel
+// from the pixel's top-left corner. The pixel starts as one square, its four
+// corners; a square whose corners differ (SampleSpread) is cut into four,
+// which needs the looks of up to five more points, down to `depth` cuts; a
+// square left whole counts as the mean of its corners. Which squares are cut
+// depends on the looks alone, so a pixel is the same however its points are
+// traced. One for each thread: it keeps its arrays from pixel to pixel.
+class PixelLattice {
+ public:
+  explicit PixelLattice(int depth);
+
+  int depth() const { return depth_; }
+  int side() const { return side_; }
+
+  // Traces the points of one level of cuts: looks[k] for points[k], which
+  // are lattice indices not traced before in this pixel.
+  using TraceLevel =
+      std::function<void(const std::vector<int>& points, std::vector<SampleLook>& looks)>;
+
+  // Starts a pixel whose corners look as `corners` says (top-left,
+  // top-right, bottom-left, bottom-right).
+  void start(const SampleLook corners[4]);
+  // A point whose look is known already (traced for a neighbouring pixel,
+  // the same sample): subdivide uses it instead of tracing it.
+  void preset(int point, const SampleLook& look);
+  bool known(int point) const { return known_[point] != 0; }
+
+  // Subdivides the pixel started, tracing the points it needs level by
+  // level. Returns the number of levels it cut (0: none; depth(): the
+  // finest).
+  int subdivide(double threshold, const TraceLevel& traceLevel);
+
+  // After subdivide: the points the pixel is the weighted mean of, in
+  // lattice order, and their weights (parallel): multiples of 4^-depth / 4
+  // that sum to 1, all exact in a double.
+  const std::vector<int>& points() const { return points_; }
+  const std::vector<double>& weights() const { return weights_; }
+
+ private:
+  int depth_;
+  int side_;
+  std::vector<SampleLook> looks_;
+  std::vector<double> weightOf_;
+  std::vector<std::uint8_t> known_;
+  std::vector<int> touched_;
+  std::vector<int> points_;
+  std::vector<double> weights_;
+  // subdivide's work lists, kept to spare their allocations.
+  std::vector<int> squares_, next_, queued_;
+  std::vector<SampleLook> traced_;
+};
+
+// The samples on the sides of the pixels last subdivided in a row of
+// `columns` pixels (a tile's): the right side of the pixel to the left, and
+// the bottom side of the pixel above each column, which the next pixel's
+// lattice shares. Lending them traces a shared point once, not twice; a
+// point's sample is the same whichever pixel traces it, so the image is the
+// same either way. One for each thread.
+class SharedSides {
+ public:
+  SharedSides(int side, int columns);
+
+  // A new tile: no pixel above; a new row: no pixel to the left.
+  void startTile();
+  void startRow() { rightValid_ = false; }
+
+  // Presets the lattice of the pixel in `column`, just started, with the
+  // points its neighbours traced, and `samples` (indexed by lattice point)
+  // with their samples.
+  void lend(int column, PixelLattice& lattice, SampleColour* samples) const;
+  // Keeps the right and bottom sides of the pixel in `column`, just
+  // subdivided, for its neighbours.
+  void keep(int column, const PixelLattice& lattice, const SampleColour* samples);
+  // The pixel in `column` traced no point of its sides.
+  void forget(int column) {
+    rightValid_ = false;
+    bottomValid_[column] = 0;
+  }
+
+ private:
+  int side_;
+  std::vector<SampleColour> right_;
+  std::vector<std::uint8_t> rightKnown_;
+  bool rightValid_ = false;
+  std::vector<SampleColour> bottom_;
+  std::vector<std::uint8_t> bottomKnown_;
+  std::vector<std::uint8_t> bottomValid_;
+};
 
 // The bytes adaptive sampling keeps beside the image of a region of
-// `width` x `height` pixels: one centre sample's look for each pixel and its
-// one-pixel apron. Saturates.
+// `width` x `height` pixels: a SampleColour and its SampleLook for each
+// pixel corner, (width + 1) x (height + 1) of them. Saturates.
 std::uint64_t adaptiveSamplingBytes(int width, int height);
 
 }  // namespace render

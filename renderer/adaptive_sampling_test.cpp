@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/test_scenes.h"
@@ -36,12 +40,118 @@ TEST(AdaptiveSampling, ASpreadExceedsWhereAnyTwoSamplesDiffer) {
   EXPECT_TRUE(objects.exceeds(0.9));
 }
 
-TEST(AdaptiveSampling, LevelsEndAtTheSamplesPerPixel) {
-  EXPECT_TRUE(refinementLevels(1, 4).empty());
-  EXPECT_EQ(refinementLevels(4, 4), std::vector<int>{4});
-  EXPECT_EQ(refinementLevels(16, 4), (std::vector<int>{4, 16}));
-  EXPECT_EQ(refinementLevels(16, 0), std::vector<int>{16});
-  EXPECT_EQ(refinementLevels(2, 4), std::vector<int>{2});
+TEST(AdaptiveSampling, DepthIsTheMostCutsThatKeepSquaresWithinTheSamples) {
+  EXPECT_EQ(subdivisionDepth(1), 0);
+  EXPECT_EQ(subdivisionDepth(3), 0);
+  EXPECT_EQ(subdivisionDepth(4), 1);
+  EXPECT_EQ(subdivisionDepth(15), 1);
+  EXPECT_EQ(subdivisionDepth(16), 2);
+  EXPECT_EQ(subdivisionDepth(64), 3);
+  EXPECT_EQ(subdivisionDepth(255), 3);
+  EXPECT_EQ(subdivisionDepth(256), 4);
+  EXPECT_EQ(subdivisionDepth(1 << 30), kMaxSubdivisionDepth);
+}
+
+// A pixel seen through a lattice: object 1 left of the line x + 0.37 y =
+// 0.55 (x, y in [0, 1] across the pixel), object 2 right of it, each of its
+// own grey. The part of the pixel left of the line is 0.55 - 0.37 / 2.
+struct EdgedPixel {
+  int side;
+  SampleLook at(int point) const {
+    double x = static_cast<double>(point % side) / (side - 1);
+    double y = static_cast<double>(point / side) / (side - 1);
+    return x + 0.37 * y < 0.55 ? lookOf(glm::dvec3(0.2), 1) : lookOf(glm::dvec3(0.7), 2);
+  }
+  static constexpr double kLeftShare = 0.55 - 0.37 / 2.0;
+};
+
+TEST(AdaptiveSampling, ALatticeCutsAlongAnEdgeAndWeighsItsSquares) {
+  for (int depth = 1; depth <= kMaxSubdivisionDepth; ++depth) {
+    PixelLattice lattice(depth);
+    EdgedPixel pixel{lattice.side()};
+    const int last = lattice.side() - 1;
+    const SampleLook corners[4] = {pixel.at(0), pixel.at(last), pixel.at(last * lattice.side()),
+                                   pixel.at(last * lattice.side() + last)};
+    std::vector<int> tracedAt(static_cast<std::size_t>(lattice.side()) * lattice.side(), 0);
+    lattice.start(corners);
+    int cuts = lattice.subdivide(
+        0.01, [&](const std::vector<int>& points, std::vector<SampleLook>& looks) {
+          ASSERT_EQ(points.size(), looks.size());
+          for (std::size_t k = 0; k < points.size(); ++k) {
+            ++tracedAt[points[k]];
+            looks[k] = pixel.at(points[k]);
+          }
+        });
+    EXPECT_EQ(cuts, depth);
+    // No point twice, and no corner: those the pixel started with.
+    for (int p = 0; p < static_cast<int>(tracedAt.size()); ++p) ASSERT_LE(tracedAt[p], 1) << p;
+    EXPECT_EQ(tracedAt[0] + tracedAt[last] + tracedAt.back(), 0);
+    // Only along the edge: a number of points that grows with the side, not
+    // with its square (at depth 6, 88 of 65 x 65).
+    int traced = 0;
+    for (int n : tracedAt) traced += n;
+    EXPECT_LE(traced, 8 * last) << "depth " << depth;
+    // The weights: in lattice order, multiples of the finest square's
+    // quarter, summing to 1 exactly; the share of object 1 within the
+    // finest squares' error of the true share.
+    const double quantum = 0.25 / static_cast<double>(last * last);
+    double sum = 0.0, left = 0.0;
+    ASSERT_EQ(lattice.points().size(), lattice.weights().size());
+    for (std::size_t k = 0; k < lattice.points().size(); ++k) {
+      if (k > 0) {
+        ASSERT_LT(lattice.points()[k - 1], lattice.points()[k]);
+      }
+      double w = lattice.weights()[k];
+      ASSERT_EQ(std::fmod(w, quantum), 0.0);
+      sum += w;
+      if (pixel.at(lattice.points()[k]).object == 1) left += w;
+    }
+    EXPECT_EQ(sum, 1.0);
+    EXPECT_NEAR(left, EdgedPixel::kLeftShare, 1.0 / last) << "depth " << depth;
+  }
+}
+
+TEST(AdaptiveSampling, ALatticeTracesNothingWhereCornersAgreeOrPointsAreLent) {
+  PixelLattice lattice(3);
+  const int side = lattice.side(), last = side - 1;
+  const SampleLook grey = lookOf(glm::dvec3(0.5), 1);
+  const SampleLook same[4] = {grey, grey, grey, grey};
+  int traced = 0;
+  auto count = [&](const std::vector<int>& points, std::vector<SampleLook>& looks) {
+    traced += static_cast<int>(points.size());
+    for (SampleLook& look : looks) look = grey;
+  };
+  lattice.start(same);
+  EXPECT_EQ(lattice.subdivide(0.01, count), 0);
+  EXPECT_EQ(traced, 0);
+  EXPECT_EQ(lattice.points(), (std::vector<int>{0, last, last * side, last * side + last}));
+  EXPECT_EQ(lattice.weights(), std::vector<double>(4, 0.25));
+
+  // The same pixel with its left side lent by a neighbour: those points are
+  // not traced again, and the pixel is the same.
+  EdgedPixel pixel{side};
+  const SampleLook corners[4] = {pixel.at(0), pixel.at(last), pixel.at(last * side),
+                                 pixel.at(last * side + last)};
+  auto trace = [&](const std::vector<int>& points, std::vector<SampleLook>& looks) {
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      ASSERT_NE(points[k] % side, 0) << "a lent point traced";
+      looks[k] = pixel.at(points[k]);
+      ++traced;
+    }
+  };
+  lattice.start(corners);
+  lattice.subdivide(0.01, [&](const std::vector<int>& points, std::vector<SampleLook>& looks) {
+    for (std::size_t k = 0; k < points.size(); ++k) looks[k] = pixel.at(points[k]);
+  });
+  const std::vector<int> points = lattice.points();
+  const std::vector<double> weights = lattice.weights();
+  lattice.start(corners);
+  for (int b = 1; b < last; ++b) lattice.preset(b * side, pixel.at(b * side));
+  traced = 0;
+  lattice.subdivide(0.01, trace);
+  EXPECT_GT(traced, 0);
+  EXPECT_EQ(lattice.points(), points);
+  EXPECT_EQ(lattice.weights(), weights);
 }
 
 RenderSettings adaptiveSettings(int spp, double threshold) {
@@ -68,42 +178,47 @@ TEST(AdaptiveSampling, TheSameImageAtAnyThreadCount) {
   }
 }
 
-// Each pixel is its centre sample (uniform 1 spp) or one of its levels'
-// stratified sets, exactly the pixel uniform sampling gives at that count.
-TEST(AdaptiveSampling, EachPixelIsTheUniformPixelOfOneLevel) {
+// Against a 256-spp reference, adaptive sampling at 16 is closer than
+// uniform 4 with fewer samples, and at 64 closer than uniform 16 (and than
+// adaptive at 16) with fewer samples. On the default scene at 160x120 the
+// RMSEs are 0.0023 (3.4 samples a pixel) against 0.0082, and 0.0010 (6.5)
+// against 0.0027.
+TEST(AdaptiveSampling, ErrorFallsWithDepthAtAFractionOfTheSamples) {
   RenderScene compiled(defaultScene());
-  for (int first : {0, 4}) {
-    RenderSettings settings = adaptiveSettings(16, 0.02);
-    settings.adaptiveFirstLevel = first;
-    RenderStatistics statistics;
-    Image adaptive = renderImage(compiled, settings, &statistics);
-    std::vector<Image> uniform;
-    for (int spp : {1, 4, 16}) {
-      RenderSettings u = settings;
-      u.adaptiveThreshold = 0.0;
-      u.samplesPerPixel = spp;
-      uniform.push_back(renderImage(compiled, u));
+  RenderSettings settings = adaptiveSettings(256, 0.0);
+  settings.width = 160;
+  settings.height = 120;
+  settings.seed = 11;
+  Image reference = renderImage(compiled, settings);
+  auto rmse = [&](const Image& image) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < image.rgb.size(); ++k) {
+      double d = std::clamp(image.rgb[k], 0.0f, 1.0f) - std::clamp(reference.rgb[k], 0.0f, 1.0f);
+      sum += d * d;
     }
-    std::size_t pixels = adaptive.coverage.size(), fromCentre = 0, fromFull = 0;
-    for (std::size_t p = 0; p < pixels; ++p) {
-      auto same = [&](const Image& u) {
-        return u.rgb[3 * p] == adaptive.rgb[3 * p] && u.rgb[3 * p + 1] == adaptive.rgb[3 * p + 1] &&
-               u.rgb[3 * p + 2] == adaptive.rgb[3 * p + 2] && u.coverage[p] == adaptive.coverage[p];
-      };
-      bool centre = same(uniform[0]), four = first == 4 && same(uniform[1]),
-           full = same(uniform[2]);
-      ASSERT_TRUE(centre || four || full) << "pixel " << p;
-      fromCentre += centre ? 1 : 0;
-      fromFull += full && !centre ? 1 : 0;
-    }
-    EXPECT_GT(fromCentre, pixels / 2);
-    EXPECT_GT(fromFull, 0u);
-    EXPECT_EQ(statistics.pixels, pixels);
-    EXPECT_GE(statistics.refinedPixels, statistics.fullySampledPixels);
-    EXPECT_GE(statistics.fullySampledPixels, fromFull);
-    EXPECT_LT(statistics.samples, 16 * pixels);
-    EXPECT_GT(statistics.samples, pixels);
-  }
+    return std::sqrt(sum / static_cast<double>(image.rgb.size()));
+  };
+  auto render = [&](int spp, double threshold, RenderStatistics* statistics) {
+    RenderSettings s = settings;
+    s.samplesPerPixel = spp;
+    s.adaptiveThreshold = threshold;
+    return renderImage(compiled, s, statistics);
+  };
+  RenderStatistics at16, at64;
+  double adaptive16 = rmse(render(16, 0.01, &at16)), adaptive64 = rmse(render(64, 0.01, &at64));
+  double uniform4 = rmse(render(4, 0.0, nullptr)), uniform16 = rmse(render(16, 0.0, nullptr));
+  EXPECT_LT(adaptive16, uniform4);
+  EXPECT_LT(adaptive64, adaptive16);
+  EXPECT_LT(adaptive64, uniform16);
+  std::uint64_t pixels = at64.pixels;
+  EXPECT_LT(at64.samples, 16 * pixels);
+  EXPECT_LT(at16.samples, 4 * pixels);
+  // The corners, (160 + 1) x (120 + 1), and the refined pixels' points.
+  EXPECT_GT(at16.samples, 161u * 121u);
+  EXPECT_GT(at16.refinedPixels, 0u);
+  EXPECT_LT(at16.refinedPixels, pixels / 2);
+  EXPECT_GE(at16.refinedPixels, at16.fullySampledPixels);
+  EXPECT_EQ(at16.refinedPixels, at64.refinedPixels);  // decided at the corners
 }
 
 TEST(AdaptiveSampling, OneSampleAPixelRefinesNothing) {
@@ -147,10 +262,18 @@ TEST(AdaptiveSampling, RefinesAnEdgeBetweenObjectsOfOneColour) {
       std::size_t p = 3 * (static_cast<std::size_t>(j) * settings.width + i);
       if (adaptive.rgb[p + 2] == centres.rgb[p + 2]) continue;
       ++changed;
-      bool edge = (i > 0 && id(i - 1, j) != id(i, j)) ||
-                  (i + 1 < settings.width && id(i + 1, j) != id(i, j)) ||
-                  (j > 0 && id(i, j - 1) != id(i, j)) ||
-                  (j + 1 < settings.height && id(i, j + 1) != id(i, j));
+      // Beside: a neighbour, diagonal ones too (a pixel's corner is shared
+      // with its diagonal neighbour), shows another object at its centre.
+      bool edge = false;
+      for (int dj = -1; dj <= 1; ++dj) {
+        for (int di = -1; di <= 1; ++di) {
+          int x = i + di, y = j + dj;
+          if (x >= 0 && x < settings.width && y >= 0 && y < settings.height &&
+              id(x, y) != id(i, j)) {
+            edge = true;
+          }
+        }
+      }
       EXPECT_TRUE(edge) << i << "," << j;
     }
   }
@@ -165,21 +288,28 @@ TEST(AdaptiveSampling, RefinesAnEdgeBetweenObjectsOfOneColour) {
   EXPECT_EQ(statistics.refinedPixels, 0u);
 }
 
-// The coverage of a pixel is the share of the samples its colour is the mean
-// of: the wall's edge down the middle of column 4 covers half of it.
-TEST(AdaptiveSampling, CoverageIsTheShareOfTheSamplesTraced) {
+// The coverage of a pixel is the weighted share of its samples that met an
+// object: the wall's edge at x = 4.5625 cuts column 4's 4 x 4 squares
+// between the lattice points 4.5 and 4.75, so of its columns of squares the
+// last counts whole, the third half (two of its four corners hit), and the
+// first two not at all: 1.5 of 4.
+TEST(AdaptiveSampling, CoverageIsTheWeightedShareOfTheSamplesThatHit) {
   scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 0, -1});
-  s.objects.push_back(
-      object(ObjectKind::Cube, {scale(10, 10, 1), translate(10, 0, -5)}, flat({0.8, 0.4, 0.2})));
-  s.lights.push_back(light({0, 0, 0}));
-  RenderScene compiled(s);
   RenderSettings settings = adaptiveSettings(16, 0.05);
   settings.width = 9;
   settings.height = 5;
+  // x = 4.5625 of 9 columns, on the plane z = -4 (the wall's front), 60
+  // degrees of vertical view over 5 rows.
+  double tanHalfWidth = std::tan(std::numbers::pi / 6.0) * 9.0 / 5.0;
+  double edge = (2.0 * 4.5625 / 9.0 - 1.0) * tanHalfWidth * 4.0;
+  s.objects.push_back(object(ObjectKind::Cube, {scale(10, 10, 1), translate(edge + 10, 0, -5)},
+                             flat({0.8, 0.4, 0.2})));
+  s.lights.push_back(light({0, 0, 0}));
+  RenderScene compiled(s);
   Image image = renderImage(compiled, settings);
   for (int j = 0; j < settings.height; ++j) {
     for (int i = 0; i < settings.width; ++i) {
-      float expected = i < 4 ? 0.0f : i == 4 ? 0.5f : 1.0f;
+      float expected = i < 4 ? 0.0f : i == 4 ? 0.375f : 1.0f;
       float alpha = image.coverage[static_cast<std::size_t>(j) * settings.width + i];
       ASSERT_EQ(alpha, expected) << i << "," << j;
       ASSERT_FLOAT_EQ(image.pixel(i, j).x, 0.8f * expected) << i << "," << j;

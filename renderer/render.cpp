@@ -138,16 +138,6 @@ int threadCount(int requested) {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-// A sample's colour, the bound on what adaptive depth control left out of
-// it (TraceContext::slack), and the object its camera ray met (or
-// RaySource::kNone).
-struct SampleColour {
-  glm::dvec3 colour{0.0};
-  double slack = 0.0;
-  std::uint32_t object = RaySource::kNone;
-  bool hit() const { return object != RaySource::kNone; }
-};
-
 }  // namespace
 
 PinholeCamera::PinholeCamera(const scene::Camera& camera, const RenderSettings& settings)
@@ -255,7 +245,7 @@ namespace {
 struct PixelSamples {
   glm::dvec3 colour{0.0};
   double slack = 0.0;
-  int hits = 0;
+  double hits = 0.0;
   int count = 0;
 
   // Adds a sample to the sums; samples are added in their order, so that
@@ -265,6 +255,14 @@ struct PixelSamples {
     slack += sample.slack;
     hits += sample.hit() ? 1 : 0;
     ++count;
+  }
+  // Adds a sample of a weighted mean (adaptive subdivision): the weights
+  // sum to 1, so the sums are the mean, and count stays 1.
+  void add(const SampleColour& sample, double weight) {
+    colour += weight * sample.colour;
+    slack += weight * sample.slack;
+    hits += sample.hit() ? weight : 0.0;
+    count = 1;
   }
   // The sums made means. Dividing by 1 is exact: skipped, for one division
   // less a pixel.
@@ -377,11 +375,12 @@ class PixelTracer {
 
   // `pixel`, traced at the tolerance, made exact to the image's levels: the
   // full colour lies in [colour, colour + slack]; where that range holds two
-  // levels, the pixel is traced again with a 64th of the tolerance, then in
-  // full, until the range holds one level (a trace that runs out of its
-  // allowance proves nothing, and if every one does, the first stays).
-  PixelSamples certified(int i, int j, PixelSamples pixel, MediumStack& media,
-                         Worker& worker) const {
+  // levels, the pixel is traced again (retrace(finer): its samples to within
+  // `finer`) with a 64th of the tolerance, then in full, until the range
+  // holds one level (a trace that runs out of its allowance proves nothing,
+  // and if every one does, the first stays).
+  template <typename Retrace>
+  PixelSamples certified(PixelSamples pixel, Worker& worker, Retrace&& retrace) const {
     if (!(pixel.slack > 0.0 && certifies_ &&
           !oneLevel(pixel.colour, pixel.slack, settings_.levels))) {
       return pixel;
@@ -389,8 +388,7 @@ class PixelTracer {
     ++worker.retraced;
     for (double finer : {tolerance_ / 64.0, 0.0}) {
       std::uint64_t cutBefore = worker.context.counts.cut;
-      PixelSamples again =
-          trace(i, j, pixel.count, finer, media, worker.context, [](const SampleColour&) {});
+      PixelSamples again = retrace(finer);
       pixel.hits = again.hits;
       if (worker.context.counts.cut == cutBefore &&
           (finer == 0.0 || oneLevel(again.colour, again.slack, settings_.levels))) {
@@ -398,6 +396,14 @@ class PixelTracer {
       }
     }
     return pixel;
+  }
+
+  // certified for the pixel (i, j) of `pixel.count` stratified samples.
+  PixelSamples certified(int i, int j, const PixelSamples& pixel, MediumStack& media,
+                         Worker& worker) const {
+    return certified(pixel, worker, [&](double finer) {
+      return trace(i, j, pixel.count, finer, media, worker.context, [](const SampleColour&) {});
+    });
   }
 
  private:
@@ -501,92 +507,194 @@ void renderUniform(const PixelTracer& tracer, const PixelRegion& region,
       progress);
 }
 
-// Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"). Pass 1:
-// the centre sample of every pixel of the region and of a one-pixel apron
-// around it, whose looks decide. Pass 2: a pixel whose centre differs from
-// one of its four neighbours' gets the refinement levels, each a stratified
-// set of its own, until one agrees within itself (its centre included) or
-// the last, samplesPerPixel, is reached. Every decision reads samples of
-// fixed positions, so a pixel is the same whatever the threads or region.
-void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
-                    const RenderSettings& settings, std::vector<Worker>& workers,
-                    const ImageWriter& writer, const ProgressCallback& progress,
-                    const CancelFlag* cancel) {
-  const double threshold = settings.adaptiveThreshold;
-  const std::vector<int> levels =
-      refinementLevels(std::max(1, settings.samplesPerPixel), settings.adaptiveFirstLevel);
-  PixelRegion apron{std::max(region.x0 - 1, 0), std::max(region.y0 - 1, 0),
-                    std::min(region.x1 + 1, settings.width),
-                    std::min(region.y1 + 1, settings.height)};
-  std::vector<SampleLook> centres(static_cast<std::size_t>(apron.width()) * apron.height());
-  auto centre = [&](int i, int j) -> SampleLook& {
-    return centres[static_cast<std::size_t>(j - apron.y0) * apron.width() + (i - apron.x0)];
-  };
-  // One progress for both passes.
-  int firstTiles = tileCount(apron), secondTiles = tileCount(region);
-  ProgressCallback firstProgress, secondProgress;
-  if (progress) {
-    firstProgress = [&](int done, int) { progress(done, firstTiles + secondTiles); };
-    secondProgress = [&](int done, int) { progress(firstTiles + done, firstTiles + secondTiles); };
+// The samples at the corners of every pixel of a region, shared by the
+// pixels that meet there: corner (x, y) is the image point (x, y), the
+// top-left corner of pixel (x, y).
+struct CornerSamples {
+  PixelRegion corners;
+  std::vector<SampleColour> samples;
+  std::vector<SampleLook> looks;
+
+  std::size_t at(int x, int y) const {
+    return static_cast<std::size_t>(y - corners.y0) * corners.width() + (x - corners.x0);
   }
-  int threads = static_cast<int>(workers.size());
+};
+
+// Adaptive sampling's pass 1: the corners of the pixels of `region`, traced
+// a row of a tile at a time, as packets.
+CornerSamples traceCorners(const PixelTracer& tracer, const PixelRegion& region,
+                           std::vector<Worker>& workers, const ProgressCallback& progress,
+                           const CancelFlag* cancel) {
+  CornerSamples corners;
+  corners.corners = PixelRegion{region.x0, region.y0, region.x1 + 1, region.y1 + 1};
+  std::size_t count = static_cast<std::size_t>(corners.corners.width()) * corners.corners.height();
+  corners.samples.resize(count);
+  corners.looks.resize(count);
   forEachTile(
-      apron, threads,
+      corners.corners, static_cast<int>(workers.size()),
       [&](int index, const PixelRegion& tile) {
         Worker& worker = workers[index];
         MediumStack media = tracer.eyeMedia();
         int n = tile.width();
         glm::dvec2 at[kTileSize];
-        SampleColour samples[kTileSize];
         for (int j = tile.y0; j < tile.y1; ++j) {
           if (cancel && cancel->requested()) throw RenderCancelled();
-          // The row's centres side by side, as packets.
-          for (int k = 0; k < n; ++k) at[k] = samplePosition(tile.x0 + k, j, 0, 1, settings.seed);
-          tracer.traceSamples(at, n, tracer.tolerance(), media, worker.context, samples);
-          worker.samples += static_cast<std::uint64_t>(n);
-          for (int k = 0; k < n; ++k) {
-            int i = tile.x0 + k;
-            centre(i, j) = lookOf(samples[k].colour, samples[k].object);
-            bool inRegion = i >= region.x0 && i < region.x1 && j >= region.y0 && j < region.y1;
-            if (!inRegion) continue;
-            PixelSamples pixel;
-            pixel.add(samples[k]);
-            writer.store(i, j, tracer.certified(i, j, pixel, media, worker));
+          for (int k = 0; k < n; ++k) at[k] = glm::dvec2(tile.x0 + k, j);
+          std::size_t first = corners.at(tile.x0, j);
+          tracer.traceSamples(at, n, tracer.tolerance(), media, worker.context,
+                              &corners.samples[first]);
+          for (std::size_t c = first; c < first + n; ++c) {
+            corners.looks[c] = lookOf(corners.samples[c].colour, corners.samples[c].object);
           }
+          worker.samples += static_cast<std::uint64_t>(n);
         }
       },
-      firstProgress);
+      progress);
+  return corners;
+}
+
+// Adaptive sampling's pass 2 on one thread: each pixel from its corners, and
+// where they differ from its lattice (PixelLattice), its neighbours' shared
+// points lent (SharedSides).
+class PixelSubdivider {
+ public:
+  PixelSubdivider(const PixelTracer& tracer, const CornerSamples& corners, double threshold,
+                  int depth)
+      : tracer_(tracer),
+        corners_(corners),
+        threshold_(threshold),
+        lattice_(depth),
+        shared_(lattice_.side(), kTileSize),
+        samples_(static_cast<std::size_t>(lattice_.side()) * lattice_.side()) {
+    const int side = lattice_.side(), last = side - 1;
+    cornerPoints_ = {0, last, last * side, last * side + last};
+  }
+
+  void startTile() { shared_.startTile(); }
+  void startRow() { shared_.startRow(); }
+
+  // Pixel (i, j), in `column` of its tile's row, traced at the tolerance.
+  PixelSamples pixel(int i, int j, int column, MediumStack& media, Worker& worker) {
+    const std::size_t own[4] = {corners_.at(i, j), corners_.at(i + 1, j), corners_.at(i, j + 1),
+                                corners_.at(i + 1, j + 1)};
+    SampleSpread spread;
+    for (std::size_t c : own) spread.add(corners_.looks[c]);
+    PixelSamples pixel;
+    if (lattice_.depth() == 0 || !spread.exceeds(threshold_)) {
+      // Corners that agree: their mean, the sums the lattice would make (in
+      // lattice order), without it.
+      shared_.forget(column);
+      points_ = &cornerPoints_;
+      weights_ = &kCornerWeights;
+      for (std::size_t c : own) pixel.add(corners_.samples[c], 0.25);
+      return pixel;
+    }
+    SampleLook looks[4];
+    for (int k = 0; k < 4; ++k) {
+      looks[k] = corners_.looks[own[k]];
+      samples_[cornerPoints_[k]] = corners_.samples[own[k]];
+    }
+    lattice_.start(looks);
+    shared_.lend(column, lattice_, samples_.data());
+    int cuts = lattice_.subdivide(
+        threshold_, [&](const std::vector<int>& points, std::vector<SampleLook>& traced) {
+          trace(i, j, points, tracer_.tolerance(), media, worker);
+          for (std::size_t k = 0; k < points.size(); ++k) {
+            traced[k] = lookOf(samples_[points[k]].colour, samples_[points[k]].object);
+          }
+          worker.samples += points.size();
+        });
+    shared_.keep(column, lattice_, samples_.data());
+    ++worker.refined;
+    if (cuts == lattice_.depth()) ++worker.fullySampled;
+    points_ = &lattice_.points();
+    weights_ = &lattice_.weights();
+    for (std::size_t k = 0; k < points_->size(); ++k) {
+      pixel.add(samples_[(*points_)[k]], (*weights_)[k]);
+    }
+    return pixel;
+  }
+
+  // The last pixel's samples traced again to within `allowed`
+  // (PixelTracer::certified).
+  PixelSamples retrace(int i, int j, double allowed, MediumStack& media, Worker& worker) {
+    trace(i, j, *points_, allowed, media, worker);
+    PixelSamples pixel;
+    for (std::size_t k = 0; k < points_->size(); ++k) {
+      pixel.add(samples_[(*points_)[k]], (*weights_)[k]);
+    }
+    return pixel;
+  }
+
+ private:
+  inline static const std::vector<double> kCornerWeights = std::vector<double>(4, 0.25);
+  const PixelTracer& tracer_;
+  const CornerSamples& corners_;
+  double threshold_;
+  PixelLattice lattice_;
+  SharedSides shared_;
+  std::vector<SampleColour> samples_;  // by lattice point
+  std::vector<int> cornerPoints_;
+  const std::vector<int>* points_ = nullptr;
+  const std::vector<double>* weights_ = nullptr;
+  std::vector<glm::dvec2> at_;
+
+  // The lattice points of pixel (i, j), traced to within `allowed` into
+  // samples_.
+  void trace(int i, int j, const std::vector<int>& points, double allowed, MediumStack& media,
+             Worker& worker) {
+    const int side = lattice_.side();
+    const double step = 1.0 / (side - 1);  // exact: a power of two
+    at_.resize(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      at_[k] = glm::dvec2(i + (points[k] % side) * step, j + (points[k] / side) * step);
+    }
+    SampleColour traced[kTileSize];
+    for (std::size_t first = 0; first < points.size(); first += kTileSize) {
+      int n = static_cast<int>(std::min<std::size_t>(kTileSize, points.size() - first));
+      tracer_.traceSamples(&at_[first], n, allowed, media, worker.context, traced);
+      for (int k = 0; k < n; ++k) samples_[points[first + k]] = traced[k];
+    }
+  }
+};
+
+// Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"). Pass 1
+// traces the corners of every pixel of the region. Pass 2 gives a pixel
+// whose four corners agree their mean, and subdivides the others. Every
+// sample lies at a fixed position and every decision reads only the samples
+// of its own pixel's square, so a pixel is the same whatever the threads or
+// region.
+void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
+                    const RenderSettings& settings, std::vector<Worker>& workers,
+                    const ImageWriter& writer, const ProgressCallback& progress,
+                    const CancelFlag* cancel) {
+  // One progress for both passes.
+  int firstTiles = tileCount(PixelRegion{region.x0, region.y0, region.x1 + 1, region.y1 + 1});
+  int secondTiles = tileCount(region);
+  ProgressCallback firstProgress, secondProgress;
+  if (progress) {
+    firstProgress = [&](int done, int) { progress(done, firstTiles + secondTiles); };
+    secondProgress = [&](int done, int) { progress(firstTiles + done, firstTiles + secondTiles); };
+  }
+  const CornerSamples corners = traceCorners(tracer, region, workers, firstProgress, cancel);
+  const int depth = subdivisionDepth(std::max(1, settings.samplesPerPixel));
+  std::vector<PixelSubdivider> subdividers(
+      workers.size(), PixelSubdivider(tracer, corners, settings.adaptiveThreshold, depth));
   forEachTile(
-      region, threads,
+      region, static_cast<int>(workers.size()),
       [&](int index, const PixelRegion& tile) {
         Worker& worker = workers[index];
+        PixelSubdivider& subdivider = subdividers[index];
         MediumStack media = tracer.eyeMedia();
+        subdivider.startTile();
         for (int j = tile.y0; j < tile.y1; ++j) {
           if (cancel && cancel->requested()) throw RenderCancelled();
+          subdivider.startRow();
           for (int i = tile.x0; i < tile.x1; ++i) {
-            const SampleLook& own = centre(i, j);
-            bool edge = (i > apron.x0 && looksDiffer(own, centre(i - 1, j), threshold)) ||
-                        (i + 1 < apron.x1 && looksDiffer(own, centre(i + 1, j), threshold)) ||
-                        (j > apron.y0 && looksDiffer(own, centre(i, j - 1), threshold)) ||
-                        (j + 1 < apron.y1 && looksDiffer(own, centre(i, j + 1), threshold));
-            if (!edge || levels.empty()) continue;
-            ++worker.refined;
-            for (std::size_t level = 0; level < levels.size(); ++level) {
-              SampleSpread spread;
-              spread.add(own);
-              bool last = level + 1 == levels.size();
-              PixelSamples pixel =
-                  tracer.trace(i, j, levels[level], tracer.tolerance(), media, worker.context,
-                               [&](const SampleColour& sample) {
-                                 if (!last) spread.add(lookOf(sample.colour, sample.object));
-                               });
-              worker.samples += static_cast<std::uint64_t>(levels[level]);
-              if (last || !spread.exceeds(threshold)) {
-                if (last) ++worker.fullySampled;
-                writer.store(i, j, tracer.certified(i, j, pixel, media, worker));
-                break;
-              }
-            }
+            PixelSamples pixel = subdivider.pixel(i, j, i - tile.x0, media, worker);
+            writer.store(i, j, tracer.certified(pixel, worker, [&](double finer) {
+              return subdivider.retrace(i, j, finer, media, worker);
+            }));
           }
         }
       },
@@ -594,28 +702,6 @@ void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
 }
 
 }  // namespace
-
-GpuProbe probeGpu(bool allowCpu) {
-  GpuProbe probe;
-#if SCENEFILE_VULKAN
-  gpu::DeviceProbe found = gpu::VulkanContext::probe(allowCpu);
-  probe.available = found.found;
-  probe.isCpu = found.isCpu;
-  probe.name = found.name;
-  probe.reason = found.reason;
-#else
-  (void)allowCpu;
-  probe.reason = "this build has no Vulkan (configured without SCENEFILE_VULKAN)";
-#endif
-  return probe;
-}
-
-RenderDevice chooseDevice(const RenderSettings& settings) {
-  if (settings.device != RenderDevice::Auto) return settings.device;
-  if (samplesAdaptively(settings)) return RenderDevice::Cpu;
-  if (uniformSampleCount(settings) < kAutoGpuMinSamples) return RenderDevice::Cpu;
-  return probeGpu(false).available ? RenderDevice::Gpu : RenderDevice::Cpu;
-}
 
 namespace {
 

@@ -85,15 +85,12 @@ struct RenderSettings {
   int threads = 0;  // 0: every core
   std::uint64_t seed = 0;
   // Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"): 0
-  // samples every pixel samplesPerPixel times. Above 0, every pixel first
-  // gets its centre sample, and only a pixel whose centre differs from a
-  // neighbour's by more than this (in some channel, in the image's units
-  // 0..1) or shows another object gets samplesPerPixel stratified samples.
+  // samples every pixel samplesPerPixel times. Above 0, every pixel corner
+  // is sampled, a pixel whose four corners agree is their mean, and a square
+  // whose corners differ by more than this (in some channel, in the image's
+  // units 0..1) or show different objects is cut in four, down to
+  // subdivisionDepth(samplesPerPixel) cuts.
   double adaptiveThreshold = 0.0;
-  // Above 1: a refined pixel first gets this many stratified samples, and
-  // samplesPerPixel only where they disagree. 0 (measured better,
-  // docs/RENDERING.md "Adaptive sampling"): straight to samplesPerPixel.
-  int adaptiveFirstLevel = 0;
   // The part of the width x height image to render; empty: all of it. Its
   // pixels are exactly those of the full image's render (a region reaching
   // outside the image is cut to it).
@@ -194,13 +191,14 @@ struct RenderStatistics {
   // 8-bit level (their primary rays count again).
   std::uint64_t retracedPixels = 0;
   // The pixels rendered, and the camera samples traced for them (retraces
-  // aside; with adaptive sampling the centre samples of the apron and the
-  // levels a pixel went past count too): samples / pixels is the mean
-  // samples a pixel.
+  // aside; with adaptive sampling the pixel corners, (width + 1) x
+  // (height + 1), and each lattice point a pixel traced, a point on the
+  // side of two pixels of different tiles twice): samples / pixels is the
+  // mean samples a pixel.
   std::uint64_t pixels = 0;
   std::uint64_t samples = 0;
-  // Adaptive sampling: the pixels given more than their centre sample, and
-  // those of them given samplesPerPixel.
+  // Adaptive sampling: the pixels cut (whose corners differ), and those of
+  // them cut somewhere to the finest squares.
   std::uint64_t refinedPixels = 0;
   std::uint64_t fullySampledPixels = 0;
   // The GPU path's device (empty on the CPU), and the parts of `seconds`:

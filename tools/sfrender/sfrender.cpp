@@ -91,8 +91,9 @@ std::string statisticsText(const render::RenderStatistics& s,
     line << std::setprecision(2) << "sfrender: adaptive sampling refined "
          << withThousands(s.refinedPixels) << " of " << withThousands(s.pixels) << " pixels ("
          << (s.pixels > 0 ? 100.0 * s.refinedPixels / s.pixels : 0.0) << "%), "
-         << withThousands(s.fullySampledPixels) << " of them to " << settings.samplesPerPixel
-         << " samples; " << (s.pixels > 0 ? static_cast<double>(s.samples) / s.pixels : 0.0)
+         << withThousands(s.fullySampledPixels) << " of them to squares of 1/"
+         << (1 << render::subdivisionDepth(settings.samplesPerPixel)) << " pixel; "
+         << (s.pixels > 0 ? static_cast<double>(s.samples) / s.pixels : 0.0)
          << " samples a pixel on average\n";
   }
   return line.str();

@@ -57,10 +57,10 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
   app.add_option("--seed", o.settings.seed, "seed of the sample positions")
       ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--adaptive", o.settings.adaptiveThreshold,
-                 "adaptive anti-aliasing: every pixel gets its centre sample, and only one whose "
-                 "centre differs from a neighbour's by more than THRESHOLD (above 0, at most 1, "
-                 "in any channel; 0.03 is a good start) or shows another object gets the --spp "
-                 "stratified samples; with --spp 1 nothing is refined")
+                 "adaptive anti-aliasing: every pixel corner is sampled, and a square whose "
+                 "corners differ by more than THRESHOLD (above 0, at most 1, in any channel; 0.03 "
+                 "is a good start) or show different objects is cut in four, until a pixel holds "
+                 "at most --spp squares (16: 4x4, 64: 8x8); with --spp 1 nothing is refined")
       ->option_text("THRESHOLD")
       ->default_str("")  // 0, uniform sampling, is what leaving it out gives
       ->check(numberIn(0, 1))
