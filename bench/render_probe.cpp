@@ -4,8 +4,9 @@
 //   render_probe time SCENE [--width W --height H --spp S --depth D --threads T
 //                            --packets 0|1]
 //       Reads SCENE (any format sfrender reads), then times apart, on one
-//       process: parsing (scene::parseScene on the file in memory), building
-//       the render scene and its BVH (render::RenderScene construction), and
+//       process: parsing (scene::parseScene on the file in memory, on T
+//       threads), building the render scene and its BVH
+//       (render::RenderScene construction), and
 //       rendering (render::renderImage). Prints "key: value" lines:
 //       file_bytes, objects, parse_s, build_s, render_s, primary_rays,
 //       total_rays, ns_per_primary_ray (render wall time over primary rays,
@@ -75,8 +76,10 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
   buffer << in.rdbuf();
   const std::string text = buffer.str();
 
+  scene::ReadOptions read;
+  read.threads = static_cast<unsigned>(std::max(0, settings.threads));
   auto t0 = Clock::now();
-  scene::ReadResult result = scene::parseScene(text, path);
+  scene::ReadResult result = scene::parseScene(text, path, read);
   const double parse = since(t0);
   if (!result.ok()) {
     std::cerr << "render_probe: " << path << " has errors\n";

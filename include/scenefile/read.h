@@ -39,6 +39,10 @@ struct ReadOptions {
   std::uint64_t maxFileSize = kDefaultMaxFileSize;
   /// Reading stops at the first object or light past this (too-many-objects).
   std::size_t maxObjects = kDefaultMaxObjects;
+  /// The threads a reader may use: 0, every core; 1, the caller's alone.
+  /// Only the scene file reader uses more than one, on files of 4 MiB and
+  /// more; the result is the same at any count.
+  unsigned threads = 0;
   /// Scene files (.sf).
   SceneFileReadOptions sceneFile;
   /// glTF 2.0 (.gltf, .glb).

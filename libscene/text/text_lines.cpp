@@ -7,8 +7,9 @@
 
 namespace scene {
 
-LineCursor::LineCursor(std::string_view text) : text_(text) {
-  if (text_.starts_with("\xEF\xBB\xBF")) offset_ = 3;
+LineCursor::LineCursor(std::string_view text, std::uint32_t firstLine)
+    : text_(text), lineNumber_(firstLine - 1) {
+  if (firstLine == 1 && text_.starts_with("\xEF\xBB\xBF")) offset_ = 3;
 }
 
 bool LineCursor::nextLine() {

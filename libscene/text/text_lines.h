@@ -27,7 +27,9 @@ class LineCursor {
  public:
   static constexpr std::size_t kMaxTokens = 16;
 
-  explicit LineCursor(std::string_view text);
+  // `firstLine`: the number of the text's first line, for a text that is a
+  // part of a larger one (its lines counted from 1 otherwise).
+  explicit LineCursor(std::string_view text, std::uint32_t firstLine = 1);
 
   // Moves to the next line; false once the text is used up.
   bool next() {

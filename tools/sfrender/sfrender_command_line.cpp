@@ -37,7 +37,7 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
       ->check(wholeNumberIn(1, kSppCeiling));
   app.add_option("--depth", o.settings.maxDepth, "bounces of reflection and refraction")
       ->check(wholeNumberIn(0, kDepthCeiling));
-  app.add_option("--threads", o.settings.threads, "threads to render with (0: every core)")
+  app.add_option("--threads", o.settings.threads, "threads to read and render with (0: every core)")
       ->check(wholeNumberIn(0, 1024));
   app.add_option_function<std::string>(
          "--device",

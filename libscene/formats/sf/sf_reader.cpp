@@ -3,7 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <exception>
+#include <iterator>
 #include <optional>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 #include "libscene/text/reader_support.h"
 #include "libscene/text/text_lines.h"
@@ -67,15 +72,47 @@ std::size_t estimateRecords(std::string_view text) {
   return std::min<std::size_t>(count, std::size_t{1} << 22);
 }
 
+// What the parse of one part of a file (parseSceneFileInParts) found that
+// the whole-file checks need.
+struct PartFacts {
+  bool anyRecord = false;
+  bool firstIsCamera = false;
+  bool cameraNamed = false;
+  std::size_t objectsSeen = 0;
+};
+
 class SceneFileParser {
  public:
   SceneFileParser(std::string_view text, const ReadOptions& options, ReadResult& result)
-      : cursor_(text), options_(options), scene_(result.scene), out_(result.diagnostics) {
-    scene_.objects.reserve(std::min(estimateRecords(text), options.maxObjects));
+      : SceneFileParser(text, options, result, 1, estimateRecords(text)) {}
+
+  // A part of a file (parseSceneFileInParts): `firstLine` is the number of
+  // its first line in the file, and `records` the records to make room for.
+  SceneFileParser(std::string_view text, const ReadOptions& options, ReadResult& result,
+                  std::uint32_t firstLine, std::size_t records)
+      : cursor_(text, firstLine),
+        options_(options),
+        scene_(result.scene),
+        out_(result.diagnostics) {
+    scene_.objects.reserve(std::min(records, options.maxObjects));
   }
 
   void run() {
-    while (!out_.full() && !stopped_ && pull()) {
+    readRecords();
+    finish();
+  }
+
+  // Reads the text as a part of a file: its records, without the checks
+  // that need the whole file, up to the first diagnostic of any kind.
+  PartFacts runPart() {
+    stopAtDiagnostic_ = true;
+    readRecords();
+    return PartFacts{firstRecord_.has_value(), firstIsCamera_, cameraNamed_, objectsSeen_};
+  }
+
+ private:
+  void readRecords() {
+    while (!out_.full() && !stopped_ && !(stopAtDiagnostic_ && !out_.empty()) && pull()) {
       if (cursor_.blank() || reportComment(cursor_, out_)) continue;
       if (reportInvalidByte(cursor_, out_)) {
         // Most likely a damaged record name: its body follows, and reading
@@ -86,10 +123,8 @@ class SceneFileParser {
       }
       parseRecord();
     }
-    finish();
   }
 
- private:
   // The next line, or the one a truncated record left for the next record.
   bool pull() {
     if (pending_) {
@@ -116,8 +151,7 @@ class SceneFileParser {
       }
       reportUnknownKeyword(cursor_, 0, kRecordNames, kExpectedRecord, out_);
       // "sphere" is still a sphere for the rest of the checks.
-      if (auto guess = suggestKeyword(name, kRecordNames);
-          guess && guess->size() == name.size()) {
+      if (auto guess = suggestKeyword(name, kRecordNames); guess && guess->size() == name.size()) {
         kind = recordKindFromName(*guess);
       }
     }
@@ -303,6 +337,7 @@ class SceneFileParser {
   // Objects and lights named so far, read or not, against maxObjects.
   std::size_t objectsSeen_ = 0;
   bool stopped_ = false;  // past maxObjects: nothing more is read
+  bool stopAtDiagnostic_ = false;
   std::optional<SourceSpan> firstRecord_;
   bool firstIsCamera_ = false;
   std::string firstName_;
@@ -312,9 +347,137 @@ class SceneFileParser {
   RecordSpans spans_;
 };
 
+// Where a file is cut into `parts` parts: at the start of a
+// line that starts with a capital letter (a record name, in a valid file)
+// at or after each k / parts of the way; fewer parts where no such line is
+// found. The first part starts at 0, and the last ends at the text's end.
+std::vector<std::size_t> partStarts(std::string_view text, unsigned parts) {
+  std::vector<std::size_t> starts{0};
+  for (unsigned k = 1; k < parts; ++k) {
+    std::size_t at = std::max(starts.back() + 1, text.size() / parts * k);
+    while (at < text.size()) {
+      at = text.find('\n', at);
+      if (at == std::string_view::npos || at + 1 >= text.size()) {
+        at = text.size();
+        break;
+      }
+      ++at;
+      if (text[at] >= 'A' && text[at] <= 'Z') break;
+    }
+    if (at >= text.size()) break;
+    starts.push_back(at);
+  }
+  return starts;
+}
+
+// Runs work(k) for k in [0, count), k = 0 on the calling thread and each
+// other on a thread of its own, and waits for all. False where a thread
+// could not start (the others are waited for, and their work is to be
+// dropped); the first exception a work threw is thrown again.
+template <typename Work>
+bool runOnThreads(std::size_t count, Work&& work) {
+  std::vector<std::exception_ptr> failures(count);
+  auto guarded = [&](std::size_t k) {
+    try {
+      work(k);
+    } catch (...) {
+      failures[k] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> threads;
+  bool started = true;
+  try {
+    for (std::size_t k = 1; k < count; ++k) threads.emplace_back(guarded, k);
+  } catch (const std::system_error&) {
+    started = false;
+  }
+  if (started) guarded(0);
+  for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+  return started;
+}
+
 }  // namespace
 
+std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::string fileName,
+                                                const ReadOptions& options, unsigned parts) {
+  std::vector<std::size_t> starts = partStarts(text, parts);
+  if (starts.size() < 2) return std::nullopt;
+  starts.push_back(text.size());
+  const std::size_t count = starts.size() - 1;
+  auto part = [&](std::size_t k) { return text.substr(starts[k], starts[k + 1] - starts[k]); };
+
+  // First each part's lines and records, for where the next parts' lines
+  // start and for the room the first part makes for the whole file's
+  // objects (moving them into a vector of their own costs a tenth of the
+  // reading).
+  std::vector<std::uint32_t> lines(count, 0);
+  std::vector<std::size_t> records(count, 0);
+  bool counted = runOnThreads(count, [&](std::size_t k) {
+    std::string_view p = part(k);
+    lines[k] = static_cast<std::uint32_t>(std::count(p.begin(), p.end(), '\n'));
+    records[k] = estimateRecords(p);
+  });
+  if (!counted) return std::nullopt;
+  std::vector<std::uint32_t> firstLine(count, 1);
+  std::size_t allRecords = records[0];
+  for (std::size_t k = 1; k < count; ++k) {
+    firstLine[k] = firstLine[k - 1] + lines[k - 1];
+    allRecords += records[k];
+  }
+
+  // Then the parts themselves. A part stops at its first diagnostic: any
+  // diagnostic sends the file to the whole-file reader, whose diagnostics
+  // are the ones reported.
+  std::vector<ReadResult> results;
+  results.reserve(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    results.push_back(ReadResult{Scene{}, DiagnosticList(fileName, options.errorLimit)});
+  }
+  std::vector<PartFacts> facts(count);
+  bool read = runOnThreads(count, [&](std::size_t k) {
+    facts[k] = SceneFileParser(part(k), options, results[k], firstLine[k],
+                               k == 0 ? allRecords : records[k])
+                   .runPart();
+  });
+  if (!read) return std::nullopt;
+
+  // The parts make the file's scene only where each read cleanly, the CAMERA
+  // came first in the first part and nowhere else, and all of them together
+  // hold no more objects than allowed.
+  std::size_t objectsSeen = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (!results[k].diagnostics.empty() || !facts[k].anyRecord) return std::nullopt;
+    if (k == 0 ? !facts[k].firstIsCamera : facts[k].cameraNamed) return std::nullopt;
+    objectsSeen += facts[k].objectsSeen;
+  }
+  if (objectsSeen > options.maxObjects) return std::nullopt;
+  ReadResult merged{std::move(results[0].scene),
+                    DiagnosticList(std::move(fileName), options.errorLimit)};
+  for (std::size_t k = 1; k < count; ++k) {
+    Scene& scene = results[k].scene;
+    merged.scene.lights.insert(merged.scene.lights.end(), scene.lights.begin(), scene.lights.end());
+    merged.scene.objects.insert(merged.scene.objects.end(),
+                                std::make_move_iterator(scene.objects.begin()),
+                                std::make_move_iterator(scene.objects.end()));
+  }
+  // The whole-file check of a clean file (SceneFileParser::finish).
+  checkSceneLevel(merged.scene, merged.diagnostics);
+  return merged;
+}
+
 ReadResult parseSceneFile(std::string_view text, std::string fileName, const ReadOptions& options) {
+  unsigned threads = options.threads > 0 ? options.threads : std::thread::hardware_concurrency();
+  // A part of 1 MiB at least: the threads cost more than they save below.
+  unsigned parts =
+      static_cast<unsigned>(std::min<std::size_t>(std::max(threads, 1u), text.size() >> 20));
+  if (text.size() >= kMinBytesInParts && parts > 1) {
+    if (std::optional<ReadResult> read = parseSceneFileInParts(text, fileName, options, parts)) {
+      return std::move(*read);
+    }
+  }
   ReadResult result{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
   SceneFileParser(text, options, result).run();
   return result;
