@@ -61,8 +61,9 @@ class Bvh {
   explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
 
   /// The most bytes the build over `boxes` boxes holds at once: the nodes
-  /// as reserved (kNodesPerBox), the items, the centres it splits by, which
-  /// it frees when done, and its list of subtrees for the threads. The
+  /// as reserved (kNodesPerBox), the items, a copy of each box beside its
+  /// index that it splits (freed when done), and its list of subtrees for
+  /// the threads. The
   /// boxes themselves are the caller's. Saturates: a hostile count gives
   /// UINT64_MAX, never a wrapped figure.
   static std::uint64_t bytesFor(std::uint64_t boxes);

@@ -47,9 +47,10 @@ TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
                              2 * sizeof(std::uint32_t)) +
                          7 * sizeof(RenderLight));
-  // At least the nodes, items, centres and boxes; the rest is the
-  // threads' list of subtrees, a few bytes a box.
-  std::uint64_t parts = 1000 * (2 * sizeof(Bounds) + sizeof(glm::dvec3) + 2 * sizeof(BvhNode) +
+  // At least the nodes, items and boxes, and the build's copy of each box
+  // beside its index (padded to 8 bytes); the rest is the threads' list of
+  // subtrees, a few bytes a box.
+  std::uint64_t parts = 1000 * (2 * sizeof(Bounds) + (sizeof(Bounds) + 8) + 2 * sizeof(BvhNode) +
                                 sizeof(std::uint32_t));
   // And 7 lights' grids of 128 cells a side: per cell its start, count and
   // full flag, per entry an index (16 a box, plus one a cell, at most), and
