@@ -638,6 +638,7 @@ class PixelSubdivider {
   const std::vector<int>* points_ = nullptr;
   const std::vector<double>* weights_ = nullptr;
   std::vector<glm::dvec2> at_;
+  std::vector<SampleColour> traced_;
 
   // The lattice points of pixel (i, j), traced to within `allowed` into
   // samples_.
@@ -649,12 +650,14 @@ class PixelSubdivider {
     for (std::size_t k = 0; k < points.size(); ++k) {
       at_[k] = glm::dvec2(i + (points[k] % side) * step, j + (points[k] / side) * step);
     }
-    SampleColour traced[kTileSize];
+    // Traced straight into a buffer kept from call to call: an array here
+    // would initialise its 32 samples on every call, a level of a pixel.
+    traced_.resize(points.size());
     for (std::size_t first = 0; first < points.size(); first += kTileSize) {
       int n = static_cast<int>(std::min<std::size_t>(kTileSize, points.size() - first));
-      tracer_.traceSamples(&at_[first], n, allowed, media, worker.context, traced);
-      for (int k = 0; k < n; ++k) samples_[points[first + k]] = traced[k];
+      tracer_.traceSamples(&at_[first], n, allowed, media, worker.context, &traced_[first]);
     }
+    for (std::size_t k = 0; k < points.size(); ++k) samples_[points[k]] = traced_[k];
   }
 };
 
