@@ -520,13 +520,19 @@ struct CornerSamples {
   }
 };
 
+// The corners of the pixels of `region` as a region of their own: one more
+// column and row than the pixels.
+PixelRegion cornersOf(const PixelRegion& region) {
+  return PixelRegion{region.x0, region.y0, region.x1 + 1, region.y1 + 1};
+}
+
 // Adaptive sampling's pass 1: the corners of the pixels of `region`, traced
 // a row of a tile at a time, as packets.
 CornerSamples traceCorners(const PixelTracer& tracer, const PixelRegion& region,
                            std::vector<Worker>& workers, const ProgressCallback& progress,
                            const CancelFlag* cancel) {
   CornerSamples corners;
-  corners.corners = PixelRegion{region.x0, region.y0, region.x1 + 1, region.y1 + 1};
+  corners.corners = cornersOf(region);
   std::size_t count = static_cast<std::size_t>(corners.corners.width()) * corners.corners.height();
   corners.samples.resize(count);
   corners.looks.resize(count);
@@ -579,13 +585,13 @@ class PixelSubdivider {
                                 corners_.at(i + 1, j + 1)};
     SampleSpread spread;
     for (std::size_t c : own) spread.add(corners_.looks[c]);
-    PixelSamples pixel;
     if (lattice_.depth() == 0 || !spread.exceeds(threshold_)) {
       // Corners that agree: their mean, the sums the lattice would make (in
       // lattice order), without it.
       shared_.forget(column);
       points_ = &cornerPoints_;
       weights_ = &kCornerWeights;
+      PixelSamples pixel;
       for (std::size_t c : own) pixel.add(corners_.samples[c], 0.25);
       return pixel;
     }
@@ -609,21 +615,14 @@ class PixelSubdivider {
     if (cuts == lattice_.depth()) ++worker.fullySampled;
     points_ = &lattice_.points();
     weights_ = &lattice_.weights();
-    for (std::size_t k = 0; k < points_->size(); ++k) {
-      pixel.add(samples_[(*points_)[k]], (*weights_)[k]);
-    }
-    return pixel;
+    return weightedMean();
   }
 
   // The last pixel's samples traced again to within `allowed`
   // (PixelTracer::certified).
   PixelSamples retrace(int i, int j, double allowed, MediumStack& media, Worker& worker) {
     trace(i, j, *points_, allowed, media, worker);
-    PixelSamples pixel;
-    for (std::size_t k = 0; k < points_->size(); ++k) {
-      pixel.add(samples_[(*points_)[k]], (*weights_)[k]);
-    }
-    return pixel;
+    return weightedMean();
   }
 
  private:
@@ -639,6 +638,16 @@ class PixelSubdivider {
   const std::vector<double>* weights_ = nullptr;
   std::vector<glm::dvec2> at_;
   std::vector<SampleColour> traced_;
+
+  // The mean of the last pixel's points (points_) with their weights, in
+  // lattice order.
+  PixelSamples weightedMean() const {
+    PixelSamples pixel;
+    for (std::size_t k = 0; k < points_->size(); ++k) {
+      pixel.add(samples_[(*points_)[k]], (*weights_)[k]);
+    }
+    return pixel;
+  }
 
   // The lattice points of pixel (i, j), traced to within `allowed` into
   // samples_.
@@ -672,7 +681,7 @@ void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
                     const ImageWriter& writer, const ProgressCallback& progress,
                     const CancelFlag* cancel) {
   // One progress for both passes.
-  int firstTiles = tileCount(PixelRegion{region.x0, region.y0, region.x1 + 1, region.y1 + 1});
+  int firstTiles = tileCount(cornersOf(region));
   int secondTiles = tileCount(region);
   ProgressCallback firstProgress, secondProgress;
   if (progress) {

@@ -180,7 +180,7 @@ std::optional<int> Renderer::readScene() {
   }
   // A big scene file is read on the render's threads too.
   scene::ReadOptions read = o_.read;
-  read.threads = static_cast<unsigned>(std::max(0, o_.settings.threads));
+  read.threads = static_cast<unsigned>(renderThreadCount(o_.settings.threads));
   scene::ReadResult result = scene::parseScene(*text.text, shown, read);
   if (result.scene.outputFile && o_.output.empty()) {
     // OUTPUT_FILE is the instruction file's to choose, inside its folder
