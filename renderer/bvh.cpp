@@ -2,14 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <optional>
-#include <system_error>
 #include <thread>
 #include <vector>
 
+#include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
 
 namespace render {
@@ -149,31 +149,60 @@ struct Subtree {
 };
 
 // Past this many subtrees the top of the tree stops splitting, which bounds
-// the list (Bvh::bytesFor): each split still pending on the recursion, at
-// most kMaxRecursion of them, then adds one more.
-constexpr std::size_t kSubtreeBudget = Bvh::kTasksPerThread * Bvh::kMaxBuildThreads * 2;
-constexpr std::size_t kMaxRecursion = 128;
-constexpr std::size_t kMaxSubtrees = kSubtreeBudget + kMaxRecursion;
+// the list (Bvh::bytesFor).
+constexpr std::size_t kMaxSubtrees = Bvh::kTasksPerThread * Bvh::kMaxBuildThreads * 2;
 // Below this many boxes one thread builds it all: starting threads would
 // cost more than they save.
 constexpr std::uint32_t kMinParallelBoxes = 16384;
 
-// The top of the tree, above the subtrees of at most `largest` items: its
-// nodes are built here, at the indices they would have if every subtree
-// took all it may; returns the index past the subtree's reserved nodes.
-std::uint32_t planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
-                      std::uint32_t at, std::uint32_t begin, std::uint32_t end, int depth) {
-  std::uint32_t count = end - begin;
-  if (count <= largest || subtrees.size() >= kSubtreeBudget) {
-    subtrees.push_back(Subtree{begin, end, depth, at, 0});
-    return at + 2 * count - 1;
+// A range of items at the top of the tree, waiting for its node at `at`.
+struct TopRange {
+  std::uint32_t at = 0;
+  std::uint32_t begin = 0;
+  std::uint32_t end = 0;
+  int depth = 0;
+};
+
+// The top of the tree, above the subtrees of at most `largest` items (and
+// above kMaxDepth, where buildSubtree makes the leaves), built a level at a
+// time, the splits of a level side by side on `threads` threads. Each node
+// sits where it would if every subtree took all it may: a range of c items
+// keeps 2c - 1 nodes, so the second child of a split at `at` is at
+// at + 2 (mid - begin). Leaves `subtrees` in node order.
+void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
+             std::uint32_t count, int threads) {
+  std::vector<TopRange> level{TopRange{0, 0, count, 0}};
+  std::vector<TopRange> splitting, next;
+  std::vector<std::uint32_t> mids;
+  while (!level.empty()) {
+    // A split adds a range: at most kMaxSubtrees of them in all.
+    bool room = subtrees.size() + 2 * level.size() <= kMaxSubtrees;
+    splitting.clear();
+    for (const TopRange& r : level) {
+      if (!room || r.end - r.begin <= largest || r.depth >= kMaxDepth) {
+        subtrees.push_back(Subtree{r.begin, r.end, r.depth, r.at, 0});
+      } else {
+        splitting.push_back(r);
+      }
+    }
+    // More than one item below kMaxDepth: splitNode splits, never a leaf.
+    mids.assign(splitting.size(), 0);
+    runParts(splitting.size(), threads, [&](std::size_t k) {
+      const TopRange& r = splitting[k];
+      mids[k] = *splitNode(in, in.nodes[r.at], r.begin, r.end, r.depth);
+    });
+    next.clear();
+    for (std::size_t k = 0; k < splitting.size(); ++k) {
+      const TopRange& r = splitting[k];
+      std::uint32_t second = r.at + 2 * (mids[k] - r.begin);
+      in.nodes[r.at].offset = second;
+      next.push_back(TopRange{r.at + 1, r.begin, mids[k], r.depth + 1});
+      next.push_back(TopRange{second, mids[k], r.end, r.depth + 1});
+    }
+    level.swap(next);
   }
-  BvhNode& node = in.nodes[at];
-  std::optional<std::uint32_t> mid = splitNode(in, node, begin, end, depth);
-  if (!mid) return at + 1;
-  std::uint32_t second = planTop(in, largest, subtrees, at + 1, begin, *mid, depth + 1);
-  node.offset = second;
-  return planTop(in, largest, subtrees, second, *mid, end, depth + 1);
+  std::sort(subtrees.begin(), subtrees.end(),
+            [](const Subtree& a, const Subtree& b) { return a.at < b.at; });
 }
 
 // Builds the subtrees on `threads` threads (this one among them), largest
@@ -188,24 +217,10 @@ void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int thr
     std::uint32_t sizeB = subtrees[b].end - subtrees[b].begin;
     return sizeA != sizeB ? sizeA > sizeB : a < b;
   });
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i = next++; i < order.size(); i = next++) {
-      Subtree& s = subtrees[order[i]];
-      s.used = buildSubtree(in, s.at, s.begin, s.end, s.depth) - s.at;
-    }
-  };
-  std::vector<std::thread> helpers;
-  helpers.reserve(static_cast<std::size_t>(threads) - 1);
-  for (int t = 1; t < threads; ++t) {
-    try {
-      helpers.emplace_back(work);
-    } catch (const std::system_error&) {
-      break;  // fewer threads: this one takes what the others would have
-    }
-  }
-  work();
-  for (std::thread& helper : helpers) helper.join();
+  runParts(order.size(), threads, [&](std::size_t k) {
+    Subtree& s = subtrees[order[k]];
+    s.used = buildSubtree(in, s.at, s.begin, s.end, s.depth) - s.at;
+  });
 }
 
 // Closes the gaps that subtrees taking fewer nodes than kept for them left
@@ -254,8 +269,14 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
   // for kMinParallelBoxes boxes or more, so a share of a few bytes a box
   // covers them.
   constexpr std::uint64_t kSubtreeBytes = sizeof(Subtree) + 3 * sizeof(std::uint32_t);
+  // planTop's levels: at most 2 kMaxSubtrees ranges in each of its three
+  // lists, a split point for each, and runParts' slot for a part's
+  // exception.
+  constexpr std::uint64_t kLevelBytes =
+      2 * kMaxSubtrees *
+      (3 * sizeof(TopRange) + sizeof(std::uint32_t) + sizeof(std::exception_ptr));
   constexpr std::uint64_t kParallelBytes =
-      kMaxSubtrees * kSubtreeBytes + kMaxBuildThreads * sizeof(std::thread);
+      kMaxSubtrees * kSubtreeBytes + kLevelBytes + kMaxBuildThreads * sizeof(std::thread);
   constexpr std::uint64_t kSubtreeShare =
       (kParallelBytes + kMinParallelBoxes - 1) / kMinParallelBoxes;
   std::uint64_t perBox =
@@ -291,9 +312,9 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
   std::uint32_t largest = std::max<std::uint32_t>(n / (kTasksPerThread * threads), 1);
   std::vector<Subtree> subtrees;
   subtrees.reserve(kMaxSubtrees);
-  std::uint32_t reserved = planTop(in, largest, subtrees, 0, 0, n, 0);
+  planTop(in, largest, subtrees, n, threads);
   buildSubtrees(in, subtrees, threads);
-  nodes_.resize(closeGaps(nodes_, subtrees, reserved));
+  nodes_.resize(closeGaps(nodes_, subtrees, 2 * n - 1));
   keepOrder();
 }
 
