@@ -4,9 +4,11 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <optional>
 
 #include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
+#include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
 
@@ -63,8 +65,9 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
                               saturatingProduct(lights, sizeof(RenderLight)));
   bytes.bvh = saturatingSum(saturatingProduct(objects, 2 * sizeof(Bounds)), Bvh::bytesFor(objects));
   // The lights' grids (DirectionGrid::bytes, bounded by its limits), and
-  // while one is built, each box's cell ranges (at most one a window, in a
-  // vector that may double) and the leaf of each item.
+  // while they are built (kGridsBuiltAtOnce at a time), each one's cell
+  // ranges of each box (at most one a window, in a vector that may double),
+  // and the leaf of each item.
   std::uint64_t grids = std::min<std::uint64_t>(lights, kMaxLightGrids);
   if (objects >= kMinGridObjects && grids > 0) {
     DirectionGrid::Limits limits;
@@ -75,9 +78,10 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
                  saturatingProduct(limits.perCell, cells));
     std::uint64_t perGrid = saturatingSum(saturatingProduct(cells, 9 + sizeof(std::uint32_t)),
                                           saturatingProduct(entries, sizeof(std::uint32_t)));
-    std::uint64_t building =
-        saturatingProduct(objects, 2 * DirectionGrid::kMaxWindows * DirectionGrid::kRangeBytes +
-                                       sizeof(std::uint32_t));
+    std::uint64_t atOnce = std::min<std::uint64_t>(grids, kGridsBuiltAtOnce);
+    std::uint64_t building = saturatingProduct(
+        objects, atOnce * 2 * DirectionGrid::kMaxWindows * DirectionGrid::kRangeBytes +
+                     sizeof(std::uint32_t));
     bytes.bvh =
         saturatingSum(bytes.bvh, saturatingSum(saturatingProduct(grids, perGrid), building));
   }
@@ -87,28 +91,39 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
 
 RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids)
     : camera_(scene.camera) {
+  threads = resolveThreads(threads);
   const std::size_t count = scene.objects.size();
   objects_.resize(count);
   linearToWorld_.resize(count);
   materials_.resize(count);
-  std::vector<Bounds> boxes;
+  // Which objects are planes is their kind alone (worldBounds bounds every
+  // other), so each bounded object's box has its place before any is made,
+  // and the records can be made in parts, side by side.
   for (std::uint32_t i = 0; i < count; ++i) {
-    const scene::Object& o = scene.objects[i];
-    glm::dmat3 linear(o.matrix);
-    RenderObject& r = objects_[i];
-    r.kind = o.kind;
-    r.translation = glm::dvec3(o.matrix[3]);
-    r.toLocal = inverse3(linear);
-    linearToWorld_[i] = linear;
-    materials_[i] = o.material;
-    hasTransparency_ |= o.material.transparency > 0.0;
-    if (auto box = worldBounds(o.kind, o.matrix)) {
-      bounded_.push_back(i);
-      boxes.push_back(*box);
-    } else {
-      planes_.push_back(i);
-    }
+    (scene.objects[i].kind == scene::ObjectKind::Plane ? planes_ : bounded_).push_back(i);
   }
+  std::vector<Bounds> boxes(bounded_.size());
+  std::size_t parts = count < kMinParallelObjects ? 1 : static_cast<std::size_t>(threads);
+  std::vector<std::uint8_t> transparent(parts, 0);
+  runParts(parts, threads, [&](std::size_t part) {
+    const std::uint32_t first = static_cast<std::uint32_t>(count * part / parts);
+    const std::uint32_t end = static_cast<std::uint32_t>(count * (part + 1) / parts);
+    std::size_t item = static_cast<std::size_t>(
+        std::lower_bound(bounded_.begin(), bounded_.end(), first) - bounded_.begin());
+    for (std::uint32_t i = first; i < end; ++i) {
+      const scene::Object& o = scene.objects[i];
+      glm::dmat3 linear(o.matrix);
+      RenderObject& r = objects_[i];
+      r.kind = o.kind;
+      r.translation = glm::dvec3(o.matrix[3]);
+      r.toLocal = inverse3(linear);
+      linearToWorld_[i] = linear;
+      materials_[i] = o.material;
+      transparent[part] |= o.material.transparency > 0.0 ? 1 : 0;
+      if (o.kind != scene::ObjectKind::Plane) boxes[item++] = *worldBounds(o.kind, o.matrix);
+    }
+  });
+  hasTransparency_ = std::find(transparent.begin(), transparent.end(), 1) != transparent.end();
   bvh_ = Bvh(boxes, threads);
   lights_.reserve(scene.lights.size());
   for (const scene::Light& light : scene.lights) {
@@ -126,11 +141,16 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
         leafOf_[bvh_.items()[nodes[node].offset + i]] = node;
       }
     }
+    // The grids are independent: up to kGridsBuiltAtOnce at a time (what
+    // bytesFor counts), each built by one thread as it would be alone.
     int resolution = lightGridResolution(boxes.size());
-    for (std::size_t i = 0; i < lights_.size() && i < kMaxLightGrids; ++i) {
-      lightGrids_.push_back(DirectionGrid::cubeAround(lights_[i].position, boxes, resolution,
-                                                      DirectionGrid::Limits{}));
-    }
+    std::vector<std::optional<DirectionGrid>> grids(std::min(lights_.size(), kMaxLightGrids));
+    runParts(grids.size(), std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
+      grids[i].emplace(DirectionGrid::cubeAround(lights_[i].position, boxes, resolution,
+                                                 DirectionGrid::Limits{}));
+    });
+    lightGrids_.reserve(grids.size());
+    for (std::optional<DirectionGrid>& grid : grids) lightGrids_.push_back(std::move(*grid));
   }
 }
 

@@ -160,6 +160,11 @@ class RenderScene {
     return light < lightGrids_.size() && lightGrids_[light].built() ? &lightGrids_[light] : nullptr;
   }
   static constexpr std::size_t kMaxLightGrids = 8;
+  // The lights' grids built side by side, on as many threads, at most.
+  static constexpr int kGridsBuiltAtOnce = 2;
+  // Scenes with fewer objects make their records on one thread: starting
+  // more would cost about what they save.
+  static constexpr std::size_t kMinParallelObjects = 16384;
   // Scenes with fewer bounded objects have no grids.
   static constexpr std::size_t kMinGridObjects = 64;
   // The cells a side of each face of a light's grid for a scene of
