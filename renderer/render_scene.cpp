@@ -91,7 +91,8 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
 
 RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids)
     : camera_(scene.camera) {
-  threads = resolveThreads(threads);
+  // As many as the BVH's build starts, at most.
+  threads = std::min(resolveThreads(threads), Bvh::kMaxBuildThreads);
   const std::size_t count = scene.objects.size();
   objects_.resize(count);
   linearToWorld_.resize(count);
