@@ -286,8 +286,7 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
 
 Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
   if (boxes.empty()) return;
-  if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::clamp(threads, 1, kMaxBuildThreads);
+  threads = std::min(resolveThreads(threads), kMaxBuildThreads);
   const std::uint32_t n = static_cast<std::uint32_t>(boxes.size());
   if (n < kMinParallelBoxes) threads = 1;
   std::vector<BuildItem> items(n);

@@ -16,6 +16,7 @@
 #if SCENEFILE_VULKAN
 #include "renderer/gpu/gpu_render.h"
 #endif
+#include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
 #include "scenefile/matrix.h"
 
@@ -131,11 +132,6 @@ bool oneLevel(const glm::dvec3& v, double slack, double levels) {
     }
   }
   return true;
-}
-
-int threadCount(int requested) {
-  if (requested > 0) return requested;
-  return std::max(1u, std::thread::hardware_concurrency());
 }
 
 }  // namespace
@@ -748,7 +744,7 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
   std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
 
   PixelTracer tracer(scene, settings);
-  std::vector<Worker> workers(threadCount(settings.threads));
+  std::vector<Worker> workers(resolveThreads(settings.threads));
   ImageWriter writer(image);
   if (samplesAdaptively(settings)) {
     renderAdaptive(tracer, region, settings, workers, writer, progress, cancel);
@@ -788,7 +784,7 @@ std::vector<std::int32_t> renderObjectIds(const RenderScene& scene,
   std::vector<std::int32_t> ids(static_cast<std::size_t>(settings.width) * settings.height, -1);
   PinholeCamera camera(scene.camera(), settings);
   forEachTile(
-      PixelRegion{0, 0, settings.width, settings.height}, threadCount(settings.threads),
+      PixelRegion{0, 0, settings.width, settings.height}, resolveThreads(settings.threads),
       [&](int, const PixelRegion& tile) {
         for (int j = tile.y0; j < tile.y1; ++j) {
           for (int i = tile.x0; i < tile.x1; ++i) {

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
-#include <optional>
 
 #include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
@@ -55,9 +54,9 @@ std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
 RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t lights) {
   // The vectors of the constructor below. objects_, linearToWorld_,
   // materials_ and lights_ are sized once. bounded_ and planes_ hold one
-  // index an object between them, and the boxes one box a bounded object;
-  // both grow by doubling, so the boxes are counted twice over, and the
-  // indices (4 bytes beside some 450 an object) once.
+  // index an object between them, growing by doubling (4 bytes beside some
+  // 450 an object: counted once), and the boxes one box a bounded object,
+  // sized once but counted twice over, as when they too grew by doubling.
   Bytes bytes;
   std::uint64_t perObject =
       sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) + sizeof(std::uint32_t);
@@ -145,13 +144,11 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     // The grids are independent: up to kGridsBuiltAtOnce at a time (what
     // bytesFor counts), each built by one thread as it would be alone.
     int resolution = lightGridResolution(boxes.size());
-    std::vector<std::optional<DirectionGrid>> grids(std::min(lights_.size(), kMaxLightGrids));
-    runParts(grids.size(), std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
-      grids[i].emplace(DirectionGrid::cubeAround(lights_[i].position, boxes, resolution,
-                                                 DirectionGrid::Limits{}));
+    lightGrids_.resize(std::min(lights_.size(), kMaxLightGrids));
+    runParts(lightGrids_.size(), std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
+      lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, resolution,
+                                                 DirectionGrid::Limits{});
     });
-    lightGrids_.reserve(grids.size());
-    for (std::optional<DirectionGrid>& grid : grids) lightGrids_.push_back(std::move(*grid));
   }
 }
 

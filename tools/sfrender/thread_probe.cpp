@@ -7,11 +7,12 @@
 #include <thread>
 #include <vector>
 
+#include "renderer/parallel_parts.h"
+
 namespace tools {
 
 int renderThreadCount(int requested) {
-  if (requested > 0) return requested;
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return render::resolveThreads(requested);
 }
 
 std::optional<std::string> threadStartFailure(int threads) {
