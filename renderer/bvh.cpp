@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "renderer/huge_pages.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
 
@@ -291,12 +292,14 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
   if (n < kMinParallelBoxes) threads = 1;
   std::vector<BuildItem> items(n);
   for (std::uint32_t i = 0; i < n; ++i) items[i] = BuildItem{boxes[i], i};
+  // Read at random by rays: on huge pages (renderer/huge_pages.h).
   nodes_.reserve(kNodesPerBox * n);
+  adviseHugePages(nodes_.data(), nodes_.capacity() * sizeof(BvhNode));
   nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
   BuildInput in{items.data(), nodes_.data()};
   // The items in the order the build left them, which the leaves index.
   auto keepOrder = [&] {
-    items_.resize(n);
+    resizeOnHugePages(items_, n);
     for (std::uint32_t i = 0; i < n; ++i) items_[i] = items[i].index;
   };
   if (threads == 1) {

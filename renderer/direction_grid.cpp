@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "renderer/huge_pages.h"
 #include "renderer/saturating.h"
 
 namespace render {
@@ -120,8 +121,9 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
 
   // Step 4: the lists, a full cell's left empty; counts becomes each
   // cell's next free place.
-  full_.assign(cells, 0);
-  start_.assign(cells + 1, 0);
+  // Read at random by rays: on huge pages (renderer/huge_pages.h).
+  resizeOnHugePages(full_, cells);
+  resizeOnHugePages(start_, cells + 1);
   std::uint64_t total = 0;
   for (std::uint64_t c = 0; c < cells; ++c) {
     start_[c] = static_cast<std::uint32_t>(total);
@@ -133,7 +135,7 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
     counts[c] = start_[c];
   }
   start_[cells] = static_cast<std::uint32_t>(total);
-  items_.resize(total);
+  resizeOnHugePages(items_, total);
   for (std::uint32_t i = 0; i < boxes.size(); ++i) {
     for (std::uint32_t r = firstRange[i]; r < firstRange[i + 1]; ++r) {
       forEachCell(ranges[r], [&](std::uint64_t cell) {
