@@ -1,6 +1,7 @@
 // Whitted ray tracing with the Phong model of RENDERING.md.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -17,6 +18,20 @@ namespace render {
 class MediumStack {
  public:
   static constexpr int kCapacity = 64;
+
+  MediumStack() = default;
+  // Copies carry the solids on the stack and nothing past them, which is
+  // never read: a copy is made per camera sample (of the camera's media,
+  // mostly none) and per refraction, and copying the whole array cost a
+  // tenth of the render of the default scene.
+  MediumStack(const MediumStack& other) : size_(other.size_) {
+    std::copy_n(other.objects_.begin(), size_, objects_.begin());
+  }
+  MediumStack& operator=(const MediumStack& other) {
+    size_ = other.size_;
+    std::copy_n(other.objects_.begin(), size_, objects_.begin());
+    return *this;
+  }
 
   void push(std::uint32_t object) {
     if (size_ < kCapacity) objects_[size_++] = object;

@@ -204,5 +204,45 @@ TEST(Tracing, DepthLimitReturnsBlack) {
   }
 }
 
+// Copies carry only the solids on the stack: what a copy answers, and what
+// it answers after its own pushes and removals, is what the original would,
+// and the original does not change with it.
+TEST(MediumStack, ACopyHoldsTheSameSolidsAndGoesItsOwnWay) {
+  scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+  for (double ri : {1.1, 1.2, 1.3, 1.4}) {
+    scene::Material glass = flat({1, 1, 1}, 0.0);
+    glass.transparency = 0.9;
+    glass.ri = ri;
+    s.objects.push_back(object(ObjectKind::Sphere, {}, glass));
+  }
+  RenderScene compiled(s);
+  MediumStack three;
+  for (std::uint32_t object : {0u, 1u, 2u}) three.push(object);
+
+  MediumStack copied(three);
+  EXPECT_EQ(copied.size(), 3);
+  EXPECT_EQ(copied.refractiveIndex(compiled), 1.3);
+  // Assigned over a deeper stack: the deeper one's solids are gone.
+  MediumStack assigned;
+  for (std::uint32_t object : {3u, 3u, 3u, 3u, 3u}) assigned.push(object);
+  assigned = three;
+  EXPECT_EQ(assigned.size(), 3);
+  EXPECT_EQ(assigned.refractiveIndex(compiled), 1.3);
+  // The order came with them: removing the innermost leaves the one below.
+  assigned.remove(2);
+  EXPECT_EQ(assigned.refractiveIndex(compiled), 1.2);
+  assigned.remove(0);
+  assigned.remove(1);
+  EXPECT_EQ(assigned.size(), 0);
+  EXPECT_EQ(assigned.refractiveIndex(compiled), 1.0);
+  // Assigned the empty stack, a stack is empty.
+  copied = assigned;
+  EXPECT_EQ(copied.size(), 0);
+  EXPECT_EQ(copied.refractiveIndex(compiled), 1.0);
+  // The original kept its solids through all of it.
+  EXPECT_EQ(three.size(), 3);
+  EXPECT_EQ(three.refractiveIndex(compiled), 1.3);
+}
+
 }  // namespace
 }  // namespace render
