@@ -1,13 +1,15 @@
 // Large arrays on 2 MiB pages (Linux transparent huge pages), for the
 // arrays that rays read at random: the objects' records, the BVH and the
 // direction grids. Over tens of megabytes, 4 KiB pages miss the TLB on most
-// reads, and each costs a page walk (two levels of one under a virtual
-// machine); 2 MiB pages also take a 512th of the page faults to fill.
+// reads, and each miss costs a page walk (a walk of two page tables, the
+// guest's and the host's, under a virtual machine); 2 MiB pages also take a
+// 512th of the page faults to fill.
 //
-// Debian's kernels give huge pages only where asked (transparent_hugepage
-// "madvise"), so the arrays ask with madvise(MADV_HUGEPAGE) before their
-// first write. Nothing else changes: where the kernel says no, or on
-// another system, the pages stay small and the contents are the same.
+// Where the kernel gives huge pages only to memory that asks for them
+// (transparent_hugepage "madvise", as on the Debian machines here), the
+// arrays ask with madvise(MADV_HUGEPAGE) before their first write. Nothing
+// else changes: where the kernel says no, or on another system, the pages
+// stay small and the contents are the same.
 #pragma once
 
 #include <cstddef>

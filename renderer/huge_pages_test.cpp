@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,8 +15,8 @@
 namespace render {
 namespace {
 
-// The kernel's mode, "[madvise]" in always [madvise] never, or "" where
-// the file is absent.
+// The kernel's mode, the bracketed word of "always [madvise] never", or ""
+// where the file is absent.
 std::string transparentHugePageMode() {
   std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
