@@ -293,8 +293,7 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
   std::vector<BuildItem> items(n);
   for (std::uint32_t i = 0; i < n; ++i) items[i] = BuildItem{boxes[i], i};
   // Read at random by rays: on huge pages (renderer/huge_pages.h).
-  nodes_.reserve(kNodesPerBox * n);
-  adviseHugePages(nodes_.data(), nodes_.capacity() * sizeof(BvhNode));
+  reserveOnHugePages(nodes_, kNodesPerBox * n);
   nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
   BuildInput in{items.data(), nodes_.data()};
   // The items in the order the build left them, which the leaves index.

@@ -26,15 +26,21 @@ inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
 /// fewer than kHugePageBytes bytes or where the system has no such advice.
 bool adviseHugePages(void* data, std::size_t bytes);
 
-/// Sizes `v` to `count` value-initialized elements, its storage advised
-/// onto huge pages before they are written. Only an empty vector's storage
-/// is advised: one already holding elements is resized as it is.
+/// Reserves room for `capacity` elements in `v`, that storage advised onto
+/// huge pages before anything is written to it. Only an empty vector's new
+/// storage is advised: one already holding elements is reserved as it is.
+template <class T>
+void reserveOnHugePages(std::vector<T>& v, std::size_t capacity) {
+  bool fresh = v.empty() && v.capacity() < capacity;
+  v.reserve(capacity);
+  if (fresh) adviseHugePages(v.data(), v.capacity() * sizeof(T));
+}
+
+/// Sizes `v` to `count` value-initialized elements, on storage reserved by
+/// reserveOnHugePages.
 template <class T>
 void resizeOnHugePages(std::vector<T>& v, std::size_t count) {
-  if (v.empty() && v.capacity() < count) {
-    v.reserve(count);
-    adviseHugePages(v.data(), v.capacity() * sizeof(T));
-  }
+  reserveOnHugePages(v, count);
   v.resize(count);
 }
 
