@@ -419,7 +419,7 @@ class PixelTracer {
   // made the render slower, not faster.
   void buildEyeGrid() {
     std::uint64_t objects = scene_.boundedObjects().size();
-    if (objects < RenderScene::kMinGridObjects || uniformSampleCount(settings_) < 4 * objects) {
+    if (objects < RenderScene::kMinEyeGridObjects || uniformSampleCount(settings_) < 4 * objects) {
       return;
     }
     // Cells of 4 pixels a side, or of 2 where there is more than an object

@@ -69,7 +69,7 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
   // ranges of each box (at most one a window, in a vector that may double),
   // and the leaf of each item.
   std::uint64_t grids = std::min<std::uint64_t>(lights, kMaxLightGrids);
-  if (objects >= kMinGridObjects && grids > 0) {
+  if (objects >= kMinLightGridObjects && grids > 0) {
     DirectionGrid::Limits limits;
     std::uint64_t side = static_cast<std::uint64_t>(lightGridResolution(objects));
     std::uint64_t cells = DirectionGrid::kMaxWindows * side * side + 1;
@@ -132,8 +132,8 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     lights_.push_back(RenderLight{light.position(), light.colour});
   }
   // A grid per light, for its shadow rays (docs/RENDERING.md, "Direction
-  // grids"); not for a scene so small that the BVH is as quick.
-  if (lightGrids && boxes.size() >= kMinGridObjects) {
+  // grids"); not for a scene of planes alone, which has nothing to list.
+  if (lightGrids && boxes.size() >= kMinLightGridObjects) {
     // Each item's leaf, whose box the grids' shadow rays test first
     // (meetsItemBox): nothing else reads it.
     leafOf_.resize(boxes.size());
@@ -229,6 +229,9 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
 }
 
 int RenderScene::lightGridResolution(std::uint64_t bounded) {
+  // Below 64 objects, 32 a side (80 KB a grid rather than 1.3 MB) answer
+  // within 2% of the instructions of 128 (callgrind, 5 to 50 objects).
+  if (bounded < 64) return 32;
   double side = 4.0 * std::sqrt(static_cast<double>(bounded));
   return static_cast<int>(std::clamp(side, 128.0, 512.0));
 }
