@@ -166,7 +166,7 @@ class RenderScene {
   // more would cost about what they save.
   static constexpr std::size_t kMinParallelObjects = 16384;
   // Scenes with fewer bounded objects have no light grids: any bounded
-  // object pays for them. At 5 to 50 objects they take 10% to 19% of the
+  // object pays for them. At 5 to 50 objects they take 10% to 18% of the
   // instructions off a render (callgrind); their build is a millisecond.
   static constexpr std::size_t kMinLightGridObjects = 1;
   // Renders of scenes with fewer bounded objects have no eye grid: below
