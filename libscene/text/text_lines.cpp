@@ -1,5 +1,6 @@
 #include "libscene/text/text_lines.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstring>
@@ -102,16 +103,37 @@ std::string describeInvalidByte(unsigned char byte) {
 namespace scene {
 
 std::optional<std::string_view> firstWordOutsideComments(std::string_view text) {
+  // Only the first word of a line is looked at, so the rest is not split
+  // into tokens: a hostile first line of 100 MB would cost a pass per
+  // format that detects itself by it.
   LineCursor cursor(text);
-  while (cursor.next()) {
-    if (cursor.blank()) continue;
-    std::string_view first = cursor.token(0).text;
+  auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  while (cursor.nextLine()) {
+    std::string_view line = cursor.line();
+    std::size_t start = 0;
+    while (start < line.size() && blank(line[start])) ++start;
+    if (start == line.size()) continue;
+    std::size_t end = start;
+    while (end < line.size() && !blank(line[end])) ++end;
+    std::string_view first = line.substr(start, end - start);
     // Comments are errors in both line formats, which the reader reports;
     // they say nothing about which format this is.
     if (first.starts_with("#") || first.starts_with("//")) continue;
     return first;
   }
   return std::nullopt;
+}
+
+SourceSpan LineColumnCounter::at(std::size_t byte) {
+  byte = std::min(byte, text_.size());
+  if (byte < scanned_) *this = LineColumnCounter(text_);
+  while (const void* newline = std::memchr(text_.data() + scanned_, '\n', byte - scanned_)) {
+    scanned_ = static_cast<std::size_t>(static_cast<const char*>(newline) - text_.data()) + 1;
+    lineStart_ = scanned_;
+    ++line_;
+  }
+  scanned_ = byte;
+  return SourceSpan{line_, static_cast<std::uint32_t>(byte - lineStart_ + 1), 0};
 }
 
 bool startsWithIgnoringCase(std::string_view text, std::string_view prefix) {

@@ -94,6 +94,24 @@ namespace scene {
 // Nothing when the text has no such line.
 std::optional<std::string_view> firstWordOutsideComments(std::string_view text);
 
+// Lines and columns (1-based, in bytes) of byte offsets into a text, for a
+// reader that knows where something is by its offset (a JSON parser's). Asked
+// in increasing order, the offsets cost one pass over the text in all, by
+// memchr from line end to line end.
+class LineColumnCounter {
+ public:
+  explicit LineColumnCounter(std::string_view text) : text_(text) {}
+
+  // The span, of no length, at byte `byte` (the end of the text past it).
+  SourceSpan at(std::size_t byte);
+
+ private:
+  std::string_view text_;
+  std::size_t scanned_ = 0;    // every newline before this offset is counted
+  std::size_t lineStart_ = 0;  // the offset of the line scanned_ is on
+  std::uint32_t line_ = 1;
+};
+
 // Whether `text` starts with `prefix`, which is in upper case, in any case.
 bool startsWithIgnoringCase(std::string_view text, std::string_view prefix);
 

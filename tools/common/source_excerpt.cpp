@@ -153,10 +153,16 @@ void SourceExcerpts::capture(std::string_view file, std::string_view text,
     // The readers skip a byte-order mark, and their columns count from
     // after it.
     if (w.line == 1 && whole.starts_with("\xEF\xBB\xBF")) whole.remove_prefix(3);
-    if (looksBinary(whole)) continue;
     std::uint32_t keyColumn = whole.size() <= kWholeLine ? 0 : w.column;
     Key key{std::string(file), {w.line, keyColumn}};
-    if (!lines_.contains(key)) lines_.emplace(key, excerpt(whole, w.column));
+    if (lines_.contains(key)) continue;
+    // Whether it is text is judged on what would be quoted, not the whole
+    // line: a hostile line of 100 MB costs a look at 160 bytes, not a pass
+    // over all of it (sfcheck on one: 1.68 -> 0.25 s, 22 -> 0.8 s under
+    // the sanitizers).
+    SourceLine line = excerpt(whole, w.column);
+    if (looksBinary(line.text)) continue;
+    lines_.emplace(std::move(key), std::move(line));
   }
 }
 

@@ -75,6 +75,14 @@ TEST(SourceExcerpt, ALongLineIsQuotedAroundTheColumnOnly) {
 TEST(SourceExcerpt, BinaryLinesAndMissingLinesAreNotQuoted) {
   EXPECT_TRUE(quote(std::string("glTF\x02\0\0\0", 8), {1, 1, 4}).empty());
   EXPECT_TRUE(quote("\xDC\x04\xAA\x1F\xAD\x1DZ\xDA\xE5\n", {1, 1, 1}).empty());
+  // A long line is judged on the window that would be quoted: bytes far
+  // from the column neither hide a text window nor show a binary one.
+  std::string text(100000, 'x');
+  text.replace(10, 8, std::string("\x01\x02\x03\x04\x05\x06\0\x07", 8));
+  EXPECT_EQ(quote(text + "\n", {1, 70001, 3}).size(), 2u);
+  std::string bytes(100000, '\x01');
+  bytes.replace(90000, 3, "nan");
+  EXPECT_TRUE(quote(bytes + "\n", {1, 90001, 3}).empty());
   EXPECT_TRUE(quote("one line\n", {5, 1, 1}).empty());
   EXPECT_TRUE(quote("one line\n", {}).empty());
 }

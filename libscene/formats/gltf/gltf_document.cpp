@@ -10,6 +10,7 @@
 
 #include "libscene/formats/gltf/gltf_json_scan.h"
 #include "libscene/formats/gltf/gltf_mapping.h"
+#include "libscene/text/text_lines.h"
 
 namespace scene::gltf {
 
@@ -564,18 +565,9 @@ void reportProblems(const std::vector<DocumentProblem>& problems, std::string_vi
   // Lines and columns of every offset in one sweep.
   std::map<std::size_t, SourceSpan> spans;
   for (const auto& [pointer, byte] : at) spans.emplace(byte, SourceSpan{});
-  SourceSpan span{1, 1, 0};
-  std::size_t i = 0;
+  LineColumnCounter counter(text);
   for (auto& [byte, s] : spans) {
-    for (; i < byte; ++i) {
-      if (text[i] == '\n') {
-        ++span.line;
-        span.column = 1;
-      } else {
-        ++span.column;
-      }
-    }
-    s = span;
+    s = counter.at(byte);
     s.length = 1;
   }
   for (const DocumentProblem& p : problems) {

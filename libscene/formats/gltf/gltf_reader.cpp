@@ -15,6 +15,7 @@
 #include "libscene/formats/gltf/gltf_import.h"
 #include "libscene/formats/gltf/gltf_json_scan.h"
 #include "libscene/text/reader_support.h"
+#include "libscene/text/text_lines.h"
 #include "scenefile/read.h"
 #include "scenefile/validation.h"
 
@@ -35,20 +36,6 @@ const std::set<std::string> kReadableRequired = {
 
 // ---------------------------------------------------------------------------
 // The text before tinygltf sees it.
-
-SourceSpan spanAtByte(std::string_view text, std::size_t byte) {
-  byte = std::min(byte, text.size());
-  SourceSpan span{1, 1, 0};
-  for (std::size_t i = 0; i < byte; ++i) {
-    if (text[i] == '\n') {
-      ++span.line;
-      span.column = 1;
-    } else {
-      ++span.column;
-    }
-  }
-  return span;
-}
 
 // nlohmann's message without its "[json.exception...] parse error at line
 // L, column C: " prefix, which the span already says.
@@ -86,7 +73,7 @@ struct JsonText {
   std::string_view spanText() const { return binary ? std::string_view{} : bytes; }
   // Where byte `byte` of the JSON is in the file.
   SourceSpan span(std::size_t byte) const {
-    return binary ? SourceSpan{} : spanAtByte(bytes, byte + offset());
+    return binary ? SourceSpan{} : LineColumnCounter(bytes).at(byte + offset());
   }
 };
 
