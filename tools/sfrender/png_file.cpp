@@ -59,9 +59,9 @@ bool writePng(const PngLevels& levels, png_bytep* rows, PngSink& sink) {
                static_cast<png_uint_32>(levels.height), levels.bits, colourType, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   // Every row with the Sub filter, not libpng's choice per row among all
-  // five: smaller files and a third less time at 1280x720 (the default
-  // scene 108,770 -> 100,199 bytes and 62 -> 42 ms, floor-1000 396,593 ->
-  // 370,731 bytes and 141 -> 102 ms), where the encoding was 10 to 25% of a
+  // five: smaller files and 30% less time at 1280x720 (the default scene
+  // 108,770 -> 100,199 bytes and 62 -> 42 ms, floor-1000 396,593 -> 370,731
+  // bytes and 141 -> 102 ms), where libpng and zlib had been 13% of a
   // 1-sample render's CPU time. docs/RENDERING.md, "Image files".
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
