@@ -2,7 +2,6 @@
 
 #include <tiny_gltf.h>
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
