@@ -1,5 +1,6 @@
 #include "tools/common/command_line.h"
 
+#include <CLI/CLI.hpp>
 #include <cctype>
 #include <charconv>
 #include <string_view>

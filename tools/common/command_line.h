@@ -6,12 +6,12 @@
 //     hint: run 'sfrender --help' for the options
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
 
+#include "tools/common/cli_forward.h"
 #include "tools/common/exit_code.h"
 #include "tools/common/terminal_style.h"
 

@@ -2,12 +2,12 @@
 // flags that raise them, and reading an input file within them.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <istream>
 #include <optional>
 #include <string>
 
 #include "scenefile/read.h"
+#include "tools/common/cli_forward.h"
 
 namespace tools {
 

@@ -1,5 +1,6 @@
 #include "tools/common/option_checks.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <charconv>

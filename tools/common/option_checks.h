@@ -5,10 +5,11 @@
 // in range" of a word that is no number at all.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "tools/common/cli_forward.h"
 
 namespace tools {
 

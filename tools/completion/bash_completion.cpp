@@ -1,5 +1,6 @@
 #include "tools/completion/bash_completion.h"
 
+#include <CLI/CLI.hpp>
 #include <sstream>
 
 #include "tools/common/option_checks.h"

@@ -4,10 +4,11 @@
 // and files by extension where a file belongs.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <map>
 #include <string>
 #include <vector>
+
+#include "tools/common/cli_forward.h"
 
 namespace tools {
 

@@ -1,5 +1,6 @@
 // Writes the bash completion of each tool into a folder, from the tools' own
 // command lines (run at build time): make_completions FOLDER.
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
 #include <iostream>

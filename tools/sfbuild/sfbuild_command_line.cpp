@@ -1,5 +1,7 @@
 #include "tools/sfbuild/sfbuild_command_line.h"
 
+#include <CLI/CLI.hpp>
+
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
 

@@ -2,11 +2,11 @@
 // and completion come from the same place as those of the other tools.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
 
 #include "scenefile/read.h"
+#include "tools/common/cli_forward.h"
 #include "tools/common/command_line.h"
 
 namespace sfbuild {

@@ -1,5 +1,6 @@
 #include "tools/sfcheck/sfcheck.h"
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <sstream>
 #include <string>

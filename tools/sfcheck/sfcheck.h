@@ -1,13 +1,13 @@
 // sfcheck: validates scene files and instruction files.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "scenefile/read.h"
+#include "tools/common/cli_forward.h"
 #include "tools/common/command_line.h"
 #include "tools/common/tool_streams.h"
 

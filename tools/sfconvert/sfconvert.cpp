@@ -1,5 +1,6 @@
 #include "tools/sfconvert/sfconvert.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <filesystem>
 #include <sstream>

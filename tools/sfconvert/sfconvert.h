@@ -1,7 +1,6 @@
 // sfconvert: converts between the project's scene formats.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -10,6 +9,7 @@
 
 #include "scenefile/mesh.h"
 #include "scenefile/read.h"
+#include "tools/common/cli_forward.h"
 #include "tools/common/command_line.h"
 #include "tools/common/tool_streams.h"
 

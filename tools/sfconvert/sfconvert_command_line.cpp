@@ -1,4 +1,5 @@
 // sfconvert's options: what --help, the man page and the completion show.
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 

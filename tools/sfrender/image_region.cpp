@@ -1,5 +1,6 @@
 #include "tools/sfrender/image_region.h"
 
+#include <CLI/CLI.hpp>
 #include <charconv>
 #include <vector>
 

@@ -2,11 +2,11 @@
 // (docs/RENDERING.md, "Regions and tiles").
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
 #include "renderer/render.h"
+#include "tools/common/cli_forward.h"
 
 namespace tools {
 

@@ -1,5 +1,6 @@
 #include "tools/sfrender/sfrender.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

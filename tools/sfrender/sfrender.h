@@ -1,7 +1,6 @@
 // sfrender: ray traces a scene file, an instruction file or the default scene.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -12,6 +11,7 @@
 #include "renderer/render.h"
 #include "renderer/render_memory.h"
 #include "scenefile/read.h"
+#include "tools/common/cli_forward.h"
 #include "tools/common/command_line.h"
 #include "tools/common/tool_streams.h"
 #include "tools/sfrender/image_formats.h"

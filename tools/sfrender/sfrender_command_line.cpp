@@ -1,4 +1,5 @@
 // sfrender's options: what --help, the man page and the completion show.
+#include <CLI/CLI.hpp>
 #include <map>
 #include <string>
 
