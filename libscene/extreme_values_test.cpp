@@ -16,13 +16,14 @@
 #include <string>
 #include <string_view>
 
-#include "scenefile/convert.h"
 #include "libscene/formats/instruction/instruction_writer.h"
 #include "libscene/formats/pov/pov_writer.h"
-#include "libscene/testing/random_scenes.h"
-#include "scenefile/read.h"
 #include "libscene/formats/sf/sf_writer.h"
+#include "libscene/testing/random_cases.h"
+#include "libscene/testing/random_scenes.h"
+#include "scenefile/convert.h"
 #include "scenefile/matrix.h"
+#include "scenefile/read.h"
 #include "scenefile/transform.h"
 
 namespace scene {
@@ -191,8 +192,7 @@ void checkSceneFileScene(const Scene& scene, int index, std::map<Format, Tally>&
 // POV-Ray with every bit, and through an instruction file as the same text.
 void checkInstructionScene(const Scene& scene, int index, std::map<Format, Tally>& tally) {
   const std::string text = instructionText(scene);
-  for (Format format :
-       {Format::InstructionFile, Format::Gltf, Format::Glb, Format::Pov}) {
+  for (Format format : {Format::InstructionFile, Format::Gltf, Format::Glb, Format::Pov}) {
     Through t = through(scene, format, approximate());
     Tally& counts = tally[format];
     ASSERT_TRUE(t.written) << "scene " << index << " " << nameFor(format) << ": "
@@ -215,8 +215,8 @@ TEST(ExtremeValues, RandomScenesAtTheLimitsOfTheDoublesSurviveEveryWriter) {
   int instructionScenes = 0;
   int invalid = 0;
   std::map<std::string, int> limitNumbers;
-  for (int i = 0; checked < 1000; ++i) {
-    ASSERT_LT(i, 10000) << "too many random scenes were invalid";
+  for (int i = 0; checked < testing::randomCases(1000); ++i) {
+    ASSERT_LT(i, testing::randomCases(10000)) << "too many random scenes were invalid";
     Scene generated = random.limitScene();
     // Only what a scene file may hold (sums of translations can overflow,
     // products of scales leave the condition number above 1e12).
@@ -341,8 +341,7 @@ TEST(ExtremeValues, NegativeZeroMaterialValuesComeBackThroughEveryFormat) {
   ReadResult read = parseScene(text, "negative-zero.txt");
   ASSERT_TRUE(read.ok()) << firstError(read.diagnostics);
   ASSERT_TRUE(std::signbit(read.scene.objects[0].material.transparency));
-  for (Format format :
-       {Format::InstructionFile, Format::Gltf, Format::Glb, Format::Pov}) {
+  for (Format format : {Format::InstructionFile, Format::Gltf, Format::Glb, Format::Pov}) {
     Through t = through(read.scene, format);
     ASSERT_TRUE(t.written) << nameFor(format) << ": " << firstError(t.diagnostics);
     ASSERT_TRUE(t.back && t.back->ok());

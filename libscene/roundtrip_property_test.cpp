@@ -8,12 +8,13 @@
 #include <random>
 #include <string>
 
-#include "scenefile/convert.h"
 #include "libscene/formats/instruction/instruction_writer.h"
 #include "libscene/formats/pov/pov_reader.h"
 #include "libscene/formats/pov/pov_writer.h"
-#include "scenefile/read.h"
 #include "libscene/formats/sf/sf_writer.h"
+#include "libscene/testing/random_cases.h"
+#include "scenefile/convert.h"
+#include "scenefile/read.h"
 #include "scenefile/transform.h"
 
 namespace scene {
@@ -46,7 +47,9 @@ class RandomScenes {
 
   double nonNegative() { return std::abs(anyValue()) * (rng_() % 2 ? 1.0 : 0.0) + unit(); }
   double unit() { return uniform(0.0, 1.0); }
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
   double angle() {
     switch (rng_() % 5) {
       case 0:
@@ -175,7 +178,8 @@ TEST(RoundTripProperty, SceneFileWriteReadWriteIsByteIdentical) {
     std::string first = writeSceneFile(scene);
     ReadResult read = parseScene(first, "random.sf");
     ASSERT_TRUE(read.ok()) << "scene " << i << ": " << read.diagnostics.items().front().message
-                           << "\n" << first;
+                           << "\n"
+                           << first;
     ASSERT_EQ(read.scene, scene) << "scene " << i;
     ASSERT_EQ(writeSceneFile(read.scene), first) << "scene " << i;
   }
@@ -223,7 +227,7 @@ TEST(RoundTripProperty, InstructionPovInstructionIsByteIdentical) {
 TEST(RoundTripProperty, TransformListsSurviveInstructionSceneInstructionScene) {
   RandomScenes random(7);
   double worst = 0.0;
-  for (int i = 0; i < 10000; ++i) {
+  for (int i = 0; i < testing::randomCases(10000); ++i) {
     Scene scene = random.instructionScene(false);
     // instruction -> .sf
     DiagnosticList diagnostics;

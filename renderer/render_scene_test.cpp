@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "libscene/testing/random_cases.h"
 #include "renderer/float_error.h"
 #include "renderer/test_scenes.h"
 #include "renderer/tracer.h"
@@ -157,7 +158,7 @@ TEST(Bvh, HitsAreIdenticalToBruteForce) {
                            random.uniform(-spread, spread))}));
     }
     RenderScene compiled(s);
-    for (int r = 0; r < size.rays; ++r) {
+    for (int r = 0; r < scene::testing::randomCases(size.rays); ++r) {
       glm::dvec3 origin(random.uniform(-2, 2) * spread, random.uniform(-2, 2) * spread,
                         random.uniform(-2, 2) * spread);
       glm::dvec3 d = random.direction();
@@ -173,7 +174,7 @@ TEST(Bvh, HitsAreIdenticalToBruteForce) {
       ++total;
     }
   }
-  EXPECT_EQ(total, 1000000);
+  EXPECT_EQ(total, scene::testing::randomCases(1000000));
 }
 
 TEST(RestingOnAPlane, NoLightGapAtTheContact) {

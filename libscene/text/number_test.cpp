@@ -12,6 +12,8 @@
 #include <system_error>
 #include <vector>
 
+#include "libscene/testing/random_cases.h"
+
 namespace scene {
 namespace {
 
@@ -35,9 +37,9 @@ TEST(ParseNumber, KeepsTheSignOfZero) {
 }
 
 TEST(ParseNumber, RejectsWhatIsNotADecimalLiteral) {
-  for (const char* text : {"nan", "inf", "-inf", "NaN", "infinity", "0x1p3", "1,5", "1.0f",
-                           "1.0abc", "", "+", "-", ".", "e5", "1e", "1e+", "++1", "+-1", "--1",
-                           "1..2", "1.2.3", " 1", "1 "}) {
+  for (const char* text :
+       {"nan", "inf", "-inf", "NaN", "infinity", "0x1p3", "1,5", "1.0f", "1.0abc", "",   "+", "-",
+        ".",   "e5",  "1e",   "1e+", "++1",      "+-1",   "--1", "1..2", "1.2.3",  " 1", "1 "}) {
     EXPECT_EQ(parseNumber(text).status, NumberStatus::Syntax) << '"' << text << '"';
   }
 }
@@ -48,8 +50,7 @@ TEST(ParseNumber, TellsOverflowFromUnderflow) {
   EXPECT_EQ(parseNumber("1.7976931348623159e308").status, NumberStatus::Overflow);
   EXPECT_EQ(parseNumber("1.7976931348623157e308").status, NumberStatus::Ok);
   EXPECT_EQ(parseNumber("1e-400").status, NumberStatus::Underflow);
-  EXPECT_EQ(parseNumber("0.0000000000000000000000000000001e-300").status,
-            NumberStatus::Underflow);
+  EXPECT_EQ(parseNumber("0.0000000000000000000000000000001e-300").status, NumberStatus::Underflow);
   EXPECT_EQ(parseNumber("0e-400").status, NumberStatus::Ok);  // exactly zero
   EXPECT_EQ(parseNumber("1e99999999999999999999999").status, NumberStatus::Overflow);
   EXPECT_EQ(parseNumber("1e-99999999999999999999999").status, NumberStatus::Underflow);
@@ -164,7 +165,7 @@ TEST(ParseNumber, GivesTheBitsOfFromCharsForAMillionRandomLiterals) {
   // Behind the literal: a blank and more text, so that parseLeadingNumber
   // may read a whole word past a short literal, as it does in a file.
   std::string buffer;
-  for (int i = 0; i < 1'000'000; ++i) {
+  for (int i = 0; i < scene::testing::randomCases(1'000'000); ++i) {
     std::string literal = randomLiteral(rng);
     ASSERT_NO_FATAL_FAILURE(expectSameAsFromChars(literal, parseNumber(literal))) << literal;
 

@@ -9,9 +9,10 @@
 #include <random>
 
 #include "libscene/formats/gltf/gltf_writer.h"
+#include "libscene/testing/random_cases.h"
+#include "libscene/testing/test_support.h"
 #include "scenefile/mesh.h"
 #include "scenefile/read.h"
-#include "libscene/testing/test_support.h"
 
 namespace scene {
 namespace {
@@ -191,7 +192,8 @@ TEST(GltfReader, ReadsExternalBuffersFromItsOwnFolderOnly) {
   GltfWriteOptions options;
   options.externalBuffer = "scene.bin";
   DiagnosticList out;
-  std::optional<GltfFiles> files = writeGltf(original.scene, testing::conversionWith(options), false, out);
+  std::optional<GltfFiles> files =
+      writeGltf(original.scene, testing::conversionWith(options), false, out);
   ASSERT_TRUE(files);
   std::ofstream(dir / "scene.bin", std::ios::binary) << files->buffer;
   std::ofstream(dir / "inner" / "scene.gltf", std::ios::binary) << files->main;
@@ -262,7 +264,8 @@ TEST(GltfReader, AnExternalBufferLargerThanMaxFileSizeIsNotRead) {
   GltfWriteOptions write;
   write.externalBuffer = "scene.bin";
   DiagnosticList out;
-  std::optional<GltfFiles> files = writeGltf(original.scene, testing::conversionWith(write), false, out);
+  std::optional<GltfFiles> files =
+      writeGltf(original.scene, testing::conversionWith(write), false, out);
   ASSERT_TRUE(files);
   std::ofstream(dir / "scene.bin", std::ios::binary) << files->buffer;
   ReadOptions options;
@@ -310,9 +313,10 @@ TEST(GltfReader, SurvivesThousandsOfDamagedFiles) {
     GltfWriteOptions options;
     options.segments = 6;
     DiagnosticList out;
-    std::string file = writeGltf(original.scene, testing::conversionWith(options), binary, out)->main;
+    std::string file =
+        writeGltf(original.scene, testing::conversionWith(options), binary, out)->main;
     int read = 0;
-    for (int i = 0; i < 3000; ++i) {
+    for (int i = 0; i < testing::randomCases(3000); ++i) {
       std::string damaged = file;
       switch (rng() % 4) {
         case 0:

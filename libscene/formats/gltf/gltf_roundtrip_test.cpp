@@ -7,13 +7,14 @@
 #include <sstream>
 #include <string>
 
-#include "scenefile/convert.h"
 #include "libscene/formats/gltf/gltf_reader.h"
 #include "libscene/formats/gltf/gltf_writer.h"
 #include "libscene/formats/instruction/instruction_writer.h"
-#include "libscene/testing/random_scenes.h"
-#include "scenefile/read.h"
 #include "libscene/formats/sf/sf_writer.h"
+#include "libscene/testing/random_cases.h"
+#include "libscene/testing/random_scenes.h"
+#include "scenefile/convert.h"
+#include "scenefile/read.h"
 
 namespace scene {
 namespace {
@@ -76,8 +77,8 @@ TEST(GltfRoundTrip, EveryValidCorpusFileComesBackByteIdentical) {
 TEST(GltfRoundTrip, ThousandsOfRandomScenesComeBackByteIdentical) {
   testing::RandomSceneGenerator random(20261123);
   int checked = 0;
-  for (int i = 0; checked < 1500; ++i) {
-    ASSERT_LT(i, 3000) << "too many random scenes were invalid";
+  for (int i = 0; checked < testing::randomCases(1500); ++i) {
+    ASSERT_LT(i, testing::randomCases(3000)) << "too many random scenes were invalid";
     Scene scene = random.scene();
     std::string sf = writeSceneFile(scene);
     // Only scenes a scene file may hold (a product of scales can leave the

@@ -1,0 +1,28 @@
+// How many random cases a property test draws.
+#pragma once
+
+namespace scene::testing {
+
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kUnderSanitizers = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kUnderSanitizers = true;
+#else
+inline constexpr bool kUnderSanitizers = false;
+#endif
+#else
+inline constexpr bool kUnderSanitizers = false;
+#endif
+
+// `count` in the optimised build of make test, a quarter of it under the
+// sanitizers. There every case runs five to ten times slower, and the five
+// longest property tests took 330 s of the sanitize stage's 540; the
+// sanitizers look for memory errors and undefined behaviour, which the
+// paths of a quarter of the cases reach as well, while the property itself
+// keeps its full count where the suite runs optimised.
+inline constexpr int randomCases(int count) {
+  return kUnderSanitizers ? count / 4 : count;
+}
+
+}  // namespace scene::testing
