@@ -21,13 +21,14 @@
 # +A0.3 +AM2 +R3, the ratio of its CPU time to the time sfrender needs for
 # the same RMSE, interpolated in log-log between sfrender's points.
 #
-# Environment: EQ_WIDTH (1280), EQ_HEIGHT (720), EQ_THREADS (2),
+# Environment: EQ_RUNS (3: the runs of each point, whose median CPU time is
+# quoted), EQ_WIDTH (1280), EQ_HEIGHT (720), EQ_THREADS (2),
 # EQ_SCENES ("floor-1000 default glass-mirror"), EQ_REF_SPP (256),
 # EQ_POV_REF ("+AM2 +A0.0 +R4"), EQ_SPPS ("1 2 4 8 16"),
 # EQ_ADAPTIVE ("0.3:16 0.1:16 0.03:16 0.1:64 0.03:64"), EQ_POV_POINTS ("0.3:2:3 0.3:2:2
 # 0.3:2:4 0.3:1:3 0.1:1:3 0.1:2:3 0.03:1:3 0.03:2:3"), EQ_DIR
 # (/tmp/scenefile-equal-error; never inside the repository). At the
-# defaults it takes about 10 minutes on 2 cores.
+# defaults it takes about 30 minutes on 2 cores (10 a round).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -37,6 +38,7 @@ bin=$build/bin
 width=${EQ_WIDTH:-1280}
 height=${EQ_HEIGHT:-720}
 threads=${EQ_THREADS:-2}
+runs=${EQ_RUNS:-3}
 scenes=${EQ_SCENES:-floor-1000 default glass-mirror}
 ref_spp=${EQ_REF_SPP:-256}
 pov_ref=${EQ_POV_REF:-+AM2 +A0.0 +R4}
@@ -128,32 +130,69 @@ rmse_of() {
 }
 
 # --- The runs: one line per point in the data file ----------------------------
+# Every point runs EQ_RUNS times, in rounds (each round renders every point
+# once), and its CPU time is the median of its runs: single runs on these
+# machines move by a third, and rounds spread each point over the whole run,
+# so that a slow spell weighs on both renderers alike. Both renderers are
+# deterministic here (POV-Ray's anti-aliasing without jitter), so the RMSE
+# is the first round's.
 dat=$work/equal-error.dat
-echo "# scene renderer settings cpu_s rmse   (settings with '_' for spaces; RMSE against the renderer's own reference)" >"$dat"
+times=$work/times.txt
+rmses=$work/rmses.txt
+: >"$times"
+: >"$rmses"
+# point ROUND SCENE WHO SETTINGS IMAGE REFERENCE RUNNER ARGS...: one run of a
+# point, its CPU time kept; in the first round also its RMSE.
+point() {
+  local round=$1 s=$2 who=$3 settings=$4 image=$5 reference=$6 runner=$7
+  shift 7
+  local cpu
+  cpu=$("$runner" "$s" "$image" "$@")
+  echo "$s $who $settings $cpu" >>"$times"
+  if [[ $round == 1 ]]; then
+    echo "$s $who $settings $(rmse_of "$image" "$reference")" >>"$rmses"
+  fi
+}
 declare -A ref_cpu
 for s in $scenes; do
   log "$s: sfrender reference, $ref_spp spp"
   ref_cpu[$s.sf]=$(run_sf "$s" "$s-sf-ref.ppm" --spp "$ref_spp")
-  for spp in $spps; do
-    cpu=$(run_sf "$s" "$s-sf.ppm" --spp "$spp")
-    echo "$s sfrender --spp_$spp $cpu $(rmse_of "$s-sf.ppm" "$s-sf-ref.ppm")" >>"$dat"
-  done
-  if [[ $has_adaptive == yes ]]; then
-    for point in $adaptive_points; do
-      cpu=$(run_sf "$s" "$s-sf.ppm" --adaptive "${point%%:*}" --spp "${point##*:}")
-      echo "$s sfrender-adaptive --adaptive_${point%%:*}_--spp_${point##*:} $cpu $(rmse_of "$s-sf.ppm" "$s-sf-ref.ppm")" >>"$dat"
-    done
-  fi
   log "$s: POV-Ray reference, $pov_ref"
   # shellcheck disable=SC2086 # the settings are several words
   ref_cpu[$s.pov]=$(run_pov "$s" "$s-pov-ref.ppm" $pov_ref)
-  for point in $pov_points; do
-    IFS=: read -r a am r <<<"$point"
-    cpu=$(run_pov "$s" "$s-pov.ppm" "+A$a" "+AM$am" "+R$r")
-    echo "$s povray +A${a}_+AM${am}_+R${r} $cpu $(rmse_of "$s-pov.ppm" "$s-pov-ref.ppm")" >>"$dat"
-  done
-  log "$s: done ($(($(date +%s) - start)) s so far)"
 done
+for round in $(seq 1 "$runs"); do
+  for s in $scenes; do
+    for spp in $spps; do
+      point "$round" "$s" sfrender "--spp_$spp" "$s-sf.ppm" "$s-sf-ref.ppm" run_sf --spp "$spp"
+    done
+    if [[ $has_adaptive == yes ]]; then
+      for p in $adaptive_points; do
+        point "$round" "$s" sfrender-adaptive "--adaptive_${p%%:*}_--spp_${p##*:}" "$s-sf.ppm" \
+          "$s-sf-ref.ppm" run_sf --adaptive "${p%%:*}" --spp "${p##*:}"
+      done
+    fi
+    for p in $pov_points; do
+      IFS=: read -r a am r <<<"$p"
+      point "$round" "$s" povray "+A${a}_+AM${am}_+R${r}" "$s-pov.ppm" "$s-pov-ref.ppm" run_pov \
+        "+A$a" "+AM$am" "+R$r"
+    done
+    log "round $round of $runs, $s: done ($(($(date +%s) - start)) s so far)"
+  done
+done
+# The data file: each point's median CPU time, its RMSE and its runs' range.
+{
+  echo "# scene renderer settings cpu_s rmse cpu_min cpu_max   (settings with '_' for spaces; cpu_s the median of $runs runs; RMSE against the renderer's own reference)"
+  while read -r s who settings e; do
+    awk -v key="$s $who $settings" -v e="$e" '
+      $1 " " $2 " " $3 == key { n++; t[n] = $4 }
+      END {
+        for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (t[j] < t[i]) { x = t[i]; t[i] = t[j]; t[j] = x }
+        median = n % 2 ? t[(n + 1) / 2] : (t[n / 2] + t[n / 2 + 1]) / 2
+        print key, median, e, t[1], t[n]
+      }' "$times"
+  done <"$rmses"
+} >"$dat"
 cp "$dat" "$plots/equal-error.dat"
 load_end=$(cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo unknown)
 
@@ -225,8 +264,10 @@ section=$work/equal-error.md
     "--width $width --height $height --fov 60\`. sfrender's points: \`--spp\` $spps$(
       [[ $has_adaptive == yes ]] && echo " and \`--adaptive T --spp N\` at T:N = $adaptive_points" ||
         echo " (its \`--help\` listed no \`--adaptive\`, so no adaptive points)")." \
-    "POV-Ray's: \`+A\` threshold, \`+AM\` method, \`+R\` depth at A:AM:R = $pov_points. One run" \
-    "per point. Data: \`docs/perf/equal-error.dat\`."
+    "POV-Ray's: \`+A\` threshold, \`+AM\` method, \`+R\` depth at A:AM:R = $pov_points. Each" \
+    "point ran $runs times, in rounds (every point once a round), and its CPU time is the median" \
+    "of its runs (the data file has each point's fastest and slowest run too); the references ran" \
+    "once. Data: \`docs/perf/equal-error.dat\`."
   echo
   echo "*sfrender at this RMSE* is the CPU time sfrender needs for a POV-Ray point's RMSE: on" \
     "the lower envelope of sfrender's points (those that no other point beats on both time and" \
@@ -241,18 +282,18 @@ section=$work/equal-error.md
     echo "References: sfrender \`--spp $ref_spp\` $(fmt 1 "${ref_cpu[$s.sf]}") s of CPU," \
       "POV-Ray \`$pov_ref\` $(fmt 1 "${ref_cpu[$s.pov]}") s."
     echo
-    echo "| renderer | settings | CPU time | RMSE | PSNR | sfrender at this RMSE | POV-Ray / sfrender |"
+    echo "| renderer | settings | CPU time (median; fastest to slowest run) | RMSE | PSNR | sfrender at this RMSE | POV-Ray / sfrender |"
     echo "|---|---|---|---|---|---|---|"
-    while read -r scene who settings cpu e; do
+    while read -r scene who settings cpu e lo hi; do
       [[ $scene == "$s" ]] || continue
       psnr=$(awk -v e="$e" 'BEGIN { if (e > 0) printf "%.1f dB", 20 * log(1 / e) / log(10); else print "exact" }')
       if [[ $who == povray ]]; then
         read -r at how < <(sf_cpu_at "$s" "$e")
         ratio=$(awk -v p="$cpu" -v q="$at" 'BEGIN { if (q > 0) printf "%.2f×", p / q; else print "—" }')
         [[ $how == interpolated ]] || ratio="$ratio ($how)"
-        echo "| POV-Ray | \`${settings//_/ }\` | $(fmt 2 "$cpu") s | $(fmt 5 "$e") | $psnr | $(fmt 2 "$at") s | $ratio |"
+        echo "| POV-Ray | \`${settings//_/ }\` | $(fmt 2 "$cpu") s ($(fmt 2 "$lo") to $(fmt 2 "$hi")) | $(fmt 5 "$e") | $psnr | $(fmt 2 "$at") s | $ratio |"
       else
-        echo "| $who | \`${settings//_/ }\` | $(fmt 2 "$cpu") s | $(fmt 5 "$e") | $psnr | | |"
+        echo "| $who | \`${settings//_/ }\` | $(fmt 2 "$cpu") s ($(fmt 2 "$lo") to $(fmt 2 "$hi")) | $(fmt 5 "$e") | $psnr | | |"
       fi
     done < <(grep -v '^#' "$dat")
     e=$(awk -v s="$s" '$1 == s && $2 == "povray" && $3 == "+A0.3_+AM2_+R3" { print $5 }' "$dat")
