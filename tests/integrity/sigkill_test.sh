@@ -7,7 +7,8 @@
 # Three writers, in turn, each over an older output of its own:
 #   convert  sfconvert of a generated scene file (sfgen, 200,000 objects,
 #            24 MB) to .sf
-#   ppm      sfrender writing a 2000 x 1500 PPM (9 MB) of a sphere on a plane
+#   ppm      sfrender writing a 2000 x 1500 PPM (9 MB; SIGKILL_IMAGE) of a
+#            sphere on a plane
 #   png      sfrender writing the same image as PNG (through OpenImageIO)
 # Each run is killed with SIGKILL after a random delay, and the target must
 # then be byte for byte the old output or the new one (a reference written
@@ -24,7 +25,9 @@
 # 2 ms), and the other 40% a random delay after the start, anywhere up to
 # 1.05 times the run's length.
 #
-# SIGKILL_ITERATIONS (default 100) kills in a row, across the three writers.
+# SIGKILL_ITERATIONS (default 100) kills in a row, across the three writers;
+# SIGKILL_OBJECTS (200000) the generated scene's size, SIGKILL_IMAGE
+# (2000x1500) the render's.
 set -euo pipefail
 
 bin=${1:?usage: sigkill_test.sh BIN_DIR SFGEN WORK_DIR}
@@ -32,6 +35,7 @@ sfgen=${2:?usage: sigkill_test.sh BIN_DIR SFGEN WORK_DIR}
 work=${3:?usage: sigkill_test.sh BIN_DIR SFGEN WORK_DIR}
 iterations=${SIGKILL_ITERATIONS:-100}
 objects=${SIGKILL_OBJECTS:-200000}
+image=${SIGKILL_IMAGE:-2000x1500}
 
 rm -rf "$work"
 mkdir -p "$work"
@@ -77,7 +81,7 @@ PLANE
 0 0 1 0
 0 0 0 1
 EOF
-render=(--width 2000 --height 1500 --spp 1 --depth 2 --quiet)
+render=(--width "${image%x*}" --height "${image#*x}" --spp 1 --depth 2 --quiet)
 small=(--width 64 --height 48 --quiet)
 declare -A new_command old_command target
 target[convert]=convert.sf
