@@ -4,17 +4,17 @@
 #
 #   bash scripts/fuzz.sh [SECONDS] [TARGET...]      (make fuzz, make fuzz-ci)
 #
-# Builds the targets with clang in FUZZ_BUILD_DIR (build-fuzz), then runs
-# each for SECONDS (default 600) in FUZZ_JOBS parallel jobs (default 1; each
-# job runs SECONDS, so a target gets JOBS x SECONDS of fuzzing), the targets
-# side by side, FUZZ_PARALLEL at a time (default: the cores over FUZZ_JOBS). The corpus
-# grows in FUZZ_OUT/fuzz-corpus/NAME (FUZZ_OUT defaults to the build
+# Builds the targets with clang in FUZZ_BUILD_DIR (build-fuzz), then runs each
+# for SECONDS (default 600) in FUZZ_JOBS parallel jobs (default 1; each job
+# runs SECONDS, so a target gets JOBS x SECONDS of fuzzing), the targets side
+# by side, FUZZ_PARALLEL at a time (default: the cores over FUZZ_JOBS). The
+# corpus grows in FUZZ_OUT/fuzz-corpus/NAME (FUZZ_OUT defaults to the build
 # folder), seeded from testdata/ (the folders in fuzz-seeds.txt, written by
-# tests/fuzz/CMakeLists.txt). A crash, a leak, a hang (one input over 10 s)
-# or an input that needs more than 2 GiB is a finding: it lands in
-# FUZZ_OUT/fuzz-findings/NAME/ and the script fails; the summary, with the
-# executions of each target, is FUZZ_OUT/fuzz-summary.txt. A finding, once fixed, goes into testdata/fuzz/NAME/, where
-# the fuzz.replay tests run it in every build.
+# tests/fuzz/CMakeLists.txt). A crash, a leak, a hang (one input over 10 s) or
+# an input that needs more than 2 GiB is a finding: it lands in
+# FUZZ_OUT/fuzz-findings/NAME/ and the script fails; the summary, with the executions of
+# each target, is FUZZ_OUT/fuzz-summary.txt. A finding, once fixed, goes into
+# testdata/fuzz/NAME/, where the fuzz.replay tests run it in every build.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
