@@ -1,14 +1,13 @@
 // sfbuild: the interactive scene builder. GLFW's callbacks become calls on
 // the BuilderState; GlView draws it.
 #include <epoxy/gl.h>
-
-#include <CLI/CLI.hpp>
 // GLFW after the loader, which brings the GL declarations.
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <CLI/CLI.hpp>
 #include <cctype>
 #include <chrono>
 #include <cstdint>
