@@ -5,8 +5,10 @@
 // threads, the tile order or the region rendered.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <glm/common.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -32,8 +34,18 @@ struct SampleLook {
   std::uint32_t object = RaySource::kNone;
 };
 
-// The look of a traced colour and the object its camera ray met.
-SampleLook lookOf(const glm::dvec3& colour, std::uint32_t object);
+// The look of a traced colour and the object its camera ray met. Inline,
+// as SampleSpread's members are: they run for every corner of every pixel.
+inline SampleLook lookOf(const glm::dvec3& colour, std::uint32_t object) {
+  SampleLook look;
+  for (int c = 0; c < 3; ++c) {
+    // NaN, which the image stores as 0, compares as 0 here too.
+    double v = colour[c] == colour[c] ? colour[c] : 0.0;
+    look.colour[c] = static_cast<float>(std::clamp(v, 0.0, 1.0));
+  }
+  look.object = object;
+  return look;
+}
 
 // Whether two samples differ by more than `threshold` in some channel, or
 // show different objects (an edge between two objects of one colour).
@@ -43,8 +55,24 @@ bool looksDiffer(const SampleLook& a, const SampleLook& b, double threshold);
 // looksDiffer says, without keeping them all.
 class SampleSpread {
  public:
-  void add(const SampleLook& look);
-  bool exceeds(double threshold) const;
+  void add(const SampleLook& look) {
+    if (empty_) {
+      low_ = high_ = look.colour;
+      object_ = look.object;
+      empty_ = false;
+      return;
+    }
+    low_ = glm::min(low_, look.colour);
+    high_ = glm::max(high_, look.colour);
+    mixedObjects_ = mixedObjects_ || look.object != object_;
+  }
+  bool exceeds(double threshold) const {
+    if (mixedObjects_) return true;
+    for (int c = 0; c < 3; ++c) {
+      if (static_cast<double>(high_[c]) - low_[c] > threshold) return true;
+    }
+    return false;
+  }
 
  private:
   glm::vec3 low_{0.0f}, high_{0.0f};
