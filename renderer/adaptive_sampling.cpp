@@ -1,7 +1,6 @@
 #include "renderer/adaptive_sampling.h"
 
 #include <algorithm>
-#include <glm/common.hpp>
 
 #include "renderer/saturating.h"
 
