@@ -163,10 +163,57 @@ void SharedSides::keep(int column, const PixelLattice& lattice, const SampleColo
   bottomValid_[column] = 1;
 }
 
-std::uint64_t adaptiveSamplingBytes(int width, int height) {
+TileEdgeCorners::TileEdgeCorners(int x0, int y0, int width, int height, int tileSize)
+    : x0_(x0),
+      y0_(y0),
+      width_(std::max(0, width)),
+      height_(std::max(0, height)),
+      tileSize_(std::max(1, tileSize)) {
+  if (width_ == 0 || height_ == 0) return;
+  samples_.resize(static_cast<std::size_t>(edgeRows()) * (width_ + 1) +
+                  static_cast<std::size_t>(edgeColumns()) * (height_ + 1));
+  // Each edge row in pieces of a tile's width, the last taking the far
+  // corner too.
+  for (int r = 0; r < edgeRows(); ++r) {
+    int y = y0_ + std::min(r * tileSize_, height_);
+    for (int u = 0; u <= width_; u += tileSize_) {
+      int count = std::min(tileSize_, width_ + 1 - u);
+      if (width_ + 1 - (u + count) == 1) ++count;
+      runs_.push_back(Run{x0_ + u, y, false, count});
+      if (u + count > width_) break;
+    }
+  }
+  // Each edge column between each two edge rows.
+  for (int c = 0; c < edgeColumns(); ++c) {
+    int x = x0_ + std::min(c * tileSize_, width_);
+    for (int v = 0; v < height_; v += tileSize_) {
+      int count = std::min(tileSize_, height_ - v) - 1;
+      if (count > 0) runs_.push_back(Run{x, y0_ + v + 1, true, count});
+    }
+  }
+}
+
+std::uint64_t TileEdgeCorners::bytesFor(int width, int height, int tileSize) {
+  auto lines = [&](int side) {
+    return side > 0 ? static_cast<std::uint64_t>((side + tileSize - 1) / tileSize) + 1 : 0;
+  };
   auto corners = [](int side) { return static_cast<std::uint64_t>(side > 0 ? side + 1 : 0); };
-  return saturatingProduct(saturatingProduct(corners(width), corners(height)),
-                           sizeof(SampleColour) + sizeof(SampleLook));
+  std::uint64_t samples = saturatingSum(saturatingProduct(lines(height), corners(width)),
+                                        saturatingProduct(lines(width), corners(height)));
+  // At most one run a tile's side of each line.
+  std::uint64_t runs = saturatingSum(saturatingProduct(lines(height), lines(width)),
+                                     saturatingProduct(lines(width), lines(height)));
+  return saturatingSum(saturatingProduct(samples, sizeof(SampleColour)),
+                       saturatingProduct(runs, sizeof(Run)));
+}
+
+std::uint64_t adaptiveSamplingBytes(int width, int height, int threads, int tileSize) {
+  tileSize = std::max(1, tileSize);
+  std::uint64_t tileCorners = static_cast<std::uint64_t>(tileSize + 1) * (tileSize + 1);
+  std::uint64_t perThread = tileCorners * (sizeof(SampleColour) + sizeof(SampleLook));
+  return saturatingSum(
+      TileEdgeCorners::bytesFor(width, height, tileSize),
+      saturatingProduct(static_cast<std::uint64_t>(std::max(1, threads)), perThread));
 }
 
 }  // namespace render

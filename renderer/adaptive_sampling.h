@@ -178,9 +178,67 @@ class SharedSides {
   std::vector<std::uint8_t> bottomValid_;
 };
 
+// The samples at the pixel corners that lie on the edges of a region's
+// tiles (squares of `tileSize` pixels from the region's top-left corner,
+// cut at its far edges), the corners that neighbouring tiles share: every
+// tile's top and bottom corner rows, and its left and right corner columns.
+// Pass 1 of adaptive sampling traces these once; each tile then traces its
+// own inner corners, so that every corner is traced once, and the image's
+// corners are never all held at once (a tile's are, on its thread).
+class TileEdgeCorners {
+ public:
+  // The region's pixels are [x0, x0 + width) x [y0, y0 + height); its
+  // corners (x, y) run to x0 + width and y0 + height.
+  TileEdgeCorners(int x0, int y0, int width, int height, int tileSize);
+
+  // A run of edge corners traced together: `count` corners from (x, y),
+  // along a row or down a column, kept side by side in memory (samples()).
+  struct Run {
+    int x = 0, y = 0;
+    bool down = false;
+    int count = 0;
+  };
+  // The runs cover every edge corner once: each edge row in pieces of at
+  // most tileSize + 1 corners, and each edge column's stretch inside each
+  // band of tiles (its corners between two edge rows).
+  std::size_t runCount() const { return runs_.size(); }
+  const Run& run(std::size_t index) const { return runs_[index]; }
+  SampleColour* samples(const Run& run) { return &samples_[indexOf(run.x, run.y)]; }
+
+  // The sample of edge corner (x, y): on an edge row, or on an edge column.
+  const SampleColour& sample(int x, int y) const { return samples_[indexOf(x, y)]; }
+  bool onEdgeRow(int y) const { return (y - y0_) % tileSize_ == 0 || y == y0_ + height_; }
+
+  // The bytes an instance holds for such a region (Run list included).
+  static std::uint64_t bytesFor(int width, int height, int tileSize);
+
+ private:
+  int x0_, y0_, width_, height_, tileSize_;
+  // The edge rows, (width + 1) corners each, then the edge columns,
+  // (height + 1) each (their corners on edge rows unused).
+  std::vector<SampleColour> samples_;
+  std::vector<Run> runs_;
+
+  int edgeRows() const { return (height_ + tileSize_ - 1) / tileSize_ + 1; }
+  int edgeColumns() const { return (width_ + tileSize_ - 1) / tileSize_ + 1; }
+  // The index of the edge line through corner coordinate `v` (counted from
+  // the region's first corner) among `count` lines a tile apart, the last
+  // at the far edge.
+  int lineOf(int v, int count) const { return v % tileSize_ == 0 ? v / tileSize_ : count - 1; }
+  std::size_t indexOf(int x, int y) const {
+    int u = x - x0_, v = y - y0_;
+    if (onEdgeRow(y)) {
+      return static_cast<std::size_t>(lineOf(v, edgeRows())) * (width_ + 1) + u;
+    }
+    return static_cast<std::size_t>(edgeRows()) * (width_ + 1) +
+           static_cast<std::size_t>(lineOf(u, edgeColumns())) * (height_ + 1) + v;
+  }
+};
+
 // The bytes adaptive sampling keeps beside the image of a region of
-// `width` x `height` pixels: a SampleColour and its SampleLook for each
-// pixel corner, (width + 1) x (height + 1) of them. Saturates.
-std::uint64_t adaptiveSamplingBytes(int width, int height);
+// `width` x `height` pixels rendered on `threads` threads: the samples of
+// its tiles' edge corners (TileEdgeCorners, tiles of `tileSize`), and for
+// each thread a tile's corners, their samples and looks. Saturates.
+std::uint64_t adaptiveSamplingBytes(int width, int height, int threads, int tileSize);
 
 }  // namespace render

@@ -178,6 +178,72 @@ TEST(AdaptiveSampling, TheSameImageAtAnyThreadCount) {
   }
 }
 
+// The runs of TileEdgeCorners hold every corner on a tile's edge once, and
+// no other, each in a place of its own.
+TEST(AdaptiveSampling, TileEdgeRunsCoverEveryEdgeCornerOnce) {
+  struct Case {
+    int x0, y0, width, height, tile;
+  };
+  for (Case c : {Case{0, 0, 64, 48, 32}, Case{5, 7, 65, 33, 32}, Case{0, 0, 1, 40, 32},
+                 Case{3, 0, 97, 1, 32}, Case{0, 0, 31, 32, 32}, Case{2, 9, 10, 11, 3},
+                 Case{0, 0, 7, 5, 1}}) {
+    TileEdgeCorners edges(c.x0, c.y0, c.width, c.height, c.tile);
+    const int x1 = c.x0 + c.width, y1 = c.y0 + c.height;
+    auto edgeColumn = [&](int x) { return (x - c.x0) % c.tile == 0 || x == x1; };
+    auto edgeRow = [&](int y) { return (y - c.y0) % c.tile == 0 || y == y1; };
+    std::vector<int> seen(static_cast<std::size_t>(c.width + 1) * (c.height + 1), 0);
+    std::vector<const SampleColour*> places;
+    for (std::size_t r = 0; r < edges.runCount(); ++r) {
+      const TileEdgeCorners::Run& run = edges.run(r);
+      SampleColour* samples = edges.samples(run);
+      for (int k = 0; k < run.count; ++k) {
+        int x = run.x + (run.down ? 0 : k), y = run.y + (run.down ? k : 0);
+        ASSERT_TRUE(x >= c.x0 && x <= x1 && y >= c.y0 && y <= y1) << x << "," << y;
+        ASSERT_TRUE(edgeRow(y) || edgeColumn(x)) << x << "," << y;
+        ++seen[static_cast<std::size_t>(y - c.y0) * (c.width + 1) + (x - c.x0)];
+        samples[k].slack = x * 1000.0 + y;
+        ASSERT_EQ(edges.onEdgeRow(y), edgeRow(y)) << y;
+        places.push_back(&edges.sample(x, y));
+        ASSERT_EQ(places.back(), samples + k);
+      }
+    }
+    for (int y = c.y0; y <= y1; ++y) {
+      for (int x = c.x0; x <= x1; ++x) {
+        int expected = edgeRow(y) || edgeColumn(x) ? 1 : 0;
+        ASSERT_EQ(seen[static_cast<std::size_t>(y - c.y0) * (c.width + 1) + (x - c.x0)], expected)
+            << x << "," << y << " of " << c.width << "x" << c.height;
+        if (expected) {
+          ASSERT_EQ(edges.sample(x, y).slack, x * 1000.0 + y);
+        }
+      }
+    }
+    std::sort(places.begin(), places.end());
+    ASSERT_EQ(std::adjacent_find(places.begin(), places.end()), places.end());
+    ASSERT_LE(
+        edges.runCount() * sizeof(TileEdgeCorners::Run) + places.size() * sizeof(SampleColour),
+        TileEdgeCorners::bytesFor(c.width, c.height, c.tile));
+  }
+}
+
+// Pass 1's edge corners and each tile's own: every pixel corner of the
+// region traced once, whatever the threads and the region's size.
+TEST(AdaptiveSampling, EveryPixelCornerIsTracedOnce) {
+  RenderScene compiled(defaultScene());
+  for (auto [width, height] :
+       {std::pair{64, 48}, std::pair{33, 1}, std::pair{1, 65}, std::pair{70, 31}}) {
+    for (int threads : {1, 3}) {
+      RenderSettings settings = adaptiveSettings(2, 0.02);  // depth 0: corners alone
+      settings.width = width;
+      settings.height = height;
+      settings.threads = threads;
+      RenderStatistics statistics;
+      renderImage(compiled, settings, &statistics);
+      EXPECT_EQ(statistics.samples, static_cast<std::uint64_t>(width + 1) * (height + 1))
+          << width << "x" << height << ", " << threads << " threads";
+    }
+  }
+}
+
 // Against a 256-spp reference, adaptive sampling at 16 is closer than
 // uniform 4 with fewer samples, and at 64 closer than uniform 16 (and than
 // adaptive at 16) with fewer samples. On the default scene at 160x120 the

@@ -1,22 +1,19 @@
 #include "renderer/render.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <limits>
-#include <mutex>
 #include <numbers>
-#include <thread>
 
 #include "renderer/adaptive_sampling.h"
 #if SCENEFILE_VULKAN
 #include "renderer/gpu/gpu_render.h"
 #endif
 #include "renderer/parallel_parts.h"
+#include "renderer/render_tiles.h"
 #include "renderer/saturating.h"
 #include "scenefile/matrix.h"
 
@@ -24,7 +21,7 @@ namespace render {
 
 namespace {
 
-constexpr int kTileSize = 32;
+constexpr int kTileSize = kRenderTileSize;
 // The side of a cell of the eye's direction grid, in pixels, and where
 // objects are dense.
 constexpr int kEyeCellPixels = 4;
@@ -50,60 +47,6 @@ float toStoredChannel(double v) {
   if (!(v == v)) return 0.0f;
   constexpr double kMax = std::numeric_limits<float>::max();
   return static_cast<float>(std::clamp(v, -kMax, kMax));
-}
-
-int tileCount(const PixelRegion& region) {
-  return ((region.width() + kTileSize - 1) / kTileSize) *
-         ((region.height() + kTileSize - 1) / kTileSize);
-}
-
-// Calls perTile(worker, tile) for each tile of `region` (squares of
-// kTileSize from its top-left corner, cut at its edges) on `threads` threads.
-template <typename PerTile>
-void forEachTile(const PixelRegion& region, int threads, PerTile&& perTile,
-                 const ProgressCallback& progress) {
-  int tilesX = (region.width() + kTileSize - 1) / kTileSize;
-  int total = tileCount(region);
-  std::atomic<int> next{0};
-  std::atomic<int> done{0};
-  std::mutex progressMutex;
-  // An exception must not leave a thread's function (that ends the
-  // program): the first one (std::bad_alloc, say) stops the handing out of
-  // tiles and is thrown again once every thread has been joined.
-  std::exception_ptr failure;
-  std::mutex failureMutex;
-  auto work = [&](int worker) {
-    try {
-      for (int tile = next++; tile < total; tile = next++) {
-        int x0 = region.x0 + (tile % tilesX) * kTileSize;
-        int y0 = region.y0 + (tile / tilesX) * kTileSize;
-        perTile(worker, PixelRegion{x0, y0, std::min(x0 + kTileSize, region.x1),
-                                    std::min(y0 + kTileSize, region.y1)});
-        int finished = ++done;
-        if (progress) {
-          std::lock_guard<std::mutex> lock(progressMutex);
-          progress(finished, total);
-        }
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failureMutex);
-      if (!failure) failure = std::current_exception();
-      next = total;
-    }
-  };
-  std::vector<std::thread> pool;
-  try {
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-  } catch (...) {
-    // A thread that cannot start (std::system_error): the running ones
-    // finish their tile and are joined before the caller hears of it.
-    next = total;
-    for (std::thread& t : pool) t.join();
-    throw;
-  }
-  work(0);
-  for (std::thread& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
 }
 
 // The level of an integer image of `levels` + 1 levels
@@ -503,9 +446,9 @@ void renderUniform(const PixelTracer& tracer, const PixelRegion& region,
       progress);
 }
 
-// The samples at the corners of every pixel of a region, shared by the
-// pixels that meet there: corner (x, y) is the image point (x, y), the
-// top-left corner of pixel (x, y).
+// The samples at the corners of the pixels of a tile, and their looks:
+// corner (x, y) is the image point (x, y), the top-left corner of pixel
+// (x, y). One for each thread, filled tile by tile (fillTileCorners).
 struct CornerSamples {
   PixelRegion corners;
   std::vector<SampleColour> samples;
@@ -516,43 +459,56 @@ struct CornerSamples {
   }
 };
 
-// The corners of the pixels of `region` as a region of their own: one more
-// column and row than the pixels.
-PixelRegion cornersOf(const PixelRegion& region) {
-  return PixelRegion{region.x0, region.y0, region.x1 + 1, region.y1 + 1};
+// Adaptive sampling's pass 1: the corners on the edges of the region's
+// tiles, which neighbouring tiles share (TileEdgeCorners), traced a run at
+// a time, as packets.
+void traceTileEdges(const PixelTracer& tracer, TileEdgeCorners& edges, std::vector<Worker>& workers,
+                    const ProgressCallback& progress, const CancelFlag* cancel) {
+  forEachPart(
+      static_cast<int>(edges.runCount()), static_cast<int>(workers.size()),
+      [&](int index, int part) {
+        if (cancel && cancel->requested()) throw RenderCancelled();
+        Worker& worker = workers[index];
+        MediumStack media = tracer.eyeMedia();
+        const TileEdgeCorners::Run& run = edges.run(static_cast<std::size_t>(part));
+        glm::dvec2 at[kTileSize + 1];
+        for (int k = 0; k < run.count; ++k) {
+          at[k] = run.down ? glm::dvec2(run.x, run.y + k) : glm::dvec2(run.x + k, run.y);
+        }
+        tracer.traceSamples(at, run.count, tracer.tolerance(), media, worker.context,
+                            edges.samples(run));
+        worker.samples += static_cast<std::uint64_t>(run.count);
+      },
+      progress);
 }
 
-// Adaptive sampling's pass 1: the corners of the pixels of `region`, traced
-// a row of a tile at a time, as packets.
-CornerSamples traceCorners(const PixelTracer& tracer, const PixelRegion& region,
-                           std::vector<Worker>& workers, const ProgressCallback& progress,
-                           const CancelFlag* cancel) {
-  CornerSamples corners;
-  corners.corners = cornersOf(region);
+// The corners of `tile`'s pixels into `corners`: those on its edges from
+// pass 1, the others traced here a row at a time, as packets.
+void fillTileCorners(const PixelTracer& tracer, const PixelRegion& tile,
+                     const TileEdgeCorners& edges, CornerSamples& corners, MediumStack& media,
+                     Worker& worker) {
+  corners.corners = PixelRegion{tile.x0, tile.y0, tile.x1 + 1, tile.y1 + 1};
   std::size_t count = static_cast<std::size_t>(corners.corners.width()) * corners.corners.height();
   corners.samples.resize(count);
   corners.looks.resize(count);
-  forEachTile(
-      corners.corners, static_cast<int>(workers.size()),
-      [&](int index, const PixelRegion& tile) {
-        Worker& worker = workers[index];
-        MediumStack media = tracer.eyeMedia();
-        int n = tile.width();
-        glm::dvec2 at[kTileSize];
-        for (int j = tile.y0; j < tile.y1; ++j) {
-          if (cancel && cancel->requested()) throw RenderCancelled();
-          for (int k = 0; k < n; ++k) at[k] = glm::dvec2(tile.x0 + k, j);
-          std::size_t first = corners.at(tile.x0, j);
-          tracer.traceSamples(at, n, tracer.tolerance(), media, worker.context,
-                              &corners.samples[first]);
-          for (std::size_t c = first; c < first + n; ++c) {
-            corners.looks[c] = lookOf(corners.samples[c].colour, corners.samples[c].object);
-          }
-          worker.samples += static_cast<std::uint64_t>(n);
-        }
-      },
-      progress);
-  return corners;
+  glm::dvec2 at[kTileSize];
+  for (int y = tile.y0; y <= tile.y1; ++y) {
+    SampleColour* row = &corners.samples[corners.at(tile.x0, y)];
+    if (edges.onEdgeRow(y)) {
+      for (int x = tile.x0; x <= tile.x1; ++x) row[x - tile.x0] = edges.sample(x, y);
+      continue;
+    }
+    row[0] = edges.sample(tile.x0, y);
+    row[tile.x1 - tile.x0] = edges.sample(tile.x1, y);
+    int inner = tile.x1 - tile.x0 - 1;
+    if (inner <= 0) continue;
+    for (int k = 0; k < inner; ++k) at[k] = glm::dvec2(tile.x0 + 1 + k, y);
+    tracer.traceSamples(at, inner, tracer.tolerance(), media, worker.context, row + 1);
+    worker.samples += static_cast<std::uint64_t>(inner);
+  }
+  for (std::size_t c = 0; c < count; ++c) {
+    corners.looks[c] = lookOf(corners.samples[c].colour, corners.samples[c].object);
+  }
 }
 
 // Adaptive sampling's pass 2 on one thread: each pixel from its corners, and
@@ -560,10 +516,10 @@ CornerSamples traceCorners(const PixelTracer& tracer, const PixelRegion& region,
 // points lent (SharedSides).
 class PixelSubdivider {
  public:
-  PixelSubdivider(const PixelTracer& tracer, const CornerSamples& corners, double threshold,
+  PixelSubdivider(const PixelTracer& tracer, const TileEdgeCorners& edges, double threshold,
                   int depth)
       : tracer_(tracer),
-        corners_(corners),
+        edges_(edges),
         threshold_(threshold),
         lattice_(depth),
         shared_(lattice_.side(), kTileSize),
@@ -572,7 +528,11 @@ class PixelSubdivider {
     cornerPoints_ = {0, last, last * side, last * side + last};
   }
 
-  void startTile() { shared_.startTile(); }
+  // A new tile: its corners traced or taken from the edges.
+  void startTile(const PixelRegion& tile, MediumStack& media, Worker& worker) {
+    fillTileCorners(tracer_, tile, edges_, corners_, media, worker);
+    shared_.startTile();
+  }
   void startRow() { shared_.startRow(); }
 
   // Pixel (i, j), in `column` of its tile's row, traced at the tolerance.
@@ -624,7 +584,8 @@ class PixelSubdivider {
  private:
   inline static const std::vector<double> kCornerWeights = std::vector<double>(4, 0.25);
   const PixelTracer& tracer_;
-  const CornerSamples& corners_;
+  const TileEdgeCorners& edges_;
+  CornerSamples corners_;  // the tile's
   double threshold_;
   PixelLattice lattice_;
   SharedSides shared_;
@@ -667,8 +628,9 @@ class PixelSubdivider {
 };
 
 // Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"). Pass 1
-// traces the corners of every pixel of the region. Pass 2 gives a pixel
-// whose four corners agree their mean, and subdivides the others. Every
+// traces the pixel corners on the edges of the region's tiles. Pass 2,
+// tile by tile, traces the tile's other corners, gives a pixel whose four
+// corners agree their mean, and subdivides the others. Every
 // sample lies at a fixed position and every decision reads only the samples
 // of its own pixel's square, so a pixel is the same whatever the threads or
 // region.
@@ -677,24 +639,25 @@ void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
                     const ImageWriter& writer, const ProgressCallback& progress,
                     const CancelFlag* cancel) {
   // One progress for both passes.
-  int firstTiles = tileCount(cornersOf(region));
+  TileEdgeCorners edges(region.x0, region.y0, region.width(), region.height(), kTileSize);
+  int firstTiles = static_cast<int>(edges.runCount());
   int secondTiles = tileCount(region);
   ProgressCallback firstProgress, secondProgress;
   if (progress) {
     firstProgress = [&](int done, int) { progress(done, firstTiles + secondTiles); };
     secondProgress = [&](int done, int) { progress(firstTiles + done, firstTiles + secondTiles); };
   }
-  const CornerSamples corners = traceCorners(tracer, region, workers, firstProgress, cancel);
+  traceTileEdges(tracer, edges, workers, firstProgress, cancel);
   const int depth = subdivisionDepth(std::max(1, settings.samplesPerPixel));
   std::vector<PixelSubdivider> subdividers(
-      workers.size(), PixelSubdivider(tracer, corners, settings.adaptiveThreshold, depth));
+      workers.size(), PixelSubdivider(tracer, edges, settings.adaptiveThreshold, depth));
   forEachTile(
       region, static_cast<int>(workers.size()),
       [&](int index, const PixelRegion& tile) {
         Worker& worker = workers[index];
         PixelSubdivider& subdivider = subdividers[index];
         MediumStack media = tracer.eyeMedia();
-        subdivider.startTile();
+        subdivider.startTile(tile, media, worker);
         for (int j = tile.y0; j < tile.y1; ++j) {
           if (cancel && cancel->requested()) throw RenderCancelled();
           subdivider.startRow();

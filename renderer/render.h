@@ -25,6 +25,10 @@ struct PixelRegion {
   int height() const { return empty() ? 0 : y1 - y0; }
 };
 
+// The side, in pixels, of the square tiles that a render hands out to its
+// threads (the last in a row or column cut at the region's edge).
+inline constexpr int kRenderTileSize = 32;
+
 // Tile `index` (0-based) of `count` of a `width` x `height` image: the
 // index-th of `count` horizontal bands of whole rows, from the top, their
 // heights differing by at most 1 (the taller first). Empty where the index

@@ -273,8 +273,9 @@ std::optional<int> Renderer::resourceRefusal() {
       imageHeight(settings_), settings_.coverage);
   if (settings_.adaptiveThreshold > 0) {
     estimate.image = render::saturatingSum(
-        estimate.image,
-        render::adaptiveSamplingBytes(imageWidth(settings_), imageHeight(settings_)));
+        estimate.image, render::adaptiveSamplingBytes(imageWidth(settings_), imageHeight(settings_),
+                                                      renderThreadCount(settings_.threads),
+                                                      render::kRenderTileSize));
   }
   if (std::optional<std::string> refusal =
           render::renderMemoryRefusal(estimate, memory_ ? memory_() : std::nullopt)) {
