@@ -91,7 +91,7 @@ int PixelLattice::subdivide(double threshold, const TraceLevel& traceLevel) {
       }
     }
     if (!queued.empty()) {
-      traced.assign(queued.size(), SampleLook{});
+      traced.resize(queued.size());
       traceLevel(queued, traced);
       for (std::size_t k = 0; k < queued.size(); ++k) looks_[queued[k]] = traced[k];
     }
@@ -101,15 +101,22 @@ int PixelLattice::subdivide(double threshold, const TraceLevel& traceLevel) {
     share /= 4.0;
   }
 
-  // The weighted points in lattice order, the order the pixel's sums take.
-  std::sort(touched_.begin(), touched_.end());
+  // The weighted points in lattice order, the order the pixel's sums take:
+  // a small lattice read in order costs less than sorting the points it
+  // touched (only those have weights).
   points_.clear();
   weights_.clear();
-  for (int p : touched_) {
+  auto take = [&](int p) {
     if (weightOf_[p] > 0.0) {
       points_.push_back(p);
       weights_.push_back(weightOf_[p]);
     }
+  };
+  if (side_ * side_ <= kScannedLattice) {
+    for (int p = 0; p < side_ * side_; ++p) take(p);
+  } else {
+    std::sort(touched_.begin(), touched_.end());
+    for (int p : touched_) take(p);
   }
   return cuts;
 }

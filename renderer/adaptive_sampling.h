@@ -136,6 +136,9 @@ class PixelLattice {
   std::vector<int> touched_;
   std::vector<int> points_;
   std::vector<double> weights_;
+  // Lattices of up to this many points (depth 3) are read in order for
+  // their weighted points; larger ones sort the points the pixel touched.
+  static constexpr int kScannedLattice = 81;
   // subdivide's work lists, kept to spare their allocations.
   std::vector<int> squares_, next_, queued_;
   std::vector<SampleLook> traced_;
