@@ -4,14 +4,19 @@
 # (sfgen is one of the benchmarks' tools), makes floor scenes of 100,000 and 1,000,000 objects (sfgen --layout floor
 # -n N -s 1), and renders them and the default scene at 1920x1080, 1 spp, on
 # the GPU (sfrender --device gpu --stats: device start, upload, kernel from
-# Vulkan timestamp queries, readback) and on the CPU with 2 threads, printing
-# a table and writing it to $OUT/gpu_bench.md when OUT is set.
+# Vulkan timestamp queries, readback) and on the CPU with 2 threads
+# (GPU_BENCH_CPU_THREADS), printing a table and writing it to
+# $OUT/gpu_bench.md when OUT is set.
 #
 # Needs no network: every package is Debian's (scripts/install-deps.sh); the
 # script says what is missing and stops. Smaller runs, to check the script
 # on a CPU driver (lavapipe): GPU_BENCH_WIDTH, GPU_BENCH_HEIGHT,
 # GPU_BENCH_SIZES (object counts, "100000 1000000"), GPU_BENCH_CPU=0 to
-# leave out the CPU runs, GPU_BENCH_BUILD (the build directory).
+# leave out the CPU runs, GPU_BENCH_CPU_THREADS (2: the CPU runs' --threads),
+# GPU_BENCH_BUILD (the build directory).
+# GPU_BENCH_BIN names a folder that already holds sfrender and sfgen (built
+# with SCENEFILE_VULKAN=ON), for a GPU machine without the build tools: the
+# build and its checks are skipped, and the scenes go to GPU_BENCH_BUILD.
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,32 +25,41 @@ width=${GPU_BENCH_WIDTH:-1920}
 height=${GPU_BENCH_HEIGHT:-1080}
 sizes=${GPU_BENCH_SIZES:-100000 1000000}
 run_cpu=${GPU_BENCH_CPU:-1}
+cpu_threads=${GPU_BENCH_CPU_THREADS:-2}
 data=$build/gpu-bench-scenes
 
-missing=()
-command -v cmake >/dev/null || missing+=("cmake (cmake)")
-command -v glslangValidator >/dev/null || missing+=("glslangValidator (glslang-tools)")
-[[ -f /usr/include/vulkan/vulkan.h ]] || missing+=("the Vulkan headers and loader (libvulkan-dev)")
-if ((${#missing[@]})); then
-  echo "gpu_bench: missing: ${missing[*]}; apt-get install them (scripts/install-deps.sh)" >&2
-  exit 1
-fi
-if command -v vulkaninfo >/dev/null; then
-  vulkaninfo 2>/dev/null | grep -E 'deviceName|shaderFloat64' | sed 's/^[[:space:]]*/gpu_bench: /' |
-    sort -u >&2 || true
+bin=${GPU_BENCH_BIN:-}
+if [[ -n $bin ]]; then
+  for tool in sfrender sfgen; do
+    [[ -x $bin/$tool ]] || { echo "gpu_bench: GPU_BENCH_BIN=$bin holds no $tool" >&2; exit 1; }
+  done
+  bin=$(cd "$bin" && pwd)
 else
-  echo "gpu_bench: vulkaninfo (vulkan-tools) is not installed; sfrender will say which device" >&2
-fi
+  missing=()
+  command -v cmake >/dev/null || missing+=("cmake (cmake)")
+  command -v glslangValidator >/dev/null || missing+=("glslangValidator (glslang-tools)")
+  [[ -f /usr/include/vulkan/vulkan.h ]] || missing+=("the Vulkan headers and loader (libvulkan-dev)")
+  if ((${#missing[@]})); then
+    echo "gpu_bench: missing: ${missing[*]}; apt-get install them (scripts/install-deps.sh)" >&2
+    exit 1
+  fi
+  if command -v vulkaninfo >/dev/null; then
+    vulkaninfo 2>/dev/null | grep -E 'deviceName|shaderFloat64' | sed 's/^[[:space:]]*/gpu_bench: /' |
+      sort -u >&2 || true
+  else
+    echo "gpu_bench: vulkaninfo (vulkan-tools) is not installed; sfrender will say which device" >&2
+  fi
 
-if [[ -f /root/.ccache.env ]]; then
-  # shellcheck disable=SC1091
-  source /root/.ccache.env
+  if [[ -f /root/.ccache.env ]]; then
+    # shellcheck disable=SC1091
+    source /root/.ccache.env
+  fi
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSCENEFILE_VULKAN=ON \
+    -DSCENEFILE_BUILD_TESTS=OFF -DSCENEFILE_BUILD_BENCH=ON -DSCENEFILE_BUILD_PYTHON=OFF \
+    -DSCENEFILE_BUILD_DOCS=OFF >/dev/null
+  cmake --build "$build" -j"$(nproc)" --target sfrender sfgen >/dev/null
+  bin=$build/bin
 fi
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSCENEFILE_VULKAN=ON \
-  -DSCENEFILE_BUILD_TESTS=OFF -DSCENEFILE_BUILD_BENCH=ON -DSCENEFILE_BUILD_PYTHON=OFF \
-  -DSCENEFILE_BUILD_DOCS=OFF >/dev/null
-cmake --build "$build" -j"$(nproc)" --target sfrender sfgen >/dev/null
-bin=$build/bin
 
 mkdir -p "$data"
 scenes=(default)
@@ -60,7 +74,7 @@ done
 render() {
   local input=() extra=()
   [[ $1 == default ]] || input=("$data/$1.sf")
-  if [[ $2 == gpu ]]; then extra=(--device gpu); else extra=(--device cpu --threads 2); fi
+  if [[ $2 == gpu ]]; then extra=(--device gpu); else extra=(--device cpu --threads "$cpu_threads"); fi
   local start end
   start=$(date +%s.%N)
   "$bin/sfrender" "${input[@]}" --width "$width" --height "$height" --spp 1 --depth 5 \
@@ -74,7 +88,7 @@ table=$(mktemp)
 trap 'rm -f "$table"' EXIT
 device=""
 {
-  echo "| scene | GPU start s | upload s | kernel s | readback s | GPU render s | GPU wall s | CPU (2 threads) render s | CPU wall s |"
+  echo "| scene | GPU start s | upload s | kernel s | readback s | GPU render s | GPU wall s | CPU ($cpu_threads threads) render s | CPU wall s |"
   echo "|---|---|---|---|---|---|---|---|---|"
 } >"$table"
 for scene in "${scenes[@]}"; do
@@ -95,7 +109,7 @@ for scene in "${scenes[@]}"; do
 done
 
 {
-  echo "GPU benchmark: ${width}x${height}, 1 spp, depth 5; device: ${device:-unknown}; CPU: $(nproc) cores, 2 threads used"
+  echo "GPU benchmark: ${width}x${height}, 1 spp, depth 5; device: ${device:-unknown}; CPU: $(nproc) cores, $cpu_threads threads used"
   echo
   cat "$table"
 } | if [[ -n ${OUT:-} ]]; then tee "$OUT/gpu_bench.md"; else cat; fi
