@@ -223,7 +223,8 @@ KernelOutput runKernel(const RenderScene& scene, const RenderSettings& settings,
         context.createBuffer(sizeof(GpuParams), storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, local);
     colours = context.createBuffer(outputBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, local);
     counts = context.createBuffer(outputBytes, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, local);
-    readback = context.createBuffer(2 * outputBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, host);
+    readback = context.createBuffer(2 * outputBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, host,
+                                    VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
     pipeline.bind({params.buffer, gpuScene.objects.buffer, gpuScene.nodes.buffer,
                    gpuScene.items.buffer, gpuScene.planes.buffer, gpuScene.lights.buffer,
                    colours.buffer, counts.buffer});

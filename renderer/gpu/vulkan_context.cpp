@@ -160,20 +160,23 @@ VulkanContext::~VulkanContext() {
   vkDestroyInstance(instance_, nullptr);
 }
 
-std::uint32_t VulkanContext::memoryType(std::uint32_t allowed,
-                                        VkMemoryPropertyFlags properties) const {
+std::uint32_t VulkanContext::memoryType(std::uint32_t allowed, VkMemoryPropertyFlags properties,
+                                        VkMemoryPropertyFlags preferred) const {
   VkPhysicalDeviceMemoryProperties memory;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory);
-  for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
-    if ((allowed & (1u << i)) && (memory.memoryTypes[i].propertyFlags & properties) == properties) {
-      return i;
+  for (VkMemoryPropertyFlags wanted : {properties | preferred, properties}) {
+    for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+      if ((allowed & (1u << i)) && (memory.memoryTypes[i].propertyFlags & wanted) == wanted) {
+        return i;
+      }
     }
   }
   throw VulkanError("no memory type fits a buffer");
 }
 
 Buffer VulkanContext::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage,
-                                   VkMemoryPropertyFlags properties) const {
+                                   VkMemoryPropertyFlags properties,
+                                   VkMemoryPropertyFlags preferred) const {
   Buffer b;
   b.size = size > 0 ? size : 16;
   VkBufferCreateInfo info{};
@@ -188,7 +191,7 @@ Buffer VulkanContext::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage,
   allocation.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
   allocation.allocationSize = requirements.size;
   try {
-    allocation.memoryTypeIndex = memoryType(requirements.memoryTypeBits, properties);
+    allocation.memoryTypeIndex = memoryType(requirements.memoryTypeBits, properties, preferred);
     check(vkAllocateMemory(device_, &allocation, nullptr, &b.memory), "allocating device memory");
   } catch (...) {
     vkDestroyBuffer(device_, b.buffer, nullptr);

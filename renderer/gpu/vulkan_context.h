@@ -57,9 +57,11 @@ class VulkanContext {
 
   // A buffer of `size` bytes (at least 1) for `usage`, in memory with
   // `properties` (device-local for the kernel's data, host-visible for
-  // staging and readback).
-  Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage,
-                      VkMemoryPropertyFlags properties) const;
+  // staging and readback), and with `preferred` too where a memory type
+  // has both (host-cached for the readback, which the CPU reads whole:
+  // reads of uncached, write-combined memory are not cached).
+  Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags properties,
+                      VkMemoryPropertyFlags preferred = 0) const;
   void destroy(Buffer& buffer) const;
 
   // A command buffer to record into, then submitted and waited for by
@@ -68,7 +70,8 @@ class VulkanContext {
   void submitAndWait(VkCommandBuffer commands) const;
 
  private:
-  std::uint32_t memoryType(std::uint32_t allowed, VkMemoryPropertyFlags properties) const;
+  std::uint32_t memoryType(std::uint32_t allowed, VkMemoryPropertyFlags properties,
+                           VkMemoryPropertyFlags preferred) const;
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
