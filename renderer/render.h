@@ -42,16 +42,17 @@ enum class RenderDevice {
   // implementation, counts too): the same picture to within rounding.
   Gpu,
   // The GPU when a real one (not a CPU implementation) is present, the
-  // render uniform, and it has at least kAutoGpuMinSamples camera samples;
-  // the CPU otherwise.
+  // render uniform, and it has at least kAutoGpuMinSamplesPerThread camera
+  // samples for each thread the CPU would render with; the CPU otherwise.
   Auto,
 };
 
 // Auto's threshold: a GPU render first pays a fixed start (instance, device,
-// the pipeline's compilation, the scene's upload: some tenths of a second),
-// which a 2-thread CPU spends on about a million camera samples of a simple
-// scene (docs/PERFORMANCE.md); below that the CPU is done first.
-inline constexpr std::uint64_t kAutoGpuMinSamples = 1'000'000;
+// the pipeline's compilation, the scene's upload, the readback: about 0.2 s
+// on an NVIDIA H200), in which one CPU thread traces about a million camera
+// samples of a simple scene; below a million a thread the CPU is done first
+// (docs/PERFORMANCE.md, "GPU (Vulkan)").
+inline constexpr std::uint64_t kAutoGpuMinSamplesPerThread = 1'000'000;
 
 struct RenderSettings {
   int width = 640;
@@ -123,8 +124,13 @@ struct GpuProbe {
 // first); with `allowCpu` false a CPU implementation does not count.
 GpuProbe probeGpu(bool allowCpu = true);
 
-// The device a render with `settings` runs on: Auto decided (probing for a
-// GPU), Cpu and Gpu as they are.
+// Whether a render with `settings` is one Auto gives a real GPU where one is
+// present: uniform, with at least kAutoGpuMinSamplesPerThread camera samples
+// for each thread of settings.threads.
+bool autoPrefersGpu(const RenderSettings& settings);
+
+// The device a render with `settings` runs on: Auto decided (autoPrefersGpu,
+// then probing for a GPU), Cpu and Gpu as they are.
 RenderDevice chooseDevice(const RenderSettings& settings);
 
 // Primary rays of the scene's camera: a pinhole at the eye, forward and up

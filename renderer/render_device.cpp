@@ -1,5 +1,8 @@
 // Which device renders: the Vulkan probe and the choice of `auto`
 // (docs/RENDERING.md, "The GPU path").
+#include <cstdint>
+
+#include "renderer/parallel_parts.h"
 #include "renderer/render.h"
 
 #if SCENEFILE_VULKAN
@@ -23,10 +26,15 @@ GpuProbe probeGpu(bool allowCpu) {
   return probe;
 }
 
+bool autoPrefersGpu(const RenderSettings& settings) {
+  if (samplesAdaptively(settings)) return false;
+  std::uint64_t threads = static_cast<std::uint64_t>(resolveThreads(settings.threads));
+  return uniformSampleCount(settings) >= kAutoGpuMinSamplesPerThread * threads;
+}
+
 RenderDevice chooseDevice(const RenderSettings& settings) {
   if (settings.device != RenderDevice::Auto) return settings.device;
-  if (samplesAdaptively(settings)) return RenderDevice::Cpu;
-  if (uniformSampleCount(settings) < kAutoGpuMinSamples) return RenderDevice::Cpu;
+  if (!autoPrefersGpu(settings)) return RenderDevice::Cpu;
   return probeGpu(false).available ? RenderDevice::Gpu : RenderDevice::Cpu;
 }
 

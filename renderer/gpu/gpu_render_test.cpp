@@ -157,5 +157,34 @@ TEST(GpuRender, AutoStaysOnTheCpuForSmallImages) {
   EXPECT_EQ(chooseDevice(settings), RenderDevice::Gpu);
 }
 
+// The threshold counts samples for each CPU thread: 1920x1080 at 1 spp
+// (2,073,600 samples) is worth a GPU against 2 threads, not against 4, and
+// 2 samples a pixel make it worth one against 4 again, not against 5.
+TEST(GpuRender, AutoWeighsSamplesAgainstTheCpuThreads) {
+  RenderSettings settings;
+  settings.width = 1920;
+  settings.height = 1080;
+  settings.device = RenderDevice::Auto;
+  settings.threads = 2;
+  EXPECT_TRUE(autoPrefersGpu(settings));
+  settings.threads = 4;
+  EXPECT_FALSE(autoPrefersGpu(settings));
+  EXPECT_EQ(chooseDevice(settings), RenderDevice::Cpu);
+  settings.samplesPerPixel = 2;
+  EXPECT_TRUE(autoPrefersGpu(settings));
+  settings.threads = 5;
+  EXPECT_FALSE(autoPrefersGpu(settings));
+  // Adaptive sampling stays on the CPU at any count.
+  settings.threads = 1;
+  settings.samplesPerPixel = 16;
+  settings.adaptiveThreshold = 0.03;
+  EXPECT_FALSE(autoPrefersGpu(settings));
+  // Past the threshold the choice is the probe's: a real GPU, else the CPU
+  // (lavapipe does not count).
+  settings.adaptiveThreshold = 0.0;
+  RenderDevice expected = probeGpu(false).available ? RenderDevice::Gpu : RenderDevice::Cpu;
+  EXPECT_EQ(chooseDevice(settings), expected);
+}
+
 }  // namespace
 }  // namespace render

@@ -50,8 +50,8 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
            o.settings.device = devices.at(device);
          },
          "where to trace: cpu, gpu (a Vulkan device with double precision; lavapipe counts) or "
-         "auto (a real GPU when present and the image has at least a million samples, else the "
-         "cpu)")
+         "auto (a real GPU when present and the image has at least a million samples for each "
+         "thread of --threads, else the cpu)")
       ->check(CLI::IsMember({"cpu", "gpu", "auto"}))
       ->option_text("cpu|gpu|auto")
       ->default_str("cpu");
