@@ -7,6 +7,7 @@
 #include <exception>
 #include <functional>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,6 +54,38 @@ enum class RenderDevice {
 // samples of a simple scene; below a million a thread the CPU is done first
 // (docs/PERFORMANCE.md, "GPU (Vulkan)").
 inline constexpr std::uint64_t kAutoGpuMinSamplesPerThread = 1'000'000;
+
+namespace gpu {
+class VulkanContext;
+}
+
+// A Vulkan device opened once for many GPU renders (RenderSettings::gpu),
+// the first that fits as the GPU path takes it (a real GPU before a CPU
+// implementation). Renders through it skip the device's start (0.16 s on
+// an NVIDIA H200), and the driver stays loaded between them: a render that
+// opens its own device loads the driver and unloads it after, and NVIDIA's
+// (580) keeps some of the process's static TLS each time, so that after
+// about 30 loads in one process no instance can be made (docs/RENDERING.md,
+// "The GPU path"). One render at a time goes through it.
+class GpuDevice {
+ public:
+  // Throws DeviceUnavailable where no device fits or the build has no
+  // Vulkan.
+  GpuDevice();
+  ~GpuDevice();
+  GpuDevice(const GpuDevice&) = delete;
+  GpuDevice& operator=(const GpuDevice&) = delete;
+
+  const std::string& name() const;
+  // A CPU implementation such as lavapipe.
+  bool isCpu() const;
+  // What the GPU path renders with (renderer/gpu).
+  const gpu::VulkanContext& vulkan() const;
+
+ private:
+  struct Device;
+  std::unique_ptr<Device> device_;
+};
 
 struct RenderSettings {
   int width = 640;
@@ -104,6 +137,10 @@ struct RenderSettings {
   // depth control's settings (pruneTolerance, maxRaysPerSample) are not
   // used: every branch is traced to maxDepth.
   RenderDevice device = RenderDevice::Cpu;
+  // The device GPU renders go through, kept open by the caller for as long
+  // as renders use it; null: each GPU render opens a device of its own.
+  // Auto with one given asks no probe: it takes it where it is a real GPU.
+  const GpuDevice* gpu = nullptr;
 };
 
 // Why a render cannot run on the device asked for: no Vulkan device with

@@ -1,6 +1,7 @@
 // Which device renders: the Vulkan probe and the choice of `auto`
 // (docs/RENDERING.md, "The GPU path").
 #include <cstdint>
+#include <memory>
 
 #include "renderer/parallel_parts.h"
 #include "renderer/render.h"
@@ -35,7 +36,52 @@ bool autoPrefersGpu(const RenderSettings& settings) {
 RenderDevice chooseDevice(const RenderSettings& settings) {
   if (settings.device != RenderDevice::Auto) return settings.device;
   if (!autoPrefersGpu(settings)) return RenderDevice::Cpu;
-  return probeGpu(false).available ? RenderDevice::Gpu : RenderDevice::Cpu;
+  bool realGpu = settings.gpu ? !settings.gpu->isCpu() : probeGpu(false).available;
+  return realGpu ? RenderDevice::Gpu : RenderDevice::Cpu;
 }
+
+#if SCENEFILE_VULKAN
+struct GpuDevice::Device {
+  gpu::VulkanContext context;
+};
+
+GpuDevice::GpuDevice() {
+  try {
+    device_ = std::make_unique<Device>();
+  } catch (const gpu::VulkanError& e) {
+    throw DeviceUnavailable(e.what());
+  }
+}
+
+const std::string& GpuDevice::name() const {
+  return device_->context.name();
+}
+bool GpuDevice::isCpu() const {
+  return device_->context.isCpu();
+}
+const gpu::VulkanContext& GpuDevice::vulkan() const {
+  return device_->context;
+}
+#else
+// Never made: the constructor throws. Its members still have to be there.
+struct GpuDevice::Device {
+  std::string name;
+};
+
+GpuDevice::GpuDevice() {
+  throw DeviceUnavailable(probeGpu().reason);
+}
+const std::string& GpuDevice::name() const {
+  return device_->name;
+}
+bool GpuDevice::isCpu() const {
+  return false;
+}
+const gpu::VulkanContext& GpuDevice::vulkan() const {
+  throw DeviceUnavailable(probeGpu().reason);
+}
+#endif
+
+GpuDevice::~GpuDevice() = default;
 
 }  // namespace render

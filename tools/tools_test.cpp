@@ -15,6 +15,7 @@
 #include <system_error>
 #include <vector>
 
+#include "renderer/render.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/exit_code.h"
 #include "tools/common/file_io.h"
@@ -423,6 +424,36 @@ TEST_F(ToolTest, SfrenderStatsAndFloatImages) {
   EXPECT_NE(err_.str().find("(192 primary,"), std::string::npos) << err_.str();
   EXPECT_TRUE(fs::exists(dir_ / "s.exr"));
   EXPECT_EQ(files(), (std::vector<std::string>{"s.exr", "s.sf"}));  // no temporary left
+}
+
+// A batch on the GPU renders its scenes through one device it opens once:
+// each image is the one its scene gives rendered alone.
+TEST_F(ToolTest, SfrenderBatchOnTheGpuGivesEachSceneItsOwnImage) {
+  render::GpuProbe probe = render::probeGpu();
+  if (!probe.available) GTEST_SKIP() << "no Vulkan device: " << probe.reason;
+  std::vector<std::string> scenes = {write("a.sf", kValidScene), write("b.txt", kInstructions),
+                                     write("c.sf", kValidScene)};
+  std::vector<std::string> size = {"--device", "gpu", "--width", "24", "--height", "18"};
+  std::vector<std::string> batch = {"sfrender"};
+  batch.insert(batch.end(), scenes.begin(), scenes.end());
+  batch.insert(batch.end(), size.begin(), size.end());
+  batch.insert(batch.end(), {"-o", path("batch-{stem}.ppm"), "--verbose"});
+  ASSERT_EQ(run(sfrender, batch), 0) << err_.str();
+  // The device is opened once, by the first scene.
+  std::string said = err_.str();
+  std::size_t opened = said.find(" for the scenes on the gpu");
+  EXPECT_NE(opened, std::string::npos) << said;
+  EXPECT_EQ(said.find(" for the scenes on the gpu", opened + 1), std::string::npos) << said;
+  const std::vector<std::string> stems = {"a", "b", "c"};
+  for (std::size_t k = 0; k < stems.size(); ++k) {
+    std::vector<std::string> alone = {"sfrender", scenes[k], "-o",
+                                      path("alone-" + stems[k] + ".ppm")};
+    alone.insert(alone.end(), size.begin(), size.end());
+    ASSERT_EQ(run(sfrender, alone), 0) << err_.str();
+    std::string image = read("batch-" + stems[k] + ".ppm");
+    EXPECT_EQ(image.size(), std::string("P6\n24 18\n255\n").size() + 24 * 18 * 3) << stems[k];
+    EXPECT_EQ(image, read("alone-" + stems[k] + ".ppm")) << stems[k];
+  }
 }
 
 TEST(ImageFile, QuantizesToTheNearestLevelWithoutGamma) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 
 #include "renderer/gpu/gpu_scene.h"
 // Generated at build time (renderer/CMakeLists.txt): render_comp_spv[].
@@ -196,7 +197,9 @@ KernelOutput runKernel(const RenderScene& scene, const RenderSettings& settings,
                        const CancelFlag* cancel) {
   KernelOutput out;
   auto start = std::chrono::steady_clock::now();
-  VulkanContext context;
+  // The caller's device where it keeps one open, else one for this render.
+  std::optional<VulkanContext> own;
+  const VulkanContext& context = settings.gpu ? settings.gpu->vulkan() : own.emplace();
   Pipeline pipeline(context);
   out.device = context.name();
   out.startSeconds = secondsSince(start);

@@ -136,6 +136,30 @@ TEST(GpuRender, RegionIsThoseOfTheFullImage) {
   }
 }
 
+// Renders through one device the caller keeps open give the images of
+// renders that open their own, and Auto asks that device, not a probe,
+// whether it is a real GPU.
+TEST(GpuRender, OneDeviceServesManyRenders) {
+  if (skipWithoutGpu()) GTEST_SKIP();
+  GpuDevice device;
+  RenderSettings settings;
+  settings.width = 48;
+  settings.height = 36;
+  settings.samplesPerPixel = 2;
+  settings.maxDepth = 6;
+  Image alone = renderOn(glassScene(), settings, RenderDevice::Gpu);
+  settings.gpu = &device;
+  for (int k = 0; k < 3; ++k) {
+    Image shared = renderOn(glassScene(), settings, RenderDevice::Gpu);
+    EXPECT_EQ(shared.rgb, alone.rgb) << "render " << k;
+  }
+  settings.device = RenderDevice::Auto;
+  settings.threads = 1;
+  settings.width = 1000;
+  settings.height = 1000;
+  EXPECT_EQ(chooseDevice(settings), device.isCpu() ? RenderDevice::Cpu : RenderDevice::Gpu);
+}
+
 TEST(GpuRender, AdaptiveSamplingIsRefused) {
   RenderSettings settings;
   settings.width = 8;

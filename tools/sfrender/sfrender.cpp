@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iomanip>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -140,8 +141,12 @@ struct SceneAndTarget {
 
 class Renderer {
  public:
-  Renderer(SfrenderOptions& o, ToolOutput& output, const AvailableMemoryProbe& memory, Stage& stage)
-      : o_(o), output_(output), memory_(memory), stage_(stage) {}
+  // `sharedGpu`, where given, is the batch's GPU device: opened by the first
+  // scene that renders on the GPU and used by the rest, so that a batch
+  // starts the device once and loads the driver once (render::GpuDevice).
+  Renderer(SfrenderOptions& o, ToolOutput& output, const AvailableMemoryProbe& memory, Stage& stage,
+           std::unique_ptr<render::GpuDevice>* sharedGpu = nullptr)
+      : o_(o), output_(output), memory_(memory), stage_(stage), sharedGpu_(sharedGpu) {}
 
   int run();
 
@@ -157,6 +162,7 @@ class Renderer {
   ToolOutput& output_;
   const AvailableMemoryProbe& memory_;
   Stage& stage_;
+  std::unique_ptr<render::GpuDevice>* sharedGpu_;
   render::RenderSettings settings_;
   SceneAndTarget job_;
 };
@@ -410,6 +416,15 @@ int Renderer::run() {
   stage_.set("rendering");
   render::Image image;
   try {
+    if (sharedGpu_) {
+      // Once a scene has opened it, --device auto asks it instead of probing.
+      settings_.gpu = sharedGpu_->get();
+      if (!settings_.gpu && render::chooseDevice(settings_) == render::RenderDevice::Gpu) {
+        *sharedGpu_ = std::make_unique<render::GpuDevice>();
+        output_.detail("opened " + (*sharedGpu_)->name() + " for the scenes on the gpu");
+        settings_.gpu = sharedGpu_->get();
+      }
+    }
     image = render::renderImage(compiled, settings_, &statistics, progress);
   } catch (const render::DeviceUnavailable& e) {
     output_.error(std::string("cannot render on the gpu: ") + e.what() +
@@ -477,11 +492,12 @@ int renderBatch(const SfrenderOptions& o, ToolOutput& output,
     outputs = *expanded;
   }
   int rendered = 0, status = toInt(ExitCode::Success);
+  std::unique_ptr<render::GpuDevice> gpu;
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
     SfrenderOptions one = o;
     one.input = o.inputs[i];
     one.output = outputs[i];
-    int result = Renderer(one, output, availableMemory, stage).run();
+    int result = Renderer(one, output, availableMemory, stage, &gpu).run();
     if (result == toInt(ExitCode::Success)) {
       ++rendered;
     } else if (status == toInt(ExitCode::Success)) {
