@@ -49,10 +49,11 @@ enum class RenderDevice {
 };
 
 // Auto's threshold: a GPU render first pays a fixed start (instance, device,
-// the pipeline's compilation, the scene's upload, the readback: about 0.2 s
-// on an NVIDIA H200), in which one CPU thread traces about a million camera
-// samples of a simple scene; below a million a thread the CPU is done first
-// (docs/PERFORMANCE.md, "GPU (Vulkan)").
+// the pipeline's compilation, the scene's upload, the readback: about 0.3 s
+// on an NVIDIA H200, whatever the samples), while the CPU's time grows with
+// the samples each thread traces. There the GPU came out ahead from about
+// half a million samples a thread against 2 threads and from one to two
+// million against 16 (docs/PERFORMANCE.md, "GPU (Vulkan)").
 inline constexpr std::uint64_t kAutoGpuMinSamplesPerThread = 1'000'000;
 
 namespace gpu {
