@@ -13,7 +13,11 @@
 # on a CPU driver (lavapipe): GPU_BENCH_WIDTH, GPU_BENCH_HEIGHT,
 # GPU_BENCH_SIZES (object counts, "100000 1000000"), GPU_BENCH_CPU=0 to
 # leave out the CPU runs, GPU_BENCH_CPU_THREADS (2: the CPU runs' --threads),
-# GPU_BENCH_BUILD (the build directory).
+# GPU_BENCH_BUILD (the build directory). GPU_BENCH_CROSSOVER=1 adds the
+# table `--device auto` is set from: whole runs of the default scene at
+# GPU_BENCH_CROSSOVER_SIZES ("960x540 1280x720 1920x1080 3840x2160") and 1,
+# 2 and 4 spp, on the GPU and on the CPU with 2 threads and every core,
+# medians of 3 wall times, also written to $OUT/gpu_crossover.md.
 # GPU_BENCH_BIN names a folder that already holds sfrender and sfgen (built
 # with SCENEFILE_VULKAN=ON), for a GPU machine without the build tools: the
 # build and its checks are skipped, and the scenes go to GPU_BENCH_BUILD.
@@ -113,3 +117,34 @@ done
   echo
   cat "$table"
 } | if [[ -n ${OUT:-} ]]; then tee "$OUT/gpu_bench.md"; else cat; fi
+
+# The crossover: where the GPU's whole run beats the CPU's.
+if [[ ${GPU_BENCH_CROSSOVER:-0} == 1 ]]; then
+  wall() {
+    local start end
+    start=$(date +%s.%N)
+    "$bin/sfrender" "$@" -q -o "$data/crossover.ppm" || return 1
+    end=$(date +%s.%N)
+    awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }'
+  }
+  median3() { printf '%s\n' "$@" | sort -n | sed -n 2p; }
+  {
+    echo "Crossover: the default scene, wall s of whole runs, medians of 3; CPU: $(nproc) cores"
+    echo
+    echo "| image | spp | GPU | CPU, 2 threads | CPU, every core |"
+    echo "|---|---|---|---|---|"
+    for size in ${GPU_BENCH_CROSSOVER_SIZES:-960x540 1280x720 1920x1080 3840x2160}; do
+      for spp in 1 2 4; do
+        row="| $size | $spp |"
+        for device in "--device gpu" "--device cpu --threads 2" "--device cpu --threads 0"; do
+          # shellcheck disable=SC2086 # the device's words are meant to split
+          times=("$(wall --width "${size%x*}" --height "${size#*x}" --spp "$spp" $device)"
+            "$(wall --width "${size%x*}" --height "${size#*x}" --spp "$spp" $device)"
+            "$(wall --width "${size%x*}" --height "${size#*x}" --spp "$spp" $device)")
+          row="$row $(median3 "${times[@]}") |"
+        done
+        echo "$row"
+      done
+    done
+  } | if [[ -n ${OUT:-} ]]; then tee "$OUT/gpu_crossover.md"; else cat; fi
+fi
