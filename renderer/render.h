@@ -49,11 +49,11 @@ enum class RenderDevice {
 };
 
 // Auto's threshold: a GPU render first pays a fixed start (instance, device,
-// the pipeline's compilation, the scene's upload, the readback: about 0.3 s
+// the pipeline's compilation, the scene's upload, the readback: about 0.25 s
 // on an NVIDIA H200, whatever the samples), while the CPU's time grows with
-// the samples each thread traces. There the GPU came out ahead from about
-// half a million samples a thread against 2 threads and from one to two
-// million against 16 (docs/PERFORMANCE.md, "GPU (Vulkan)").
+// the samples each thread traces. There the GPU came out ahead from half a
+// million to a million samples a thread against 2 threads and from one to
+// two million against 16 (docs/PERFORMANCE.md, "GPU (Vulkan)").
 inline constexpr std::uint64_t kAutoGpuMinSamplesPerThread = 1'000'000;
 
 namespace gpu {
