@@ -134,9 +134,10 @@ struct RenderSettings {
   // pixels are exactly those of the full image's render (a region reaching
   // outside the image is cut to it).
   PixelRegion region;
-  // On the GPU, adaptive anti-aliasing is refused, threads and the adaptive
-  // depth control's settings (pruneTolerance, maxRaysPerSample) are not
-  // used: every branch is traced to maxDepth.
+  // On the GPU, adaptive anti-aliasing is refused, threads only pack the
+  // scene for the upload, and the adaptive depth control's settings
+  // (pruneTolerance, maxRaysPerSample) are not used: every branch is traced
+  // to maxDepth.
   RenderDevice device = RenderDevice::Cpu;
   // The device GPU renders go through, kept open by the caller for as long
   // as renders use it; null: each GPU render opens a device of its own.

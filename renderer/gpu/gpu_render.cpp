@@ -205,7 +205,7 @@ KernelOutput runKernel(const RenderScene& scene, const RenderSettings& settings,
   out.startSeconds = secondsSince(start);
 
   auto uploadStart = std::chrono::steady_clock::now();
-  GpuScene gpuScene = uploadScene(context, packScene(scene));
+  GpuScene gpuScene = uploadScene(context, scene, settings.threads);
   out.uploadSeconds = secondsSince(uploadStart);
 
   const std::size_t pixels = static_cast<std::size_t>(region.width()) * region.height();

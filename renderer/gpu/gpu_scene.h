@@ -47,16 +47,23 @@ inline constexpr int kGpuMediaCapacity = 8;
 // Doubles an object in the objects buffer (the shader's kObjectDoubles).
 inline constexpr int kObjectDoubles = 32;
 
-// The scene in the shader's layouts, on the host.
-struct GpuSceneData {
-  std::vector<double> objects;        // kObjectDoubles each
-  std::vector<std::uint32_t> nodes;   // BvhNode's 32 bytes as 8 words
-  std::vector<std::uint32_t> items;   // per BVH item, its object
-  std::vector<std::uint32_t> planes;  // the plane objects
-  std::vector<double> lights;         // position, colour
+// Where each array of the scene lies in one host buffer, in the shader's
+// layouts: the objects (kObjectDoubles each), the BVH nodes (BvhNode's 32
+// bytes as 8 words), per BVH item its object, the plane objects, the lights
+// (position, colour).
+struct GpuSceneLayout {
+  struct Part {
+    VkDeviceSize offset = 0;
+    VkDeviceSize bytes = 0;
+  };
+  Part objects, nodes, items, planes, lights;
+  VkDeviceSize bytes = 0;
 };
+GpuSceneLayout layoutOf(const RenderScene& scene);
 
-GpuSceneData packScene(const RenderScene& scene);
+// Writes the scene into `out` (layout.bytes of it) as `layout` places it,
+// the objects on `threads` threads (0: every core).
+void packScene(const RenderScene& scene, const GpuSceneLayout& layout, char* out, int threads);
 
 // The scene's buffers on the device.
 struct GpuScene {
@@ -64,8 +71,9 @@ struct GpuScene {
   std::uint64_t bytes = 0;
 };
 
-// Copies `data` into device-local buffers through one staging buffer.
-GpuScene uploadScene(const VulkanContext& context, const GpuSceneData& data);
+// Packs the scene into one staging buffer and copies it into device-local
+// buffers.
+GpuScene uploadScene(const VulkanContext& context, const RenderScene& scene, int threads);
 void destroyScene(const VulkanContext& context, GpuScene& scene);
 
 }  // namespace render::gpu
