@@ -82,11 +82,13 @@ GpuSceneLayout layoutOf(const RenderScene& scene) {
     part = GpuSceneLayout::Part{at, bytes};
     at += bytes;
   };
+  // The arrays of doubles first, so that each array starts aligned for its
+  // type when the buffer does.
   place(layout.objects, scene.objects().size() * kObjectDoubles * sizeof(double));
+  place(layout.lights, scene.lights().size() * 6 * sizeof(double));
   place(layout.nodes, scene.bvh().nodes().size() * 8 * sizeof(std::uint32_t));
   place(layout.items, scene.bvh().items().size() * sizeof(std::uint32_t));
   place(layout.planes, scene.planeObjects().size() * sizeof(std::uint32_t));
-  place(layout.lights, scene.lights().size() * 6 * sizeof(double));
   layout.bytes = at;
   return layout;
 }

@@ -48,9 +48,10 @@ inline constexpr int kGpuMediaCapacity = 8;
 inline constexpr int kObjectDoubles = 32;
 
 // Where each array of the scene lies in one host buffer, in the shader's
-// layouts: the objects (kObjectDoubles each), the BVH nodes (BvhNode's 32
-// bytes as 8 words), per BVH item its object, the plane objects, the lights
-// (position, colour).
+// layouts: the objects (kObjectDoubles each), the lights (position,
+// colour), the BVH nodes (BvhNode's 32 bytes as 8 words), per BVH item its
+// object, the plane objects; each aligned for its type where the buffer is
+// aligned to 8 bytes.
 struct GpuSceneLayout {
   struct Part {
     VkDeviceSize offset = 0;
