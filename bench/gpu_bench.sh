@@ -137,10 +137,11 @@ if [[ ${GPU_BENCH_CROSSOVER:-0} == 1 ]]; then
       for spp in 1 2 4; do
         row="| $size | $spp |"
         for device in "--device gpu" "--device cpu --threads 2" "--device cpu --threads 0"; do
-          # shellcheck disable=SC2086 # the device's words are meant to split
-          times=("$(wall --width "${size%x*}" --height "${size#*x}" --spp "$spp" $device)"
-            "$(wall --width "${size%x*}" --height "${size#*x}" --spp "$spp" $device)"
-            "$(wall --width "${size%x*}" --height "${size#*x}" --spp "$spp" $device)")
+          times=()
+          for _ in 1 2 3; do
+            # shellcheck disable=SC2086 # the device's words are meant to split
+            times+=("$(wall --width "${size%x*}" --height "${size#*x}" --spp "$spp" $device)")
+          done
           row="$row $(median3 "${times[@]}") |"
         done
         echo "$row"
