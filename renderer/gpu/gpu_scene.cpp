@@ -43,8 +43,8 @@ void packNode(const BvhNode& node, std::uint32_t* n) {
 // paid back, few enough that the parts spread over the threads.
 constexpr std::size_t kObjectsPerPart = 1 << 15;
 
-}  // namespace
-
+// Writes the scene into `out` (layout.bytes of it) as `layout` places it,
+// the objects on `threads` threads (0: every core).
 void packScene(const RenderScene& scene, const GpuSceneLayout& layout, char* out, int threads) {
   // The objects, most of the bytes (256 each), on the render's threads.
   auto* objects = reinterpret_cast<double*>(out + layout.objects.offset);
@@ -74,6 +74,8 @@ void packScene(const RenderScene& scene, const GpuSceneLayout& layout, char* out
     for (int c = 0; c < 3; ++c) *lights++ = light.colour[c];
   }
 }
+
+}  // namespace
 
 GpuSceneLayout layoutOf(const RenderScene& scene) {
   GpuSceneLayout layout;

@@ -62,10 +62,6 @@ struct GpuSceneLayout {
 };
 GpuSceneLayout layoutOf(const RenderScene& scene);
 
-// Writes the scene into `out` (layout.bytes of it) as `layout` places it,
-// the objects on `threads` threads (0: every core).
-void packScene(const RenderScene& scene, const GpuSceneLayout& layout, char* out, int threads);
-
 // The scene's buffers on the device.
 struct GpuScene {
   Buffer objects, nodes, items, planes, lights;
