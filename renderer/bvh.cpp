@@ -285,7 +285,7 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
   return saturatingProduct(boxes, perBox);
 }
 
-Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
+Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* itemBoxes) {
   if (boxes.empty()) return;
   threads = std::min(resolveThreads(threads), kMaxBuildThreads);
   const std::uint32_t n = static_cast<std::uint32_t>(boxes.size());
@@ -300,6 +300,9 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads) {
   auto keepOrder = [&] {
     resizeOnHugePages(items_, n);
     for (std::uint32_t i = 0; i < n; ++i) items_[i] = items[i].index;
+    if (!itemBoxes) return;
+    itemBoxes->resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) (*itemBoxes)[i] = items[i].box;
   };
   if (threads == 1) {
     nodes_.resize(buildSubtree(in, 0, 0, n, 0));

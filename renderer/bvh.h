@@ -58,7 +58,11 @@ class Bvh {
   /// Builds over the boxes; items are indices into `boxes`. `threads`
   /// threads share the build (0: the hardware's count); the tree is the
   /// same, node for node and item for item, whatever their number.
-  explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
+  /// `itemBoxes`, when given, gets the boxes in the order of items():
+  /// (*itemBoxes)[k] is boxes[items()[k]], neighbours in space near each
+  /// other. It may be &boxes, which is read in full before it is written.
+  explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1,
+               std::vector<Bounds>* itemBoxes = nullptr);
 
   /// The most bytes the build over `boxes` boxes holds at once: the nodes
   /// as reserved (kNodesPerBox), the items, a copy of each box beside its

@@ -100,6 +100,25 @@ TEST(BvhBuild, DeepTreesWithLeavesOfManyBoxesAreTheSameWhateverTheThreadCount) {
   for (int threads : {2, 3, 4}) expectSameTree(one, Bvh(boxes, threads), threads);
 }
 
+// The boxes in the items' order, into another vector or back into the
+// boxes themselves, on one thread and on several.
+TEST(BvhBuild, GivesTheBoxesInTheOrderOfItsItems) {
+  for (int threads : {1, 3}) {
+    std::vector<Bounds> boxes = randomBoxes(11, 40000);
+    std::vector<Bounds> inOrder;
+    Bvh bvh(boxes, threads, &inOrder);
+    ASSERT_EQ(inOrder.size(), boxes.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      const Bounds& expected = boxes[bvh.items()[k]];
+      ASSERT_EQ(std::memcmp(&inOrder[k], &expected, sizeof(Bounds)), 0) << "item " << k;
+    }
+    std::vector<Bounds> inPlace = boxes;
+    Bvh again(inPlace, threads, &inPlace);
+    expectSameTree(bvh, again, threads);
+    ASSERT_EQ(std::memcmp(inPlace.data(), inOrder.data(), inOrder.size() * sizeof(Bounds)), 0);
+  }
+}
+
 TEST(BvhBuild, NoBoxesMakeAnEmptyTree) {
   EXPECT_TRUE(Bvh(std::vector<Bounds>{}, 4).empty());
 }
