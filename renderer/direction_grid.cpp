@@ -19,13 +19,17 @@ bool finite(const Bounds& b) {
          std::isfinite(b.hi.x) && std::isfinite(b.hi.y) && std::isfinite(b.hi.z);
 }
 
-// The cells [low, high] of one axis of a window that the tangent range
-// [from, to] covers, widened by the margin; false when it misses the window.
-bool cellSpan(double from, double to, double windowLow, double scale, int cells, int& low,
-              int& high) {
+// [from, to] widened by the margin.
+void widen(double& from, double& to) {
   from -= DirectionGrid::kMargin * (1.0 + std::abs(from));
   to += DirectionGrid::kMargin * (1.0 + std::abs(to));
-  // The same expression as cellOf's, (u - windowLow) * scale, which only
+}
+
+// The cells [low, high] of one axis of a window that the widened tangent
+// range [from, to] covers; false when it misses the window.
+bool cellSpan(double from, double to, double windowLow, double scale, int cells, int& low,
+              int& high) {
+  // The same expression as cellAt's, (u - windowLow) * scale, which only
   // grows with u: a lookup inside [from, to] lands inside [low, high].
   double x = (from - windowLow) * scale;
   double y = (to - windowLow) * scale;
@@ -35,25 +39,43 @@ bool cellSpan(double from, double to, double windowLow, double scale, int cells,
   return true;
 }
 
+// Columns and rows for about `cells` cells, about square, over a
+// rectangle `width` x `height` (both above 0): each at least 1, their
+// product at most `cells`.
+void cutRectangle(double width, double height, std::uint64_t cells, int& columns, int& rows) {
+  double across = std::round(std::sqrt(static_cast<double>(cells) * (width / height)));
+  std::uint64_t c = static_cast<std::uint64_t>(std::clamp(across, 1.0, static_cast<double>(cells)));
+  columns = static_cast<int>(c);
+  rows = static_cast<int>(std::max<std::uint64_t>(cells / c, 1));
+}
+
 }  // namespace
+
+std::uint64_t DirectionGrid::FaceCells::forFace(std::uint64_t boxes, double boxArea,
+                                                double area) const {
+  double wanted = perBox * static_cast<double>(boxes);
+  // The mean box's area is boxArea / boxes.
+  if (boxArea > 0.0)
+    wanted = std::min(wanted, perBoxArea * area * static_cast<double>(boxes) / boxArea);
+  // Not a number gives least.
+  double cells = std::max(std::ceil(wanted), static_cast<double>(least));
+  return static_cast<std::uint64_t>(
+      std::min({cells, static_cast<double>(most), static_cast<double>(kMaxFaceCells)}));
+}
+
+std::uint64_t DirectionGrid::FaceCells::bound(std::uint64_t boxes) const {
+  return forFace(boxes, 0.0, 0.0);
+}
 
 DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
                              const std::vector<Bounds>& boxes, const Limits& limits)
-    : DirectionGrid(apex, std::move(windows), boxes, limits, 0) {}
+    : DirectionGrid(apex, std::move(windows), boxes, limits, nullptr, {}) {}
 
 DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
                              const std::vector<Bounds>& boxes, const Limits& limits,
-                             int cubeResolution)
-    : apex_(apex),
-      windows_(std::move(windows)),
-      cubeResolution_(cubeResolution),
-      cubeScale_(cubeResolution / 2.0) {
+                             const FaceCells* cubeCells, std::span<const std::uint32_t> labels)
+    : apex_(apex), windows_(std::move(windows)), cube_(cubeCells != nullptr) {
   windows_.resize(std::min<std::size_t>(windows_.size(), kMaxWindows));
-  for (std::size_t w = 0; w < windows_.size(); ++w) {
-    const GridWindow& win = windows_[w];
-    scales_[w] =
-        glm::dvec2(win.columns / (win.uHigh - win.uLow), win.rows / (win.vHigh - win.vLow));
-  }
 
   // Step 1: the scale of the scene as seen from the apex, which sets how
   // near a box must be to be listed everywhere, and how far a lookup may go.
@@ -67,33 +89,33 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   double farLookup = boxes.empty() ? kInfinity : limits.farLookup * reach;
 
   // Step 2: the cells of each box, found once, giving up past the budget.
-  std::uint64_t windowCells = 0;
-  for (const GridWindow& w : windows_) {
-    windowCells += static_cast<std::uint64_t>(std::max(w.columns, 0)) * std::max(w.rows, 0);
+  // A cube's faces are fitted to what their boxes reach first, and where
+  // the boxes cover too many cells, cut a quarter as fine, then again,
+  // down to kLeastRetryCells a face.
+  std::array<FaceReach, kMaxWindows> reaching{};
+  if (cube_) reaching = fitCubeFaces(boxes);
+  FaceCells cut = cube_ ? *cubeCells : FaceCells{};
+  BoxCells binned;
+  for (;;) {
+    if (cube_) cutCubeFaces(reaching, cut);
+    for (std::size_t w = 0; w < windows_.size(); ++w) {
+      const GridWindow& win = windows_[w];
+      scales_[w] =
+          glm::dvec2(win.columns / (win.uHigh - win.uLow), win.rows / (win.vHigh - win.vLow));
+    }
+    if (coverBoxes(boxes, limits, binned)) break;
+    std::uint64_t finest = 0;
+    for (const GridWindow& w : windows_) {
+      finest = std::max<std::uint64_t>(finest, static_cast<std::uint64_t>(w.columns) * w.rows);
+    }
+    if (!cube_ || finest <= kLeastRetryCells) return;
+    cut =
+        FaceCells{cut.perBox / 4.0, cut.perBoxArea / 4.0, std::max<std::uint64_t>(cut.least / 4, 1),
+                  std::max<std::uint64_t>(cut.most / 4, 1)};
   }
-  // At most kNoCell - 1 entries in all, so that a cell's start fits its
-  // 32 bits.
-  std::uint64_t budget = std::min<std::uint64_t>(
-      saturatingSum(saturatingProduct(limits.coverPerBox, boxes.size()), windowCells), kNoCell - 1);
-  std::uint64_t covered = 0;
-  std::vector<CellRange> ranges;
-  ranges.reserve(boxes.size());
-  std::vector<std::uint32_t> firstRange(boxes.size() + 1, 0);
-  std::array<bool, kMaxWindows> used{};
-  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
-    firstRange[i] = static_cast<std::uint32_t>(ranges.size());
-    bool over = false;
-    forEachCover(boxes[i], [&](const CellRange& r) {
-      covered += static_cast<std::uint64_t>(r.columnHigh - r.columnLow + 1) *
-                 static_cast<std::uint64_t>(r.rowHigh - r.rowLow + 1);
-      if (covered > budget || ranges.size() >= kNoCell) over = true;
-      if (over) return;
-      ranges.push_back(r);
-      used[r.window] = true;
-    });
-    if (over) return;
-  }
-  firstRange[boxes.size()] = static_cast<std::uint32_t>(ranges.size());
+  const std::vector<CellRange>& ranges = binned.ranges;
+  const std::vector<std::uint32_t>& firstRange = binned.firstRange;
+  const std::array<bool, kMaxWindows>& used = binned.used;
 
   // Step 3: cells for the windows that some box reaches; the others share
   // one empty cell, the last.
@@ -108,6 +130,20 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   if (cells + 1 >= kNoCell) return;
   emptyCell_ = static_cast<std::uint32_t>(cells);
   firstCell_.push_back(static_cast<std::uint32_t>(++cells));
+  for (std::size_t w = 0; w < windows_.size(); ++w) {
+    const GridWindow& win = windows_[w];
+    WindowLookup& lookup = lookups_[w];
+    if (used[w]) {
+      lookup = WindowLookup{win.uLow,     win.uHigh,     win.vLow,    win.vHigh, scales_[w].x,
+                            scales_[w].y, firstCell_[w], win.columns, win.rows};
+    }
+    glm::dvec4 open = cube_ ? glm::dvec4(-1.0, 1.0, -1.0, 1.0)
+                            : glm::dvec4(win.uLow, win.uHigh, win.vLow, win.vHigh);
+    lookup.openULow = open.x;
+    lookup.openUHigh = open.y;
+    lookup.openVLow = open.z;
+    lookup.openVHigh = open.w;
+  }
   auto forEachCell = [&](const CellRange& r, auto&& visit) {
     std::uint64_t first = firstCell_[r.window];
     int columns = windows_[r.window].columns;
@@ -137,17 +173,53 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   start_[cells] = static_cast<std::uint32_t>(total);
   resizeOnHugePages(items_, total);
   for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    std::uint32_t item = labels.empty() ? i : labels[i];
     for (std::uint32_t r = firstRange[i]; r < firstRange[i + 1]; ++r) {
       forEachCell(ranges[r], [&](std::uint64_t cell) {
-        if (!full_[cell]) items_[counts[cell]++] = i;
+        if (!full_[cell]) items_[counts[cell]++] = item;
       });
     }
   }
   farLookup_ = farLookup;
 }
 
+bool DirectionGrid::coverBoxes(const std::vector<Bounds>& boxes, const Limits& limits,
+                               BoxCells& binned) const {
+  std::uint64_t windowCells = 0;
+  for (const GridWindow& w : windows_) {
+    windowCells += static_cast<std::uint64_t>(std::max(w.columns, 0)) * std::max(w.rows, 0);
+  }
+  // At most kNoCell - 1 entries in all, so that a cell's start fits its
+  // 32 bits.
+  std::uint64_t budget = std::min<std::uint64_t>(
+      saturatingSum(saturatingProduct(limits.coverPerBox, boxes.size()), windowCells), kNoCell - 1);
+  std::uint64_t covered = 0;
+  binned.ranges.clear();
+  binned.ranges.reserve(boxes.size());
+  binned.firstRange.assign(boxes.size() + 1, 0);
+  binned.used.fill(false);
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    binned.firstRange[i] = static_cast<std::uint32_t>(binned.ranges.size());
+    bool over = false;
+    forEachReach(boxes[i], [&](int window, const TangentRange& tangents) {
+      CellRange r;
+      if (over || !cover(tangents, window, r)) return;
+      covered += static_cast<std::uint64_t>(r.columnHigh - r.columnLow + 1) *
+                 static_cast<std::uint64_t>(r.rowHigh - r.rowLow + 1);
+      if (covered > budget || binned.ranges.size() >= kNoCell) over = true;
+      if (over) return;
+      binned.ranges.push_back(r);
+      binned.used[r.window] = true;
+    });
+    if (over) return false;
+  }
+  binned.firstRange[boxes.size()] = static_cast<std::uint32_t>(binned.ranges.size());
+  return true;
+}
+
 DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
-                                        int resolution, const Limits& limits) {
+                                        const FaceCells& cells, const Limits& limits,
+                                        std::span<const std::uint32_t> labels) {
   std::vector<GridWindow> faces;
   for (int axis = 0; axis < 3; ++axis) {
     for (double sign : {1.0, -1.0}) {
@@ -158,14 +230,73 @@ DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vecto
       face.uAxis[(axis + 1) % 3] = 1.0;
       face.vAxis = glm::dvec3(0.0);
       face.vAxis[(axis + 2) % 3] = 1.0;
-      face.columns = face.rows = resolution;
       faces.push_back(face);
     }
   }
-  return DirectionGrid(apex, std::move(faces), boxes, limits, resolution);
+  if (labels.size() != boxes.size()) labels = {};
+  return DirectionGrid(apex, std::move(faces), boxes, limits, &cells, labels);
 }
 
-bool DirectionGrid::coverOnCube(const Bounds& box, int window, CellRange& range) const {
+DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
+                                        int resolution, const Limits& limits) {
+  std::uint64_t side = static_cast<std::uint64_t>(std::max(resolution, 1));
+  return cubeAround(apex, boxes, FaceCells{0.0, 0.0, side * side, side * side}, limits);
+}
+
+std::array<DirectionGrid::FaceReach, DirectionGrid::kMaxWindows> DirectionGrid::fitCubeFaces(
+    const std::vector<Bounds>& boxes) {
+  // Per face, the rectangle its boxes reach, widened by the margin as
+  // their cells will be, how many reach it, and their areas within it.
+  std::array<TangentRange, kMaxWindows> fitted;
+  fitted.fill(TangentRange{kInfinity, -kInfinity, kInfinity, -kInfinity});
+  std::array<FaceReach, kMaxWindows> reaching{};
+  auto within = [](double from, double to) {
+    return std::max(0.0, std::min(to, 1.0) - std::max(from, -1.0));
+  };
+  for (const Bounds& box : boxes) {
+    forEachReach(box, [&](int w, const TangentRange& r) {
+      TangentRange& f = fitted[w];
+      f = TangentRange{std::min(f.uFrom, r.uFrom), std::max(f.uTo, r.uTo),
+                       std::min(f.vFrom, r.vFrom), std::max(f.vTo, r.vTo)};
+      ++reaching[w].boxes;
+      reaching[w].area += within(r.uFrom, r.uTo) * within(r.vFrom, r.vTo);
+    });
+  }
+  // Each face's window is that rectangle, within the face.
+  for (std::size_t w = 0; w < windows_.size(); ++w) {
+    GridWindow& win = windows_[w];
+    const TangentRange& f = fitted[w];
+    win.uLow = std::clamp(f.uFrom, -1.0, 1.0);
+    win.uHigh = std::clamp(f.uTo, -1.0, 1.0);
+    win.vLow = std::clamp(f.vFrom, -1.0, 1.0);
+    win.vHigh = std::clamp(f.vTo, -1.0, 1.0);
+    // A widened range is never a point, but one outside the face clamps
+    // to its edge: such a face, and one no box reaches, is the whole face.
+    if (reaching[w].boxes == 0 || !(win.uHigh > win.uLow && win.vHigh > win.vLow)) {
+      win.uLow = win.vLow = -1.0;
+      win.uHigh = win.vHigh = 1.0;
+    }
+  }
+  return reaching;
+}
+
+void DirectionGrid::cutCubeFaces(const std::array<FaceReach, kMaxWindows>& reaching,
+                                 const FaceCells& cells) {
+  for (std::size_t w = 0; w < windows_.size(); ++w) {
+    GridWindow& win = windows_[w];
+    // A face that no box reaches keeps one cell, which no box covers.
+    if (reaching[w].boxes == 0) {
+      win.columns = win.rows = 1;
+      continue;
+    }
+    double width = win.uHigh - win.uLow;
+    double height = win.vHigh - win.vLow;
+    cutRectangle(width, height, cells.forFace(reaching[w].boxes, reaching[w].area, width * height),
+                 win.columns, win.rows);
+  }
+}
+
+bool DirectionGrid::reachOnCube(const Bounds& box, int window, TangentRange& range) const {
   // The frame is the axes: f, a and b are the box's own intervals, apex
   // subtracted (for a -axis face, f's negated), and a / f over it is
   // extreme at the ends of a and f.
@@ -182,22 +313,18 @@ bool DirectionGrid::coverOnCube(const Bounds& box, int window, CellRange& range)
       from = std::min(a0 / f0, a0 / f1);
       to = std::max(a1 / f0, a1 / f1);
     } else {
-      // Reaching f = 0, as in cover.
+      // Reaching f = 0, as in reach.
       from = a0 < 0.0 ? -kInfinity : a0 / f1;
       to = a1 > 0.0 ? kInfinity : a1 / f1;
     }
   };
-  double uFrom, uTo, vFrom, vTo;
-  tangentRange(uAxis, uFrom, uTo);
-  tangentRange(vAxis, vFrom, vTo);
-  range.window = window;
-  return cellSpan(uFrom, uTo, -1.0, cubeScale_, cubeResolution_, range.columnLow,
-                  range.columnHigh) &&
-         cellSpan(vFrom, vTo, -1.0, cubeScale_, cubeResolution_, range.rowLow, range.rowHigh);
+  tangentRange(uAxis, range.uFrom, range.uTo);
+  tangentRange(vAxis, range.vFrom, range.vTo);
+  return true;
 }
 
-bool DirectionGrid::cover(const Bounds& box, int window, CellRange& range) const {
-  if (cubeResolution_ > 0) return coverOnCube(box, window, range);
+bool DirectionGrid::reach(const Bounds& box, int window, TangentRange& range) const {
+  if (cube_) return reachOnCube(box, window, range);
   const GridWindow& win = windows_[window];
   // The box's corners in the window's frame; a / f over a convex body lying
   // in f > 0 is extreme at its corners.
@@ -247,37 +374,50 @@ bool DirectionGrid::cover(const Bounds& box, int window, CellRange& range) const
     vFrom = bMin < 0.0 ? -kInfinity : bMin / fMax;
     vTo = bMax > 0.0 ? kInfinity : bMax / fMax;
   }
-  range.window = window;
-  return cellSpan(uFrom, uTo, win.uLow, win.columns / (win.uHigh - win.uLow), win.columns,
-                  range.columnLow, range.columnHigh) &&
-         cellSpan(vFrom, vTo, win.vLow, win.rows / (win.vHigh - win.vLow), win.rows, range.rowLow,
-                  range.rowHigh);
+  range = TangentRange{uFrom, uTo, vFrom, vTo};
+  return true;
 }
 
 template <typename Visit>
-void DirectionGrid::forEachCover(const Bounds& box, Visit&& visit) const {
+void DirectionGrid::forEachReach(const Bounds& box, Visit&& visit) const {
   // How far the box lies from the apex along each axis (0 where it spans
   // the apex's coordinate).
   glm::dvec3 away = glm::max(glm::max(box.lo - apex_, apex_ - box.hi), glm::dvec3(0.0));
   bool everywhere = !finite(box) || !(largestMagnitude(away) > nearApex_);
   for (int w = 0; w < static_cast<int>(windows_.size()); ++w) {
-    CellRange range{w, 0, windows_[w].columns - 1, 0, windows_[w].rows - 1};
-    if (windows_[w].columns <= 0 || windows_[w].rows <= 0) continue;
-    if (!everywhere && cubeResolution_ > 0) {
+    if (everywhere) {
+      visit(w, TangentRange{-kInfinity, kInfinity, -kInfinity, kInfinity});
+      continue;
+    }
+    if (cube_) {
       // A cube face sees only directions within 45 degrees of its axis (a
       // lookup's |u| and |v| are at most 1, and a shadow ray's direction
       // strays from its lookup's by far less than 1e-5): a box nearer the
       // apex on another axis than its farthest reach along this one lies
       // outside it.
       int axis = w / 2;
-      double reach = w % 2 ? apex_[axis] - box.lo[axis] : box.hi[axis] - apex_[axis];
-      double limit = reach * (1.0 + 1e-5);
-      if (!(reach > 0.0) || away[(axis + 1) % 3] > limit || away[(axis + 2) % 3] > limit) {
+      double ahead = w % 2 ? apex_[axis] - box.lo[axis] : box.hi[axis] - apex_[axis];
+      double limit = ahead * (1.0 + 1e-5);
+      if (!(ahead > 0.0) || away[(axis + 1) % 3] > limit || away[(axis + 2) % 3] > limit) {
         continue;
       }
     }
-    if (everywhere || cover(box, w, range)) visit(range);
+    TangentRange range;
+    if (!reach(box, w, range)) continue;
+    widen(range.uFrom, range.uTo);
+    widen(range.vFrom, range.vTo);
+    visit(w, range);
   }
+}
+
+bool DirectionGrid::cover(const TangentRange& range, int window, CellRange& cells) const {
+  const GridWindow& win = windows_[window];
+  if (win.columns <= 0 || win.rows <= 0) return false;
+  cells.window = window;
+  return cellSpan(range.uFrom, range.uTo, win.uLow, scales_[window].x, win.columns, cells.columnLow,
+                  cells.columnHigh) &&
+         cellSpan(range.vFrom, range.vTo, win.vLow, scales_[window].y, win.rows, cells.rowLow,
+                  cells.rowHigh);
 }
 
 std::array<glm::dvec3, 4> DirectionGrid::cellCorners(std::uint32_t cell) const {

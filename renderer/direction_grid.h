@@ -7,8 +7,10 @@
 // A window is a rectangle of directions in the tangent plane of a frame:
 // the directions w with f = forward . w > 0 whose tangent coordinates
 // (uAxis . w / f, vAxis . w / f) lie in [uLow, uHigh] x [vLow, vHigh], cut
-// into columns x rows cells. Six windows, the faces of a cube, cover every
-// direction from a light; one, the image's, covers a camera's rays.
+// into columns x rows cells. Six windows, on the faces of a cube, cover
+// every direction from a light, each fitted to the rectangle its boxes
+// reach (a lookup elsewhere on the face meets no box); one, the image's,
+// covers a camera's rays.
 //
 // Conservative: a cell lists every box that meets its cone widened by
 // kMargin in tangent coordinates (relative above 1), a million times the
@@ -24,6 +26,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <span>
 #include <vector>
 
@@ -60,6 +63,12 @@ class DirectionGrid {
   /// kNearApex and kFarLookup keep a shadow ray's direction within 3e-7
   /// (relative) of the lookup's.
   static constexpr double kFarLookup = 100.0;
+  /// The most cells a cube face gets, whatever FaceCells asks for.
+  static constexpr std::uint64_t kMaxFaceCells = std::uint64_t{1} << 26;
+  /// Where a cube's boxes cover more cells than Limits allows, its faces
+  /// are cut a quarter as fine, and again, until they fit or no face has
+  /// more cells than this: then it has no grid.
+  static constexpr std::uint64_t kLeastRetryCells = 1024;
 
   struct Limits {
     /// The most boxes a cell lists.
@@ -72,12 +81,38 @@ class DirectionGrid {
     double farLookup = kFarLookup;
   };
 
+  /// How cubeAround cuts each face of its cube: the rectangle of the face
+  /// that its boxes reach, in cells about square, `perBox` for each box
+  /// that reaches the face, but no more than `perBoxArea` in the area of
+  /// the mean box there (boxes that overlap, seen from the apex, need no
+  /// more cells than they cover), at least `least` and at most `most`.
+  struct FaceCells {
+    double perBox = 8.0;
+    double perBoxArea = 8.0;
+    std::uint64_t least = 1;
+    std::uint64_t most = std::uint64_t{1} << 20;
+    /// The cells for a face that `boxes` boxes reach, whose tangent areas
+    /// (within the face) add up to `boxArea` of the face's `area`.
+    std::uint64_t forFace(std::uint64_t boxes, double boxArea, double area) const;
+    /// The most cells a face can get where `boxes` boxes reach it.
+    std::uint64_t bound(std::uint64_t boxes) const;
+  };
+
   DirectionGrid() = default;
   /// Bins `boxes` (item i is boxes[i]) as seen from `apex` in `windows`.
   DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
                 const std::vector<Bounds>& boxes, const Limits& limits);
-  /// Six windows of resolution x resolution cells, the faces of a cube
-  /// around `apex`, in the order cubeWindowOf numbers them.
+  /// Six windows on the faces of a cube around `apex`, in the order
+  /// cubeWindowOf numbers them, each the rectangle of its face that the
+  /// boxes reach, cut as `cells` says. Box k is listed as item labels[k]
+  /// (as item k where `labels` is empty or of another size): boxes in a
+  /// BVH's order, labelled by its items, cover cells near those of the
+  /// box before, which makes the build quicker than boxes at random.
+  static DirectionGrid cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
+                                  const FaceCells& cells, const Limits& limits,
+                                  std::span<const std::uint32_t> labels = {});
+  /// cubeAround with about resolution x resolution cells on each face
+  /// that a box reaches.
   static DirectionGrid cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
                                   int resolution, const Limits& limits);
 
@@ -89,8 +124,9 @@ class DirectionGrid {
   std::uint32_t cellCount() const { return static_cast<std::uint32_t>(full_.size()); }
 
   /// The cell of window `window` that the direction w from the apex falls
-  /// in, or kNoCell where the grid cannot answer (w outside the window, too
-  /// long, not a number, or the grid not built).
+  /// in, or kNoCell where the grid cannot answer (w outside the window,
+  /// for a cube outside the face, too long, not a number, or the grid not
+  /// built).
   std::uint32_t cellOf(int window, const glm::dvec3& w) const {
     if (start_.empty() || !(largestMagnitude(w) <= farLookup_)) return kNoCell;
     const GridWindow& win = windows_[window];
@@ -99,12 +135,7 @@ class DirectionGrid {
     // One division for both coordinates: a rounding apart from a / f,
     // within the margin.
     double inverse = 1.0 / f;
-    double x = (glm::dot(win.uAxis, w) * inverse - win.uLow) * scales_[window].x;
-    double y = (glm::dot(win.vAxis, w) * inverse - win.vLow) * scales_[window].y;
-    if (!(x >= 0.0 && x < win.columns && y >= 0.0 && y < win.rows)) return kNoCell;
-    if (!windowUsed_[window]) return emptyCell_;
-    return firstCell_[window] + static_cast<std::uint32_t>(y) * win.columns +
-           static_cast<std::uint32_t>(x);
+    return cellAt(window, glm::dot(win.uAxis, w) * inverse, glm::dot(win.vAxis, w) * inverse);
   }
   /// The cube face of cubeAround that holds w: 2 * axis of its largest
   /// component (the lowest axis on a tie), plus 1 where that is negative.
@@ -114,9 +145,7 @@ class DirectionGrid {
     return 2 * axis + (w[axis] < 0.0 ? 1 : 0);
   }
   /// cellOf(cubeWindowOf(w), w) for a grid made by cubeAround, in fewer
-  /// steps: the frame's dot products are its components, and one division
-  /// serves both coordinates (a rounding apart from cellOf's, within the
-  /// margin).
+  /// steps: the frame's dot products are its components, the same values.
   std::uint32_t cubeCellOf(const glm::dvec3& w) const {
     double ax = std::abs(w.x), ay = std::abs(w.y), az = std::abs(w.z);
     int axis = ay > ax ? 1 : 0;
@@ -126,15 +155,10 @@ class DirectionGrid {
       f = az;
     }
     // Not a number fails both tests.
-    if (!(f <= farLookup_ && f > 0.0)) return kNoCell;
+    if (start_.empty() || !(f <= farLookup_ && f > 0.0)) return kNoCell;
     double inverse = 1.0 / f;
-    double x = (w[axis == 2 ? 0 : axis + 1] * inverse + 1.0) * cubeScale_;
-    double y = (w[axis == 0 ? 2 : axis - 1] * inverse + 1.0) * cubeScale_;
-    if (!(x >= 0.0 && x < cubeResolution_ && y >= 0.0 && y < cubeResolution_)) return kNoCell;
-    int window = 2 * axis + (w[axis] < 0.0 ? 1 : 0);
-    if (!windowUsed_[window]) return emptyCell_;
-    return firstCell_[window] + static_cast<std::uint32_t>(y) * cubeResolution_ +
-           static_cast<std::uint32_t>(x);
+    return cellAt(2 * axis + (w[axis] < 0.0 ? 1 : 0), w[axis == 2 ? 0 : axis + 1] * inverse,
+                  w[axis == 0 ? 2 : axis - 1] * inverse);
   }
 
   bool full(std::uint32_t cell) const { return full_[cell] != 0; }
@@ -157,14 +181,61 @@ class DirectionGrid {
     int columnLow, columnHigh, rowLow, rowHigh;
   };
   static_assert(sizeof(CellRange) <= kRangeBytes);
-  // cubeResolution > 0: the windows are the faces of cubeAround.
+  // The tangent coordinates a box reaches on a window, widened by the
+  // margin; infinite on the sides where it is unbounded.
+  struct TangentRange {
+    double uFrom, uTo, vFrom, vTo;
+  };
+  // With `cubeCells`: the windows are the faces of cubeAround, each fitted
+  // to what its boxes reach.
   DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
-                const std::vector<Bounds>& boxes, const Limits& limits, int cubeResolution);
-  // The cells a box covers on one window, or false for none.
-  bool cover(const Bounds& box, int window, CellRange& range) const;
-  bool coverOnCube(const Bounds& box, int window, CellRange& range) const;
+                const std::vector<Bounds>& boxes, const Limits& limits, const FaceCells* cubeCells,
+                std::span<const std::uint32_t> labels);
+  // The cell of tangent point (u, v) on window `window`: kNoCell outside
+  // the window (a cube's face: outside the face), the empty cell on a
+  // cube's face outside the rectangle its boxes reach.
+  std::uint32_t cellAt(int window, double u, double v) const {
+    const WindowLookup& w = lookups_[window];
+    if (u >= w.uLow && u <= w.uHigh && v >= w.vLow && v <= w.vHigh) {
+      // The same formula as a box's cells (cellSpan), which only grows
+      // with u, clamped as they are.
+      int column = std::min(static_cast<int>((u - w.uLow) * w.uScale), w.columns - 1);
+      int row = std::min(static_cast<int>((v - w.vLow) * w.vScale), w.rows - 1);
+      return w.firstCell + static_cast<std::uint32_t>(row) * w.columns +
+             static_cast<std::uint32_t>(column);
+    }
+    // Not a number fails both tests.
+    bool answered = u >= w.openULow && u <= w.openUHigh && v >= w.openVLow && v <= w.openVHigh;
+    return answered ? emptyCell_ : kNoCell;
+  }
+  // The cells each box covers: per box, its first range, and per window
+  // whether any box covers it.
+  struct BoxCells {
+    std::vector<CellRange> ranges;
+    std::vector<std::uint32_t> firstRange;
+    std::array<bool, kMaxWindows> used{};
+  };
+  // The boxes that reach a cube face, and the sum of their tangent areas
+  // there.
+  struct FaceReach {
+    std::uint64_t boxes = 0;
+    double area = 0.0;
+  };
+  // Fits each cube face to the rectangle its boxes reach.
+  std::array<FaceReach, kMaxWindows> fitCubeFaces(const std::vector<Bounds>& boxes);
+  // Cuts each fitted face as `cells` says for the boxes that reach it.
+  void cutCubeFaces(const std::array<FaceReach, kMaxWindows>& reaching, const FaceCells& cells);
+  // Bins the boxes into `binned`, or false where they cover more cells
+  // than `limits` allows.
+  bool coverBoxes(const std::vector<Bounds>& boxes, const Limits& limits, BoxCells& binned) const;
+  // What a box reaches on one window, or false for nothing.
+  bool reach(const Bounds& box, int window, TangentRange& range) const;
+  bool reachOnCube(const Bounds& box, int window, TangentRange& range) const;
+  // Calls visit(window, range) for each window the box reaches.
   template <typename Visit>
-  void forEachCover(const Bounds& box, Visit&& visit) const;
+  void forEachReach(const Bounds& box, Visit&& visit) const;
+  // The cells of `range` on window `window`, or false for none.
+  bool cover(const TangentRange& range, int window, CellRange& cells) const;
 
   glm::dvec3 apex_{0.0};
   std::vector<GridWindow> windows_;
@@ -178,8 +249,19 @@ class DirectionGrid {
   std::uint32_t emptyCell_ = 0;
   double nearApex_ = 0.0;
   double farLookup_ = -1.0;  // no lookup succeeds until the grid is built
-  int cubeResolution_ = 0;
-  double cubeScale_ = 0.0;
+  // What a lookup on a window reads, side by side: the rectangle cut into
+  // cells (none where no box reaches the window), its scales and cells,
+  // and where lookups are answered (the window's own rectangle, or for a
+  // cube the face).
+  struct WindowLookup {
+    double uLow = 1.0, uHigh = -1.0, vLow = 1.0, vHigh = -1.0;
+    double uScale = 0.0, vScale = 0.0;
+    std::uint32_t firstCell = 0;
+    int columns = 0, rows = 0;
+    double openULow = 1.0, openUHigh = -1.0, openVLow = 1.0, openVHigh = -1.0;
+  };
+  std::array<WindowLookup, kMaxWindows> lookups_{};
+  bool cube_ = false;
   std::vector<std::uint32_t> start_;  // per cell, then the end
   std::vector<std::uint32_t> items_;
   std::vector<std::uint8_t> full_;

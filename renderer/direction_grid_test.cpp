@@ -124,13 +124,15 @@ TEST(DirectionGrid, CrowdedCellsAreFullAndTooMuchCoverBuildsNothing) {
   for (int i = 0; i < 40; ++i) {
     boxes.push_back(Bounds{glm::dvec3(-0.1, -0.1, 10.0 + i), glm::dvec3(0.1, 0.1, 10.5 + i)});
   }
-  DirectionGrid grid = DirectionGrid::cubeAround(glm::dvec3(0.0), boxes, 64, {});
+  DirectionGrid grid =
+      DirectionGrid::cubeAround(glm::dvec3(0.0), boxes, DirectionGrid::FaceCells{}, {});
   std::uint32_t cell = grid.cubeCellOf({0.0, 0.0, 1.0});
   ASSERT_NE(cell, DirectionGrid::kNoCell);
   EXPECT_TRUE(grid.full(cell));
   EXPECT_TRUE(grid.items(cell).empty());
   // Boxes wrapping the apex at a distance cover every cell of every face:
-  // far over 16 cells a box, so no grid.
+  // far over 16 cells a box at 64 x 64 cells a face, and still at a
+  // quarter of that, so no grid.
   std::vector<Bounds> shells(4, Bounds{glm::dvec3(-2.0), glm::dvec3(2.0)});
   DirectionGrid none = DirectionGrid::cubeAround(glm::dvec3(0.0), shells, 64, {});
   EXPECT_FALSE(none.built());
@@ -147,6 +149,93 @@ TEST(DirectionGrid, FacesNoBoxReachesShareOneEmptyCell) {
   EXPECT_LT(grid.cellCount(), 6u * 32 * 32);
   std::uint32_t down = grid.cubeCellOf({0.0, -1.0, 0.0});
   ASSERT_EQ(grid.items(down).size(), 1u);
+}
+
+// A face is cut over the rectangle its boxes reach: finer there than the
+// whole face in as many cells, and the rest of the face, which no box
+// reaches, answers with the empty cell (a ray there meets nothing).
+TEST(DirectionGrid, AFaceIsCutOverTheRectangleItsBoxesReach) {
+  Random random(74);
+  // A floor of boxes seen from above, as a light sees one.
+  std::vector<Bounds> boxes;
+  for (int i = 0; i < 400; ++i) {
+    glm::dvec3 centre(random.uniform(-10.0, 10.0), 0.0, random.uniform(-10.0, 10.0));
+    boxes.push_back(Bounds{centre - glm::dvec3(0.2), centre + glm::dvec3(0.2)});
+  }
+  glm::dvec3 apex(0.0, 100.0, 0.0);
+  DirectionGrid grid = DirectionGrid::cubeAround(apex, boxes, 32, {});
+  ASSERT_TRUE(grid.built());
+  const GridWindow& down = grid.windows()[3];  // -y
+  // At most (10 + 0.2) / (100 - 0.2) each side of the centre, of a face
+  // 2 across.
+  for (double across : {down.uHigh - down.uLow, down.vHigh - down.vLow}) {
+    EXPECT_GT(across, 0.18);
+    EXPECT_LT(across, 0.2045);
+  }
+  EXPECT_EQ(down.columns * down.rows, 32 * 32);
+  // Beside the floor, on the same face: nothing, and said so.
+  std::uint32_t beside = grid.cubeCellOf({0.5, -1.0, 0.5});
+  ASSERT_NE(beside, DirectionGrid::kNoCell);
+  EXPECT_TRUE(grid.items(beside).empty());
+  EXPECT_FALSE(grid.full(beside));
+  // Every direction, on the floor or off it: the shortcut's cell is the
+  // general lookup's, and it lists every box the direction meets.
+  int listing = 0;
+  for (int r = 0; r < 4000; ++r) {
+    glm::dvec3 w = r % 2 ? random.direction() : boxes[r % boxes.size()].centre() - apex;
+    std::uint32_t cell = grid.cubeCellOf(w);
+    ASSERT_EQ(cell, grid.cellOf(DirectionGrid::cubeWindowOf(w), w)) << "ray " << r;
+    ASSERT_NE(cell, DirectionGrid::kNoCell) << "ray " << r;
+    expectListed(grid, cell, boxes, w, "ray " + std::to_string(r));
+    listing += !grid.items(cell).empty();
+  }
+  EXPECT_GT(listing, 1500);  // of the 2,000 at a box
+}
+
+// Boxes listed under labels (a BVH's items, the boxes in its order): each
+// cell lists the labels of the boxes the same grid over the boxes in their
+// own order lists.
+TEST(DirectionGrid, BoxesInAnotherOrderAreListedByTheirLabels) {
+  Random random(75);
+  std::vector<Bounds> boxes = randomBoxes(random, 300, 20.0, 1.0);
+  std::vector<std::uint32_t> labels(boxes.size());
+  for (std::uint32_t i = 0; i < labels.size(); ++i) labels[i] = i;
+  for (std::size_t i = labels.size() - 1; i > 0; --i) {
+    std::swap(labels[i], labels[random.below(static_cast<int>(i + 1))]);
+  }
+  std::vector<Bounds> shuffled(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k) shuffled[k] = boxes[labels[k]];
+  glm::dvec3 apex(3.0, 30.0, -4.0);
+  DirectionGrid plain = DirectionGrid::cubeAround(apex, boxes, DirectionGrid::FaceCells{}, {});
+  DirectionGrid labelled =
+      DirectionGrid::cubeAround(apex, shuffled, DirectionGrid::FaceCells{}, {}, labels);
+  ASSERT_TRUE(plain.built());
+  ASSERT_EQ(plain.cellCount(), labelled.cellCount());
+  for (std::uint32_t cell = 0; cell < plain.cellCount(); ++cell) {
+    std::span<const std::uint32_t> a = plain.items(cell);
+    std::span<const std::uint32_t> b = labelled.items(cell);
+    ASSERT_EQ(std::set<std::uint32_t>(a.begin(), a.end()),
+              std::set<std::uint32_t>(b.begin(), b.end()))
+        << "cell " << cell;
+  }
+}
+
+// Cut far too finely for its boxes, a cube is cut a quarter as fine, and
+// again, until they fit its budget; it still lists every box a ray meets.
+TEST(DirectionGrid, TooMuchCoverCutsTheFacesCoarser) {
+  Random random(76);
+  std::vector<Bounds> boxes = randomBoxes(random, 60, 20.0, 2.0);
+  glm::dvec3 apex(0.0, 40.0, 0.0);
+  DirectionGrid::FaceCells fine{1e6, 1e9, 1, std::uint64_t{1} << 20};
+  DirectionGrid grid = DirectionGrid::cubeAround(apex, boxes, fine, {});
+  ASSERT_TRUE(grid.built());
+  // 60 boxes at their first cut: 2^20 cells on the face below.
+  EXPECT_LT(grid.cellCount(), std::uint32_t{1} << 20);
+  EXPECT_GE(grid.cellCount(), std::uint32_t{1} << 10);
+  for (int r = 0; r < 400; ++r) {
+    glm::dvec3 w = boxes[r % boxes.size()].centre() - apex;
+    expectListed(grid, grid.cubeCellOf(w), boxes, w, "ray " + std::to_string(r));
+  }
 }
 
 // Shadow rays toward each light, from points on and among the objects:

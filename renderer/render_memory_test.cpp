@@ -52,11 +52,11 @@ TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   // the top of the tree and of its subtrees, a few bytes a box.
   std::uint64_t parts = 1000 * (2 * sizeof(Bounds) + (sizeof(Bounds) + 8) + 2 * sizeof(BvhNode) +
                                 sizeof(std::uint32_t));
-  // And 7 lights' grids of 128 cells a side: per cell its start, count and
-  // full flag, per entry an index (16 a box, plus one a cell, at most), and
-  // while two build at once, 6 ranges of cells a box each in a vector that
-  // may double, and each item's leaf.
-  std::uint64_t cells = 6 * 128 * 128 + 1;
+  // And 7 lights' grids of at most 8 cells a box on each face: per cell
+  // its start, count and full flag, per entry an index (16 a box, plus one
+  // a cell, at most), and while two build at once, 6 ranges of cells a box
+  // each in a vector that may double, and each item's leaf.
+  std::uint64_t cells = 6 * 8 * 1000 + 1;
   std::uint64_t grids = 7 * (cells * 13 + (16 * 1000 + cells) * 4) + 1000 * (2 * 2 * 6 * 20 + 4);
   EXPECT_GE(e.bvh, parts + grids);
   EXPECT_LE(e.bvh, parts + grids + 1000 * 12);

@@ -71,8 +71,8 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
   std::uint64_t grids = std::min<std::uint64_t>(lights, kMaxLightGrids);
   if (objects >= kMinLightGridObjects && grids > 0) {
     DirectionGrid::Limits limits;
-    std::uint64_t side = static_cast<std::uint64_t>(lightGridResolution(objects));
-    std::uint64_t cells = DirectionGrid::kMaxWindows * side * side + 1;
+    std::uint64_t cells =
+        saturatingProduct(DirectionGrid::kMaxWindows, kLightGridCells.bound(objects)) + 1;
     std::uint64_t entries =
         std::min(saturatingSum(saturatingProduct(limits.coverPerBox, objects), cells),
                  saturatingProduct(limits.perCell, cells));
@@ -126,7 +126,8 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     }
   });
   hasTransparency_ = std::find(transparent.begin(), transparent.end(), 1) != transparent.end();
-  bvh_ = Bvh(boxes, threads);
+  // The boxes in the BVH's order from here on, for the grids' build.
+  bvh_ = Bvh(boxes, threads, &boxes);
   lights_.reserve(scene.lights.size());
   for (const scene::Light& light : scene.lights) {
     lights_.push_back(RenderLight{light.position(), light.colour});
@@ -145,11 +146,10 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     }
     // The grids are independent: up to kGridsBuiltAtOnce at a time (what
     // bytesFor counts), each built by one thread as it would be alone.
-    int resolution = lightGridResolution(boxes.size());
     lightGrids_.resize(std::min(lights_.size(), kMaxLightGrids));
     runParts(lightGrids_.size(), std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
-      lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, resolution,
-                                                 DirectionGrid::Limits{});
+      lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, kLightGridCells,
+                                                 DirectionGrid::Limits{}, bvh_.items());
     });
   }
 }
@@ -226,14 +226,6 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
     closestHits(left, fromEye, leftCount, found);
     for (int k = 0; k < leftCount; ++k) out[leftAt[k]] = found[k];
   }
-}
-
-int RenderScene::lightGridResolution(std::uint64_t bounded) {
-  // Below 64 objects, 32 a side (80 KB a grid rather than 1.3 MB) answer
-  // within 2% of the instructions of 128 (callgrind, 5 to 50 objects).
-  if (bounded < 64) return 32;
-  double side = 4.0 * std::sqrt(static_cast<double>(bounded));
-  return static_cast<int>(std::clamp(side, 128.0, 512.0));
 }
 
 // Inlined into the searches: it runs for every object a ray reaches.

@@ -173,10 +173,15 @@ class RenderScene {
   // that, the packets' walk of a small BVH is about as quick (glass-mirror,
   // 8 objects: 1% fewer instructions with it).
   static constexpr std::size_t kMinEyeGridObjects = 64;
-  // The cells a side of each face of a light's grid for a scene of
-  // `bounded` bounded objects: 32 below 64 of them, 4 sqrt(bounded) from
-  // 128 to 512 above.
-  static int lightGridResolution(std::uint64_t bounded);
+  // How the faces of a light's grid are cut (DirectionGrid::FaceCells):
+  // 8 cells a box, fewer where boxes overlap as seen from the light, on
+  // the rectangle of each face that boxes reach, at most 1024 x 1024.
+  // Against whole faces of 4 sqrt(n) cells a side (at most 512), the same
+  // images and 5% less CPU at floor-100000 in 1080p, 20% less rendering at
+  // floor-1000000 (docs/PERFORMANCE.md, "Light grids fitted to their
+  // boxes"); 16 a box was no quicker and built larger grids.
+  static constexpr DirectionGrid::FaceCells kLightGridCells{8.0, 8.0, 1,
+                                                            std::uint64_t{1024} * 1024};
   // The world box of BVH item `item`, as the constructor made it.
   Bounds itemBounds(std::uint32_t item) const;
 
