@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
 #include <limits>
 
 #include "renderer/huge_pages.h"

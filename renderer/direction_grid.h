@@ -26,7 +26,6 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <glm/vec4.hpp>
 #include <span>
 #include <vector>
 
@@ -154,8 +153,9 @@ class DirectionGrid {
       axis = 2;
       f = az;
     }
-    // Not a number fails both tests.
-    if (start_.empty() || !(f <= farLookup_ && f > 0.0)) return kNoCell;
+    // Not a number fails both tests, as does every lookup before the grid
+    // is built (farLookup_ below 0).
+    if (!(f <= farLookup_ && f > 0.0)) return kNoCell;
     double inverse = 1.0 / f;
     return cellAt(2 * axis + (w[axis] < 0.0 ? 1 : 0), w[axis == 2 ? 0 : axis + 1] * inverse,
                   w[axis == 0 ? 2 : axis - 1] * inverse);
