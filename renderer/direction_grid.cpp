@@ -90,30 +90,8 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   double farLookup = boxes.empty() ? kInfinity : limits.farLookup * reach;
 
   // Step 2: the cells of each box, found once, giving up past the budget.
-  // A cube's faces are fitted to what their boxes reach first, and where
-  // the boxes cover too many cells, cut a quarter as fine, then again,
-  // down to kLeastRetryCells a face.
-  std::array<FaceReach, kMaxWindows> reaching{};
-  if (cube_) reaching = fitCubeFaces(boxes);
-  FaceCells cut = cube_ ? *cubeCells : FaceCells{};
   BoxCells binned;
-  for (;;) {
-    if (cube_) cutCubeFaces(reaching, cut);
-    for (std::size_t w = 0; w < windows_.size(); ++w) {
-      const GridWindow& win = windows_[w];
-      scales_[w] =
-          glm::dvec2(win.columns / (win.uHigh - win.uLow), win.rows / (win.vHigh - win.vLow));
-    }
-    if (coverBoxes(boxes, limits, binned)) break;
-    std::uint64_t finest = 0;
-    for (const GridWindow& w : windows_) {
-      finest = std::max<std::uint64_t>(finest, static_cast<std::uint64_t>(w.columns) * w.rows);
-    }
-    if (!cube_ || finest <= kLeastRetryCells) return;
-    cut =
-        FaceCells{cut.perBox / 4.0, cut.perBoxArea / 4.0, std::max<std::uint64_t>(cut.least / 4, 1),
-                  std::max<std::uint64_t>(cut.most / 4, 1)};
-  }
+  if (!binBoxes(boxes, limits, cubeCells, binned)) return;
   const std::vector<CellRange>& ranges = binned.ranges;
   const std::vector<std::uint32_t>& firstRange = binned.firstRange;
   const std::array<bool, kMaxWindows>& used = binned.used;
@@ -131,20 +109,7 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   if (cells + 1 >= kNoCell) return;
   emptyCell_ = static_cast<std::uint32_t>(cells);
   firstCell_.push_back(static_cast<std::uint32_t>(++cells));
-  for (std::size_t w = 0; w < windows_.size(); ++w) {
-    const GridWindow& win = windows_[w];
-    WindowLookup& lookup = lookups_[w];
-    if (used[w]) {
-      lookup = WindowLookup{win.uLow,     win.uHigh,     win.vLow,    win.vHigh, scales_[w].x,
-                            scales_[w].y, firstCell_[w], win.columns, win.rows};
-    }
-    glm::dvec4 open = cube_ ? glm::dvec4(-1.0, 1.0, -1.0, 1.0)
-                            : glm::dvec4(win.uLow, win.uHigh, win.vLow, win.vHigh);
-    lookup.openULow = open.x;
-    lookup.openUHigh = open.y;
-    lookup.openVLow = open.z;
-    lookup.openVHigh = open.w;
-  }
+  setLookups();
   auto forEachCell = [&](const CellRange& r, auto&& visit) {
     std::uint64_t first = firstCell_[r.window];
     int columns = windows_[r.window].columns;
@@ -182,6 +147,50 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
     }
   }
   farLookup_ = farLookup;
+}
+
+bool DirectionGrid::binBoxes(const std::vector<Bounds>& boxes, const Limits& limits,
+                             const FaceCells* cubeCells, BoxCells& binned) {
+  // A cube's faces are fitted to what their boxes reach first, and where
+  // the boxes cover too many cells, cut a quarter as fine, then again,
+  // down to kLeastRetryCells a face.
+  std::array<FaceReach, kMaxWindows> reaching{};
+  if (cube_) reaching = fitCubeFaces(boxes);
+  FaceCells cut = cube_ ? *cubeCells : FaceCells{};
+  for (;;) {
+    if (cube_) cutCubeFaces(reaching, cut);
+    for (std::size_t w = 0; w < windows_.size(); ++w) {
+      const GridWindow& win = windows_[w];
+      scales_[w] =
+          glm::dvec2(win.columns / (win.uHigh - win.uLow), win.rows / (win.vHigh - win.vLow));
+    }
+    if (coverBoxes(boxes, limits, binned)) return true;
+    std::uint64_t finest = 0;
+    for (const GridWindow& w : windows_) {
+      finest = std::max<std::uint64_t>(finest, static_cast<std::uint64_t>(w.columns) * w.rows);
+    }
+    if (!cube_ || finest <= kLeastRetryCells) return false;
+    cut =
+        FaceCells{cut.perBox / 4.0, cut.perBoxArea / 4.0, std::max<std::uint64_t>(cut.least / 4, 1),
+                  std::max<std::uint64_t>(cut.most / 4, 1)};
+  }
+}
+
+void DirectionGrid::setLookups() {
+  for (std::size_t w = 0; w < windows_.size(); ++w) {
+    const GridWindow& win = windows_[w];
+    WindowLookup& lookup = lookups_[w];
+    if (windowUsed_[w]) {
+      lookup = WindowLookup{win.uLow,     win.uHigh,     win.vLow,    win.vHigh, scales_[w].x,
+                            scales_[w].y, firstCell_[w], win.columns, win.rows};
+    }
+    glm::dvec4 open = cube_ ? glm::dvec4(-1.0, 1.0, -1.0, 1.0)
+                            : glm::dvec4(win.uLow, win.uHigh, win.vLow, win.vHigh);
+    lookup.openULow = open.x;
+    lookup.openUHigh = open.y;
+    lookup.openVLow = open.z;
+    lookup.openVHigh = open.w;
+  }
 }
 
 bool DirectionGrid::coverBoxes(const std::vector<Bounds>& boxes, const Limits& limits,

@@ -225,9 +225,15 @@ class DirectionGrid {
   std::array<FaceReach, kMaxWindows> fitCubeFaces(const std::vector<Bounds>& boxes);
   // Cuts each fitted face as `cells` says for the boxes that reach it.
   void cutCubeFaces(const std::array<FaceReach, kMaxWindows>& reaching, const FaceCells& cells);
-  // Bins the boxes into `binned`, or false where they cover more cells
-  // than `limits` allows.
+  // Bins the boxes into `binned` with the windows as they are, or false
+  // where they cover more cells than `limits` allows.
   bool coverBoxes(const std::vector<Bounds>& boxes, const Limits& limits, BoxCells& binned) const;
+  // Cuts a cube's faces (fitted, then coarser while the boxes cover too
+  // much) and bins the boxes; false where they cannot be binned.
+  bool binBoxes(const std::vector<Bounds>& boxes, const Limits& limits, const FaceCells* cubeCells,
+                BoxCells& binned);
+  // Fills lookups_ from the windows, once their cells are numbered.
+  void setLookups();
   // What a box reaches on one window, or false for nothing.
   bool reach(const Bounds& box, int window, TangentRange& range) const;
   bool reachOnCube(const Bounds& box, int window, TangentRange& range) const;
