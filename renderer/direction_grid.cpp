@@ -58,10 +58,11 @@ std::uint64_t DirectionGrid::FaceCells::forFace(std::uint64_t boxes, double boxA
   // The mean box's area is boxArea / boxes.
   if (boxArea > 0.0)
     wanted = std::min(wanted, perBoxArea * area * static_cast<double>(boxes) / boxArea);
-  // Not a number gives least.
-  double cells = std::max(std::ceil(wanted), static_cast<double>(least));
-  return static_cast<std::uint64_t>(
-      std::min({cells, static_cast<double>(most), static_cast<double>(kMaxFaceCells)}));
+  // Not a number fails the test, and gives least.
+  double lower = static_cast<double>(least);
+  double cells = std::ceil(wanted) >= lower ? std::ceil(wanted) : lower;
+  double upper = std::min(static_cast<double>(most), static_cast<double>(kMaxFaceCells));
+  return static_cast<std::uint64_t>(cells <= upper ? cells : upper);
 }
 
 std::uint64_t DirectionGrid::FaceCells::bound(std::uint64_t boxes) const {

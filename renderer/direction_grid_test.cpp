@@ -238,6 +238,19 @@ TEST(DirectionGrid, TooMuchCoverCutsTheFacesCoarser) {
   }
 }
 
+// A face's cells: per box, less where boxes overlap, within the bounds;
+// a setting that is not a number gives the least.
+TEST(DirectionGrid, FaceCellsFollowTheBoxesWithinTheirBounds) {
+  DirectionGrid::FaceCells cells{8.0, 4.0, 16, 1000};
+  EXPECT_EQ(cells.forFace(10, 0.0, 1.0), 80u);
+  EXPECT_EQ(cells.forFace(10, 1.0, 1.0), 40u);      // the boxes cover the face once over
+  EXPECT_EQ(cells.forFace(1, 0.0, 1.0), 16u);       // at least least
+  EXPECT_EQ(cells.forFace(1000, 0.0, 1.0), 1000u);  // at most most
+  EXPECT_EQ(cells.bound(1000), 1000u);
+  DirectionGrid::FaceCells broken{std::nan(""), 4.0, 16, 1000};
+  EXPECT_EQ(broken.forFace(10, 0.0, 1.0), 16u);
+}
+
 // Shadow rays toward each light, from points on and among the objects:
 // the grid's answer is the BVH's.
 TEST(DirectionGrid, ShadowRaysThroughLightGridsAnswerAsTheBvhDoes) {
