@@ -296,13 +296,16 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   reserveOnHugePages(nodes_, kNodesPerBox * n);
   nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
   BuildInput in{items.data(), nodes_.data()};
-  // The items in the order the build left them, which the leaves index.
+  // The items in the order the build left them, which the leaves index,
+  // and their boxes in that order where asked for, in one pass over them.
   auto keepOrder = [&] {
     resizeOnHugePages(items_, n);
-    for (std::uint32_t i = 0; i < n; ++i) items_[i] = items[i].index;
-    if (!itemBoxes) return;
-    itemBoxes->resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) (*itemBoxes)[i] = items[i].box;
+    if (itemBoxes) itemBoxes->resize(n);
+    Bounds* boxesInOrder = itemBoxes ? itemBoxes->data() : nullptr;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      items_[i] = items[i].index;
+      if (boxesInOrder) boxesInOrder[i] = items[i].box;
+    }
   };
   if (threads == 1) {
     nodes_.resize(buildSubtree(in, 0, 0, n, 0));
