@@ -488,6 +488,36 @@ TEST(ImageFile, QuantizesAsLroundDoes) {
   }
 }
 
+// quantizeChannels gives quantizeChannel's level for each value: every
+// level's halfway point and its float neighbours, and a stride through all
+// 2^32 bit patterns (negatives, infinities and NaNs among them), in runs of
+// odd lengths so that the vector loop's tail is exercised too.
+TEST(ImageFile, QuantizesInBulkAsOneByOne) {
+  std::vector<float> values;
+  for (int level = 0; level < 256; ++level) {
+    float v = (static_cast<float>(level) + 0.5f) / 255.0f;
+    for (int step = 0; step < 8; ++step) v = std::nextafter(v, 0.0f);
+    for (int step = 0; step < 16; ++step, v = std::nextafter(v, 2.0f)) values.push_back(v);
+  }
+  for (std::uint64_t bits = 0; bits <= 0xFFFFFFFFu; bits += 4099) {
+    values.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(bits)));
+  }
+  for (float special :
+       {0.0f, -0.0f, 1.0f, std::numeric_limits<float>::infinity(),
+        -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+        std::numeric_limits<float>::denorm_min(), 0.5f / 255.0f}) {
+    values.push_back(special);
+  }
+  std::vector<unsigned char> levels(values.size(), 0xAB);
+  for (std::size_t first = 0, run = 1; first < values.size(); first += run, run = run % 37 + 2) {
+    std::size_t count = std::min(run, values.size() - first);
+    quantizeChannels(values.data() + first, count, levels.data() + first);
+  }
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    ASSERT_EQ(levels[i], quantizeChannel(values[i])) << values[i];
+  }
+}
+
 // sfrender writes .ppm by hand: the file must be the one OpenImageIO writes
 // (.pnm goes through it) and read back through OpenImageIO identically.
 TEST(ImageFile, HandWrittenPpmMatchesOpenImageIO) {

@@ -15,6 +15,20 @@ unsigned char quantizeChannel(float value) {
   return static_cast<unsigned char>(static_cast<int>(static_cast<double>(level) + 0.5));
 }
 
+void quantizeChannels(const float* values, std::size_t count, unsigned char* levels) {
+  for (std::size_t i = 0; i < count; ++i) {
+    // The clamp of quantizeChannel, with not a number to 0 as it gives,
+    // written as selects that vectorise: a NaN fails `v > 0`.
+    float v = values[i];
+    float positive = v > 0.0f ? v : 0.0f;
+    float level = (positive < 1.0f ? positive : 1.0f) * 255.0f;
+    // Halves up, in float: the level less its whole part is exact.
+    int whole = static_cast<int>(level);
+    float fraction = level - static_cast<float>(whole);
+    levels[i] = static_cast<unsigned char>(whole + (fraction >= 0.5f ? 1 : 0));
+  }
+}
+
 std::uint16_t quantizeChannel16(float value) {
   double clamped = std::clamp(static_cast<double>(value), 0.0, 1.0);
   return static_cast<std::uint16_t>(std::lround(clamped * 65535.0));

@@ -100,8 +100,7 @@ void ProgressiveRender::renderJob(const Job& job) {
       frame.width = image.width;
       frame.height = image.height;
       frame.rgb.resize(image.rgb.size());
-      std::transform(image.rgb.begin(), image.rgb.end(), frame.rgb.begin(),
-                     [](float v) { return tools::quantizeChannel(v); });
+      tools::quantizeChannels(image.rgb.data(), image.rgb.size(), frame.rgb.data());
       frame.level = static_cast<int>(i);
       frame.levelCount = static_cast<int>(levels_.size());
       frame.settings = level;

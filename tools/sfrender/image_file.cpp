@@ -166,6 +166,15 @@ std::vector<Level> displayLevels(const render::Image& image, const ImageOptions&
   return levels;
 }
 
+// displayLevels of an 8-bit file: without alpha, the image's values in one
+// vector loop (quantizeChannels).
+std::vector<unsigned char> displayBytes(const render::Image& image, const ImageOptions& options) {
+  if (options.alpha) return displayLevels<unsigned char>(image, options, quantizeChannel);
+  std::vector<unsigned char> bytes(image.rgb.size());
+  quantizeChannels(image.rgb.data(), image.rgb.size(), bytes.data());
+  return bytes;
+}
+
 // The linear values (srgbToLinear), within `largest` (a half's range for a
 // half image: past it a half is infinite). With alpha they are
 // premultiplied, as EXR's are by convention: the coverage times the
@@ -206,8 +215,8 @@ std::string ppmBytes(const render::Image& image, int bits) {
     return bytes;
   }
   bytes.resize(header.size() + image.rgb.size());
-  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin() + header.size(),
-                 [](float v) { return static_cast<char>(quantizeChannel(v)); });
+  quantizeChannels(image.rgb.data(), image.rgb.size(),
+                   reinterpret_cast<unsigned char*>(bytes.data() + header.size()));
   return bytes;
 }
 
@@ -226,7 +235,7 @@ std::string pngBytes(const render::Image& image, const ImageOptions& options, in
     words = displayLevels<std::uint16_t>(image, options, quantizeChannel16);
     levels.words = words.data();
   } else {
-    bytes = displayLevels<unsigned char>(image, options, quantizeChannel);
+    bytes = displayBytes(image, options);
     levels.bytes = bytes.data();
   }
   return pngFileBytes(levels, error);
@@ -264,7 +273,7 @@ bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const 
     words = displayLevels<std::uint16_t>(image, options, quantizeChannel16);
     data.pixels = words.data();
   } else {
-    bytes = displayLevels<unsigned char>(image, options, quantizeChannel);
+    bytes = displayBytes(image, options);
     data.pixels = bytes.data();
   }
   char message[512] = "";
