@@ -9,7 +9,6 @@
 #include <thread>
 #include <vector>
 
-#include "renderer/huge_pages.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
 
@@ -292,14 +291,13 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   if (n < kMinParallelBoxes) threads = 1;
   std::vector<BuildItem> items(n);
   for (std::uint32_t i = 0; i < n; ++i) items[i] = BuildItem{boxes[i], i};
-  // Read at random by rays: on huge pages (renderer/huge_pages.h).
-  reserveOnHugePages(nodes_, kNodesPerBox * n);
+  nodes_.reserve(kNodesPerBox * n);
   nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
   BuildInput in{items.data(), nodes_.data()};
   // The items in the order the build left them, which the leaves index,
   // and their boxes in that order where asked for, in one pass over them.
   auto keepOrder = [&] {
-    resizeOnHugePages(items_, n);
+    items_.resize(n);
     if (itemBoxes) itemBoxes->resize(n);
     Bounds* boxesInOrder = itemBoxes ? itemBoxes->data() : nullptr;
     for (std::uint32_t i = 0; i < n; ++i) {

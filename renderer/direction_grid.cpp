@@ -6,7 +6,6 @@
 #include <glm/vec4.hpp>
 #include <limits>
 
-#include "renderer/huge_pages.h"
 #include "renderer/saturating.h"
 
 namespace render {
@@ -124,9 +123,8 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
 
   // Step 4: the lists, a full cell's left empty; counts becomes each
   // cell's next free place.
-  // Read at random by rays: on huge pages (renderer/huge_pages.h).
-  resizeOnHugePages(full_, cells);
-  resizeOnHugePages(start_, cells + 1);
+  full_.resize(cells);
+  start_.resize(cells + 1);
   std::uint64_t total = 0;
   for (std::uint64_t c = 0; c < cells; ++c) {
     start_[c] = static_cast<std::uint32_t>(total);
@@ -138,7 +136,7 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
     counts[c] = start_[c];
   }
   start_[cells] = static_cast<std::uint32_t>(total);
-  resizeOnHugePages(items_, total);
+  items_.resize(total);
   for (std::uint32_t i = 0; i < boxes.size(); ++i) {
     std::uint32_t item = labels.empty() ? i : labels[i];
     for (std::uint32_t r = firstRange[i]; r < firstRange[i + 1]; ++r) {

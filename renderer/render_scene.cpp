@@ -7,7 +7,6 @@
 
 #include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
-#include "renderer/huge_pages.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
@@ -94,10 +93,9 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
   // As many as the BVH's build starts, at most.
   threads = std::min(resolveThreads(threads), Bvh::kMaxBuildThreads);
   const std::size_t count = scene.objects.size();
-  // Read at random by rays: on huge pages (renderer/huge_pages.h).
-  resizeOnHugePages(objects_, count);
-  resizeOnHugePages(linearToWorld_, count);
-  resizeOnHugePages(materials_, count);
+  objects_.resize(count);
+  linearToWorld_.resize(count);
+  materials_.resize(count);
   // Which objects are planes is their kind alone (worldBounds bounds every
   // other), so each bounded object's box has its place before any is made,
   // and the records can be made in parts, side by side.
