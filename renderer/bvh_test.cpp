@@ -119,6 +119,44 @@ TEST(BvhBuild, GivesTheBoxesInTheOrderOfItsItems) {
   }
 }
 
+// A node over two items splits them on the widest axis of their centres
+// (the lowest on a tie), the lower centre first and equal centres in
+// their order, as the surface area heuristic's bins and the median's sort
+// order them.
+TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
+  auto box = [](glm::dvec3 centre, double half) {
+    return Bounds{centre - glm::dvec3(half), centre + glm::dvec3(half)};
+  };
+  Bvh swapped(std::vector<Bounds>{box({0, 5, 1}, 1), box({0, 2, 1}, 3)}, 1);
+  EXPECT_EQ(swapped.items(), (std::vector<std::uint32_t>{1, 0}));
+  EXPECT_EQ(swapped.nodes()[0].axis, 1);
+  Bvh kept(std::vector<Bounds>{box({-3, 0, 0}, 1), box({4, 0, 1}, 1)}, 1);
+  EXPECT_EQ(kept.items(), (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(kept.nodes()[0].axis, 0);
+  Bvh equal(std::vector<Bounds>{box({1, 1, 1}, 2), box({1, 1, 1}, 1)}, 1);
+  EXPECT_EQ(equal.items(), (std::vector<std::uint32_t>{0, 1}));
+
+  // The same in every pair of leaves of a larger tree.
+  std::vector<Bounds> boxes = randomBoxes(5, 5000);
+  Bvh bvh(boxes, 1);
+  const std::vector<BvhNode>& nodes = bvh.nodes();
+  int pairs = 0;
+  for (std::size_t i = 0; i + 2 < nodes.size(); ++i) {
+    const BvhNode& node = nodes[i];
+    if (node.count > 0 || node.offset != i + 2) continue;
+    if (nodes[i + 1].count != 1 || nodes[i + 2].count != 1) continue;
+    glm::dvec3 a = boxes[bvh.items()[nodes[i + 1].offset]].centre();
+    glm::dvec3 b = boxes[bvh.items()[nodes[i + 2].offset]].centre();
+    glm::dvec3 extent = glm::max(a, b) - glm::min(a, b);
+    int widest =
+        extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
+    ASSERT_EQ(node.axis, widest) << "node " << i;
+    ASSERT_LE(a[widest], b[widest]) << "node " << i;
+    ++pairs;
+  }
+  EXPECT_GT(pairs, 500);
+}
+
 TEST(BvhBuild, NoBoxesMakeAnEmptyTree) {
   EXPECT_TRUE(Bvh(std::vector<Bounds>{}, 4).empty());
 }
