@@ -302,8 +302,10 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   threads = std::min(resolveThreads(threads), kMaxBuildThreads);
   const std::uint32_t n = static_cast<std::uint32_t>(boxes.size());
   if (n < kMinParallelBoxes) threads = 1;
-  std::vector<BuildItem> items(n);
-  for (std::uint32_t i = 0; i < n; ++i) items[i] = BuildItem{boxes[i], i};
+  // Made in one pass: sized first, each would be written twice.
+  std::vector<BuildItem> items;
+  items.reserve(n);
+  for (std::uint32_t i = 0; i < n; ++i) items.push_back(BuildItem{boxes[i], i});
   nodes_.reserve(kNodesPerBox * n);
   nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
   BuildInput in{items.data(), nodes_.data()};
