@@ -302,12 +302,19 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   threads = std::min(resolveThreads(threads), kMaxBuildThreads);
   const std::uint32_t n = static_cast<std::uint32_t>(boxes.size());
   if (n < kMinParallelBoxes) threads = 1;
-  // Made in one pass: sized first, each would be written twice.
+  // The list and the nodes side by side, each on a thread of its own: most
+  // of either is the first touch of its fresh pages. The list is made in
+  // one pass (sized first, it would be written twice).
   std::vector<BuildItem> items;
-  items.reserve(n);
-  for (std::uint32_t i = 0; i < n; ++i) items.push_back(BuildItem{boxes[i], i});
-  nodes_.reserve(kNodesPerBox * n);
-  nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
+  runParts(2, threads, [&](std::size_t array) {
+    if (array == 0) {
+      items.reserve(n);
+      for (std::uint32_t i = 0; i < n; ++i) items.push_back(BuildItem{boxes[i], i});
+    } else {
+      nodes_.reserve(kNodesPerBox * n);
+      nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
+    }
+  });
   BuildInput in{items.data(), nodes_.data()};
   // The items in the order the build left them, which the leaves index,
   // and their boxes in that order where asked for, in one pass over them.
