@@ -76,8 +76,8 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
   int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
   std::uint32_t mid = begin + count / 2;
   if (count == 2) {
-    // What the bins below give two items, without them (a third of the
-    // nodes, where the bins' set-up was most of the work): whatever the
+    // What the bins below give two items, without them (two in five of
+    // the splits, where the bins' set-up was most of the work): whatever the
     // split, the cost is the same, so the item with the lower centre goes
     // first, and equal centres keep their order, as the median's sort of
     // two does.
