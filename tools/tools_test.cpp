@@ -491,7 +491,7 @@ TEST(ImageFile, QuantizesAsLroundDoes) {
 // quantizeChannels gives quantizeChannel's level for each value: every
 // level's halfway point and its float neighbours, and a stride through all
 // 2^32 bit patterns (negatives, infinities and NaNs among them), in runs of
-// odd lengths so that the vector loop's tail is exercised too.
+// 1 to 38 values, so that the vector loop's tails are exercised too.
 TEST(ImageFile, QuantizesInBulkAsOneByOne) {
   std::vector<float> values;
   for (int level = 0; level < 256; ++level) {
