@@ -6,23 +6,20 @@
 namespace tools {
 
 unsigned char quantizeChannel(float value) {
-  float level = std::clamp(value, 0.0f, 1.0f) * 255.0f;
-  // std::lround of the float product, inline (a library call per channel
-  // was 3% of a render): a float plus 0.5 is exact in double, and at 0.5
-  // or more truncation is its floor, so this rounds halves up as lround
-  // does for a value of at least 0.
-  if (!(level >= 0.0f)) return 0;
-  return static_cast<unsigned char>(static_cast<int>(static_cast<double>(level) + 0.5));
+  unsigned char level = 0;
+  quantizeChannels(&value, 1, &level);
+  return level;
 }
 
 void quantizeChannels(const float* values, std::size_t count, unsigned char* levels) {
   for (std::size_t i = 0; i < count; ++i) {
-    // The clamp of quantizeChannel, with not a number to 0 as it gives,
-    // written as selects that vectorise: a NaN fails `v > 0`.
+    // round(clamp(v, 0, 1) * 255), not a number giving 0, written as
+    // selects that vectorise: a NaN fails `v > 0`.
     float v = values[i];
     float positive = v > 0.0f ? v : 0.0f;
     float level = (positive < 1.0f ? positive : 1.0f) * 255.0f;
-    // Halves up, in float: the level less its whole part is exact.
+    // Halves up, as std::lround rounds a value of at least 0, in float:
+    // the level less its whole part is exact.
     int whole = static_cast<int>(level);
     float fraction = level - static_cast<float>(whole);
     levels[i] = static_cast<unsigned char>(whole + (fraction >= 0.5f ? 1 : 0));
