@@ -58,8 +58,9 @@ std::uint64_t DirectionGrid::FaceCells::forFace(std::uint64_t boxes, double boxA
   if (boxArea > 0.0)
     wanted = std::min(wanted, perBoxArea * area * static_cast<double>(boxes) / boxArea);
   // Not a number fails the test, and gives least.
+  double rounded = std::ceil(wanted);
   double lower = static_cast<double>(least);
-  double cells = std::ceil(wanted) >= lower ? std::ceil(wanted) : lower;
+  double cells = rounded >= lower ? rounded : lower;
   double upper = std::min(static_cast<double>(most), static_cast<double>(kMaxFaceCells));
   return static_cast<std::uint64_t>(cells <= upper ? cells : upper);
 }
