@@ -107,12 +107,6 @@ GridWindow PinholeCamera::imageWindow(int columns, int rows) const {
   return window;
 }
 
-Ray PinholeCamera::rayThrough(double x, double y) const {
-  double sx = (2.0 * x / width_ - 1.0) * tanHalfWidth_;
-  double sy = (1.0 - 2.0 * y / height_) * tanHalfHeight_;
-  return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
-}
-
 glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed) {
   if (count <= 1) return {i + 0.5, j + 0.5};
   int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));

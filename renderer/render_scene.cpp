@@ -232,8 +232,11 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
       };
       for (std::uint32_t plane : planes_) consider(plane);
       for (std::uint32_t item : eye.grid.items(cell)) consider(bounded_[item]);
-      out[k] = best == RaySource::kNone ? std::nullopt
-                                        : std::optional<Hit>(finishHit(best, ray, bestCandidate));
+      if (best == RaySource::kNone) {
+        out[k].reset();
+      } else {
+        finishHit(best, ray, bestCandidate, out[k].emplace());
+      }
     }
     if (leftCount == 0) continue;
     std::optional<Hit> found[kPacket];
@@ -265,7 +268,8 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
   return std::nullopt;
 }
 
-Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate& c) const {
+void RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate& c,
+                            Hit& hit) const {
   const RenderObject& object = objects_[index];
   glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
@@ -274,7 +278,6 @@ Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate&
 
   // Step 1: to world space, with the error bound of an affine transform of
   // a point that already carries an error (pbrt-v4, Transform of Point3fi).
-  Hit hit;
   hit.t = c.t;
   hit.object = index;
   // m * (point, 1) as glm's dmat4 product adds it up: the first two
@@ -294,7 +297,6 @@ Hit RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate&
   // Step 2: the normal, through the inverse transpose.
   hit.normal = glm::normalize(object.normalToWorld(s.normal));
   hit.fromInside = c.atExit;
-  return hit;
 }
 
 std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& source,
@@ -314,7 +316,7 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
     return bestCandidate.t;
   });
   if (best == RaySource::kNone) return std::nullopt;
-  return finishHit(best, ray, bestCandidate);
+  return finishedHit(best, ray, bestCandidate);
 }
 
 void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int count,
@@ -347,10 +349,11 @@ void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int cou
       return bestCandidate[lane].t;
     });
     for (int lane = 0; lane < n; ++lane) {
-      out[first + lane] =
-          best[lane] == RaySource::kNone
-              ? std::nullopt
-              : std::optional<Hit>(finishHit(best[lane], ray[lane], bestCandidate[lane]));
+      if (best[lane] == RaySource::kNone) {
+        out[first + lane].reset();
+      } else {
+        finishHit(best[lane], ray[lane], bestCandidate[lane], out[first + lane].emplace());
+      }
     }
   }
 }
@@ -366,7 +369,7 @@ std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySo
     }
   }
   if (best == RaySource::kNone) return std::nullopt;
-  return finishHit(best, ray, bestCandidate);
+  return finishedHit(best, ray, bestCandidate);
 }
 
 bool RenderScene::blockedByPlane(const Ray& ray, const RaySource& source, double tMax,

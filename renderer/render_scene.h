@@ -213,7 +213,17 @@ class RenderScene {
   };
   std::optional<Candidate> intersectObject(std::uint32_t index, const Ray& ray,
                                            const RaySource& source, double tMax) const;
-  Hit finishHit(std::uint32_t index, const Ray& ray, const Candidate& candidate) const;
+  // The hit on object `index` that `candidate` found along `ray`, written
+  // into `hit` in place: returned by value, it was copied into an optional
+  // with wide loads that waited on finishHit's narrow stores.
+  void finishHit(std::uint32_t index, const Ray& ray, const Candidate& candidate, Hit& hit) const;
+  // finishHit into a new optional.
+  std::optional<Hit> finishedHit(std::uint32_t index, const Ray& ray,
+                                 const Candidate& candidate) const {
+    std::optional<Hit> hit;
+    finishHit(index, ray, candidate, hit.emplace());
+    return hit;
+  }
   // Whether the ray meets the box of the leaf holding BVH item `item`
   // within (0, tMax): hitsBox on the leaf's float box, which contains the
   // object's box.
