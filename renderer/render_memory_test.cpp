@@ -43,9 +43,10 @@ TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
 TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   RenderMemoryEstimate e = estimateRenderMemory(1000, 7, 640, 480);
   EXPECT_EQ(e.image, 640u * 480 * (3 * sizeof(float) + 3 * sizeof(float)));
-  // The records, and each object's index in its list and its BVH leaf.
+  // The records, each object's index in its list and its BVH leaf, and a
+  // plane's normal, counted for any object.
   EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
-                             2 * sizeof(std::uint32_t)) +
+                             2 * sizeof(std::uint32_t) + sizeof(glm::dvec3)) +
                          7 * sizeof(RenderLight));
   // At least the nodes, items and boxes, and the build's copy of each box
   // beside its index (padded to 8 bytes); the rest is the threads' lists of

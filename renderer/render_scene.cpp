@@ -58,8 +58,9 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
   // 450 an object: counted once), and the boxes one box a bounded object,
   // sized once but counted twice over, as when they too grew by doubling.
   Bytes bytes;
-  std::uint64_t perObject =
-      sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) + sizeof(std::uint32_t);
+  // A plane's normal is counted for every object, as any may be a plane.
+  std::uint64_t perObject = sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
+                            sizeof(std::uint32_t) + sizeof(glm::dvec3);
   bytes.scene = saturatingSum(saturatingProduct(objects, perObject),
                               saturatingProduct(lights, sizeof(RenderLight)));
   bytes.bvh = saturatingSum(saturatingProduct(objects, 2 * sizeof(Bounds)), Bvh::bytesFor(objects));
@@ -140,6 +141,11 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     }
   });
   hasTransparency_ = std::find(transparent.begin(), transparent.end(), 1) != transparent.end();
+  planeNormals_.reserve(planes_.size());
+  for (std::uint32_t plane : planes_) {
+    planeNormals_.push_back(
+        glm::normalize(objects_[plane].normalToWorld(glm::dvec3(0.0, 1.0, 0.0))));
+  }
   // The boxes in the BVH's order from here on, for the grids' build.
   bvh_ = Bvh(boxes, threads, &boxes);
   lights_.reserve(scene.lights.size());
@@ -273,8 +279,10 @@ void RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate
   const RenderObject& object = objects_[index];
   glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
-  glm::dvec3 localNormal = spanFaceNormal(object.kind, c.face, o, d, c.t);
-  SurfacePoint s = refineOntoSurface(object.kind, o, d, c.t, localNormal);
+  const bool plane = object.kind == scene::ObjectKind::Plane;
+  SurfacePoint s = plane ? refineOntoPlane(o, d, c.t)
+                         : refineOntoSurface(object.kind, o, d, c.t,
+                                             spanFaceNormal(object.kind, c.face, o, d, c.t));
 
   // Step 1: to world space, with the error bound of an affine transform of
   // a point that already carries an error (pbrt-v4, Transform of Point3fi).
@@ -294,8 +302,14 @@ void RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate
     }
     hit.pointError[r] = gamma(3) * magnitude + (1.0 + gamma(3)) * carried;
   }
-  // Step 2: the normal, through the inverse transpose.
-  hit.normal = glm::normalize(object.normalToWorld(s.normal));
+  // Step 2: the normal, through the inverse transpose; a plane's was made
+  // by the same expression in the constructor (planes_ is in object order).
+  if (plane) {
+    auto slot = std::lower_bound(planes_.begin(), planes_.end(), index) - planes_.begin();
+    hit.normal = planeNormals_[static_cast<std::size_t>(slot)];
+  } else {
+    hit.normal = glm::normalize(object.normalToWorld(s.normal));
+  }
   hit.fromInside = c.atExit;
 }
 

@@ -240,6 +240,9 @@ class RenderScene {
   std::vector<scene::Material> materials_;
   std::vector<std::uint32_t> bounded_;  // BVH item -> object index
   std::vector<std::uint32_t> planes_;   // unbounded objects, tested for every ray
+  // Per plane (as planes_), its world normal: the same at every point, so
+  // made once, by the expression finishHit uses for other objects.
+  std::vector<glm::dvec3> planeNormals_;
   std::vector<RenderLight> lights_;
   scene::Camera camera_;
   Bvh bvh_;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/matrix.hpp>
 #include <random>
 
 #include "libscene/testing/random_cases.h"
@@ -284,6 +285,39 @@ TEST(LightOnASurface, TheSurfaceItLiesOnCastsNoShadow) {
     Tracer tracer(compiled, 0);
     TraceContext context;
     EXPECT_FALSE(tracer.shadowed(*under, 0, context)) << onCube;
+  }
+}
+
+// A plane's normal is made once, per plane (RenderScene::finishHit): with
+// several planes between other objects, each hit carries the normal of the
+// plane it met, the inverse transpose's image of +y.
+TEST(PlaneHits, EachCarriesTheNormalOfItsOwnPlane) {
+  RandomTransforms random(77);
+  scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+  for (int i = 0; i < 12; ++i) {
+    ObjectKind kind = i % 3 == 0 ? ObjectKind::Sphere : ObjectKind::Plane;
+    s.objects.push_back(object(
+        kind, {scale(random.uniform(0.5, 2), random.uniform(0.5, 2), 1),
+               rotateX(random.uniform(-3.2, 3.2)), rotateZ(random.uniform(-3.2, 3.2)),
+               translate(random.uniform(-5, 5), random.uniform(-5, 5), random.uniform(-5, 5))}));
+  }
+  RenderScene compiled(s);
+  std::vector<int> planeHits(s.objects.size(), 0);
+  for (int i = 0; i < 4000; ++i) {
+    glm::dvec3 origin(random.uniform(-8, 8), random.uniform(-8, 8), random.uniform(-8, 8));
+    std::optional<Hit> hit = compiled.closestHit(Ray{origin, random.direction()}, RaySource{});
+    if (!hit || s.objects[hit->object].kind != ObjectKind::Plane) continue;
+    ++planeHits[hit->object];
+    glm::dmat3 linear(s.objects[hit->object].matrix);
+    glm::dvec3 expected =
+        glm::normalize(glm::transpose(glm::inverse(linear)) * glm::dvec3(0, 1, 0));
+    EXPECT_NEAR(glm::length(hit->normal - expected), 0.0, 1e-12) << hit->object;
+    EXPECT_NEAR(glm::dot(hit->normal, linear[0]), 0.0, 1e-12 * glm::length(linear[0]));
+  }
+  for (std::size_t i = 0; i < s.objects.size(); ++i) {
+    if (s.objects[i].kind == ObjectKind::Plane) {
+      EXPECT_GT(planeHits[i], 0) << i;
+    }
   }
 }
 

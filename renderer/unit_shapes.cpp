@@ -38,15 +38,13 @@ ShapeSpan intersectUnitShape(scene::ObjectKind kind, const glm::dvec3& o, const 
 
 SurfacePoint refineOntoSurface(scene::ObjectKind kind, const glm::dvec3& o, const glm::dvec3& d,
                                double t, const glm::dvec3& normal) {
+  if (kind == scene::ObjectKind::Plane) return refineOntoPlane(o, d, t);
   SurfacePoint s;
   glm::dvec3 p = o + t * d;
   // Rounding error of o + t d, for the coordinates that stay as computed.
   glm::dvec3 rawError = gamma(3) * (abs(o) + abs(t * d));
   switch (kind) {
     case scene::ObjectKind::Plane:
-      p.y = 0.0;
-      s.normal = glm::dvec3(0.0, 1.0, 0.0);
-      s.error = glm::dvec3(rawError.x, 0.0, rawError.z);
       break;
     case scene::ObjectKind::Cube: {
       int axis = normal.x != 0.0 ? 0 : (normal.y != 0.0 ? 1 : 2);
