@@ -259,7 +259,10 @@ class PixelTracer {
     for (int first = 0; first < count; first += kPacket) {
       int n = std::min(kPacket, count - first);
       Ray rays[kPacket];
-      for (int k = 0; k < n; ++k) rays[k] = camera_.rayThrough(at[first + k].x, at[first + k].y);
+      for (int k = 0; k < n; ++k) {
+        rays[k].origin = camera_.eye();
+        rays[k].direction = camera_.directionThrough(at[first + k].x, at[first + k].y);
+      }
       std::optional<Hit> hits[kPacket];
       if (eyeGrid_) {
         scene_.closestHitsFromEye(*eyeGrid_, rays, n, hits);

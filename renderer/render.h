@@ -180,13 +180,15 @@ class PinholeCamera {
  public:
   PinholeCamera(const scene::Camera& camera, const RenderSettings& settings);
   // The ray through image position (x, y), in pixels from the top-left
-  // corner: pixel (i, j)'s centre is (i + 0.5, j + 0.5). Inline: a call
-  // returns the ray through memory that the caller then copies, and the
-  // copy's wide loads wait on the callee's narrow stores.
-  Ray rayThrough(double x, double y) const {
+  // corner: pixel (i, j)'s centre is (i + 0.5, j + 0.5).
+  Ray rayThrough(double x, double y) const { return Ray{eye_, directionThrough(x, y)}; }
+  // rayThrough's direction alone, inline: a packet's rays are filled member
+  // by member, since a whole Ray copied from a temporary was loaded 16 bytes
+  // at a time across the 8-byte stores that made it, and the loads waited.
+  glm::dvec3 directionThrough(double x, double y) const {
     double sx = (2.0 * x / width_ - 1.0) * tanHalfWidth_;
     double sy = (1.0 - 2.0 * y / height_) * tanHalfHeight_;
-    return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
+    return glm::normalize(forward_ + sx * right_ + sy * up_);
   }
   const glm::dvec3& eye() const { return eye_; }
   // The rest of rayThrough's terms, for the GPU renderer.
