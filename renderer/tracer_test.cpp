@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "renderer/test_scenes.h"
 
@@ -86,6 +87,71 @@ TEST(Shading, AShadowLeavesOnlyAmbient) {
   // Transparent objects cast shadows too.
   s.objects.back().material.transparency = 1.0;
   expectColour(traceCentre(s), m.colour * m.ambient);
+}
+
+// shadeSurface works on two lights at a time, side by side in vector lanes;
+// here each term is the scalar expression, light by light, and the sums
+// must be the same to the bit, whatever the number of lights (odd numbers
+// leave a lane over), the exponent (whole, or not, for std::pow) and the
+// lights' places (behind the surface, in a shadow).
+TEST(Shading, LightsInPairsGiveTheBitsOfOneByOne) {
+  auto power = [](double x, double e) {
+    auto n = static_cast<unsigned>(e);
+    if (!(e >= 0.0 && e <= 1024.0) || static_cast<double>(n) != e) return std::pow(x, e);
+    double result = 1.0;
+    for (; n > 0; n >>= 1, x *= x) {
+      if (n & 1u) result *= x;
+    }
+    return result;
+  };
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (double shininess : {200.0, 37.5}) {
+    for (std::size_t lights = 1; lights <= 5; ++lights) {
+      scene::Material m;
+      m.colour = {0.9, 0.5, 0.2};
+      m.shininess = shininess;
+      scene::Scene s = unitSphere(m, {});
+      for (std::size_t i = 0; i < lights; ++i) {
+        s.lights.push_back(
+            light({4 * u(rng), 4 * u(rng), 3 + 2 * u(rng)}, {0.5 + 0.4 * u(rng), 0.6, 0.7}));
+      }
+      // A cube that shades part of the sphere from some of the lights.
+      s.objects.push_back(object(ObjectKind::Cube, {scale(0.3), translate(0.5, 0.5, 2)}));
+      RenderScene compiled(s);
+      Tracer tracer(compiled, 0);
+      int shaded = 0;
+      for (int k = 0; k < 200; ++k) {
+        glm::dvec3 from = glm::dvec3(u(rng), u(rng), 5.0);
+        glm::dvec3 d = glm::normalize(glm::dvec3(0.6 * u(rng), 0.6 * u(rng), 0) - from);
+        std::optional<Hit> hit = compiled.closestHit(Ray{from, d}, RaySource{});
+        if (!hit || hit->object != 0) continue;
+        ++shaded;
+        glm::dvec3 n = glm::dot(hit->normal, d) > 0.0 ? -hit->normal : hit->normal;
+        TraceContext context;
+        glm::dvec3 got = tracer.shadeSurface(*hit, n, -d, context);
+        glm::dvec3 want(0.0);
+        for (std::size_t i = 0; i < lights; ++i) {
+          const RenderLight& l = compiled.lights()[i];
+          want += m.colour * l.colour * m.ambient;
+          glm::dvec3 toLight = l.position - hit->point;
+          double distance = glm::length(toLight);
+          if (!(distance > 0.0)) continue;
+          toLight /= distance;
+          double cosine = glm::dot(toLight, n);
+          TraceContext alone;
+          if (cosine <= 0.0 || tracer.shadowed(*hit, i, alone)) continue;
+          want += m.colour * l.colour * (m.diffuse * cosine);
+          double highlight = std::max(0.0, glm::dot(glm::reflect(-toLight, n), -d));
+          if (highlight > 0.0) want += l.colour * (m.specular * power(highlight, shininess));
+        }
+        EXPECT_EQ(got.x, want.x) << lights << " lights, shininess " << shininess;
+        EXPECT_EQ(got.y, want.y);
+        EXPECT_EQ(got.z, want.z);
+      }
+      EXPECT_GT(shaded, 100);
+    }
+  }
 }
 
 TEST(Shading, ReflectionAddsReflectivityTimesWhatTheMirrorSees) {
