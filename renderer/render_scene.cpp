@@ -190,16 +190,18 @@ EyeGrid RenderScene::eyeGrid(const glm::dvec3& eye, const GridWindow& window) co
       {}};
   DirectionGrid& grid = eyeGrid.grid;
   if (!grid.built()) return eyeGrid;
-  // Each cell's list in the BVH's order for its centre's direction signs.
+  // Each cell's list in the BVH's order for its centre's direction signs;
+  // with fewer than two items there is no order to keep (its corners were
+  // a quarter of the grid's build at floor-100000 in 1080p).
   std::array<std::vector<std::uint32_t>, 8> ranks;
-  eyeGrid.signs.resize(grid.cellCount());
+  eyeGrid.signs.assign(grid.cellCount(), EyeGrid::kAnySigns);
   for (std::uint32_t cell = 0; cell < grid.cellCount(); ++cell) {
+    std::span<std::uint32_t> items = grid.mutableItems(cell);
+    if (items.size() < 2) continue;
     std::array<glm::dvec3, 4> corners = grid.cellCorners(cell);
     glm::dvec3 centre = (corners[0] + corners[3]) * 0.5;
     std::uint8_t signs = directionSigns(centre);
     eyeGrid.signs[cell] = signs;
-    std::span<std::uint32_t> items = grid.mutableItems(cell);
-    if (items.size() < 2) continue;
     if (ranks[signs].empty()) ranks[signs] = bvh_.visitRanks(signs);
     const std::vector<std::uint32_t>& rank = ranks[signs];
     std::sort(items.begin(), items.end(),
@@ -222,7 +224,7 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
       std::uint32_t cell = ray.origin == eye.grid.apex() ? eye.grid.cellOf(0, ray.direction)
                                                          : DirectionGrid::kNoCell;
       if (cell == DirectionGrid::kNoCell || eye.grid.full(cell) ||
-          eye.signs[cell] != directionSigns(ray.direction)) {
+          !eye.servesSigns(cell, ray.direction)) {
         left[leftCount] = ray;
         leftAt[leftCount++] = k;
         continue;

@@ -72,8 +72,15 @@ struct EyeGrid {
   // Per cell, the signs of its centre direction (bit i: component i is
   // negative, as Bvh::traverse takes them): its list is in the order in
   // which the BVH visits items for such a ray, and a ray with other signs
-  // walks the BVH.
+  // walks the BVH. kAnySigns for a cell of fewer than two items, whose
+  // order is moot: every ray through it may use it.
   std::vector<std::uint8_t> signs;
+  static constexpr std::uint8_t kAnySigns = 0xFF;
+  // Whether a ray leaving the eye in `direction` through `cell` may take
+  // the cell's list for its closest hit.
+  bool servesSigns(std::uint32_t cell, const glm::dvec3& direction) const {
+    return signs[cell] == kAnySigns || signs[cell] == directionSigns(direction);
+  }
 };
 
 class RenderScene {
