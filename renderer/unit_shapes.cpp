@@ -44,7 +44,7 @@ SurfacePoint refineOntoSurface(scene::ObjectKind kind, const glm::dvec3& o, cons
   // Rounding error of o + t d, for the coordinates that stay as computed.
   glm::dvec3 rawError = gamma(3) * (abs(o) + abs(t * d));
   switch (kind) {
-    case scene::ObjectKind::Plane:
+    case scene::ObjectKind::Plane:  // refineOntoPlane, above
       break;
     case scene::ObjectKind::Cube: {
       int axis = normal.x != 0.0 ? 0 : (normal.y != 0.0 ? 1 : 2);
