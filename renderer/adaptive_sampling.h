@@ -66,8 +66,12 @@ class SampleSpread {
     high_ = glm::max(high_, look.colour);
     mixedObjects_ = mixedObjects_ || look.object != object_;
   }
-  bool exceeds(double threshold) const {
-    if (mixedObjects_) return true;
+  // Whether the samples show different objects, or differ by more than
+  // `threshold` in some channel.
+  bool exceeds(double threshold) const { return mixedObjects_ || coloursDiffer(threshold); }
+  // Whether they differ by more than `threshold` in some channel, whatever
+  // the objects.
+  bool coloursDiffer(double threshold) const {
     for (int c = 0; c < 3; ++c) {
       if (static_cast<double>(high_[c]) - low_[c] > threshold) return true;
     }
@@ -93,7 +97,10 @@ int subdivisionDepth(int samplesPerPixel);
 // from the pixel's top-left corner. The pixel starts as one square, its four
 // corners; a square whose corners differ (SampleSpread) is cut into four,
 // which needs the looks of up to five more points, down to `depth` cuts; a
-// square left whole counts as the mean of its corners. Which squares are cut
+// square left whole counts as the mean of its corners. The pixel is cut
+// where its corners show different objects or colours that differ by more
+// than the threshold; a square `level` cuts down, only where its corners'
+// colours differ by more than threshold * 2^level. Which squares are cut
 // depends on the looks alone, so a pixel is the same however its points are
 // traced. One for each thread: it keeps its arrays from pixel to pixel.
 class PixelLattice {

@@ -38,6 +38,8 @@ TEST(AdaptiveSampling, ASpreadExceedsWhereAnyTwoSamplesDiffer) {
   objects.add(lookOf(glm::dvec3(0.5), 1));
   objects.add(lookOf(glm::dvec3(0.5), 2));
   EXPECT_TRUE(objects.exceeds(0.9));
+  EXPECT_FALSE(objects.coloursDiffer(0.0));
+  EXPECT_TRUE(spread.coloursDiffer(0.1));
 }
 
 TEST(AdaptiveSampling, DepthIsTheMostCutsThatKeepSquaresWithinTheSamples) {
@@ -52,18 +54,61 @@ TEST(AdaptiveSampling, DepthIsTheMostCutsThatKeepSquaresWithinTheSamples) {
   EXPECT_EQ(subdivisionDepth(1 << 30), kMaxSubdivisionDepth);
 }
 
-// A pixel seen through a lattice: object 1 left of the line x + 0.37 y =
-// 0.55 (x, y in [0, 1] across the pixel), object 2 right of it, each of its
-// own grey. The part of the pixel left of the line is 0.55 - 0.37 / 2.
+// A pixel seen through a lattice: `left` left of the line x + 0.37 y = 0.55
+// (x, y in [0, 1] across the pixel), `right` right of it; by default object
+// 1 and object 2, each of its own grey. The part of the pixel left of the
+// line is 0.55 - 0.37 / 2.
 struct EdgedPixel {
   int side;
+  SampleLook left = lookOf(glm::dvec3(0.2), 1);
+  SampleLook right = lookOf(glm::dvec3(0.7), 2);
   SampleLook at(int point) const {
     double x = static_cast<double>(point % side) / (side - 1);
     double y = static_cast<double>(point / side) / (side - 1);
-    return x + 0.37 * y < 0.55 ? lookOf(glm::dvec3(0.2), 1) : lookOf(glm::dvec3(0.7), 2);
+    return x + 0.37 * y < 0.55 ? left : right;
+  }
+  // Subdivides `lattice` as this pixel, at `threshold`: the cuts it made.
+  int subdivide(PixelLattice& lattice, double threshold) const {
+    const int last = side - 1;
+    const SampleLook corners[4] = {at(0), at(last), at(last * side), at(last * side + last)};
+    lattice.start(corners);
+    return lattice.subdivide(threshold,
+                             [&](const std::vector<int>& points, std::vector<SampleLook>& looks) {
+                               for (std::size_t k = 0; k < points.size(); ++k) {
+                                 looks[k] = at(points[k]);
+                               }
+                             });
   }
   static constexpr double kLeftShare = 0.55 - 0.37 / 2.0;
 };
+
+TEST(AdaptiveSampling, FinerSquaresAreCutOnlyWhereTheirCornersDifferByMore) {
+  // One object, two greys `gap` apart: the pixel is cut where the gap
+  // passes the threshold, a square `level` cuts down where it passes
+  // threshold * 2^level. A gap of 1.5 * threshold * 2^k is cut k + 1 times.
+  const double threshold = 0.02;
+  PixelLattice lattice(5);
+  for (int k = 0; k < 4; ++k) {
+    double gap = 1.5 * threshold * std::ldexp(1.0, k);
+    EdgedPixel pixel{lattice.side(), lookOf(glm::dvec3(0.2), 1), lookOf(glm::dvec3(0.2 + gap), 1)};
+    EXPECT_EQ(pixel.subdivide(lattice, threshold), k + 1) << "gap " << gap;
+  }
+  EdgedPixel below{lattice.side(), lookOf(glm::dvec3(0.2), 1), lookOf(glm::dvec3(0.21), 1)};
+  EXPECT_EQ(below.subdivide(lattice, threshold), 0);
+}
+
+TEST(AdaptiveSampling, TwoObjectsOfOneColourCutThePixelOnly) {
+  // An edge that colours miss: the pixel is cut once, its squares are not.
+  PixelLattice lattice(3);
+  const glm::dvec3 grey(0.5);
+  EdgedPixel pixel{lattice.side(), lookOf(grey, 1), lookOf(grey, 2)};
+  EXPECT_EQ(pixel.subdivide(lattice, 0.01), 1);
+  // The first cut's five points and the corners, each square a quarter.
+  EXPECT_EQ(lattice.points().size(), 9u);
+  // With the colours apart, the same edge is cut to the finest squares.
+  EdgedPixel coloured{lattice.side(), lookOf(grey, 1), lookOf(glm::dvec3(0.6), 2)};
+  EXPECT_EQ(coloured.subdivide(lattice, 0.01), 3);
+}
 
 TEST(AdaptiveSampling, ALatticeCutsAlongAnEdgeAndWeighsItsSquares) {
   for (int depth = 1; depth <= kMaxSubdivisionDepth; ++depth) {

@@ -58,10 +58,11 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
   app.add_option("--seed", o.settings.seed, "seed of the sample positions")
       ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--adaptive", o.settings.adaptiveThreshold,
-                 "adaptive anti-aliasing: every pixel corner is sampled, and a square whose "
+                 "adaptive anti-aliasing: every pixel corner is sampled, and a pixel whose "
                  "corners differ by more than THRESHOLD (above 0, at most 1, in any channel; 0.03 "
-                 "is a good start) or show different objects is cut in four, until a pixel holds "
-                 "at most --spp squares (16: 4x4, 64: 8x8); with --spp 1 nothing is refined")
+                 "is a good start) or show different objects is cut in four, its squares again "
+                 "where their corners differ by twice as much, and so on, until a pixel holds at "
+                 "most --spp squares (16: 4x4, 64: 8x8); with --spp 1 nothing is refined")
       ->option_text("THRESHOLD")
       ->default_str("")  // 0, uniform sampling, is what leaving it out gives
       ->check(numberIn(0, 1))
