@@ -25,9 +25,10 @@
 # quoted), EQ_WIDTH (1280), EQ_HEIGHT (720), EQ_THREADS (2),
 # EQ_SCENES ("floor-1000 default glass-mirror"), EQ_REF_SPP (256),
 # EQ_POV_REF ("+AM2 +A0.0 +R4"), EQ_SPPS ("1 2 4 8 16"),
-# EQ_ADAPTIVE ("0.3:16 0.2:16 0.15:16 0.1:16 0.03:16 0.1:64 0.03:64"; the
-# thresholds between 0.3 and 0.1 put points near the RMSE of POV-Ray's +A0.3,
-# where the ratio is read, rather than interpolating across a gap),
+# EQ_ADAPTIVE ("0.3:16 0.2:16 0.15:16 0.1:16 0.05:16 0.03:16 0.1:64
+# 0.03:64"; the thresholds between 0.3 and 0.05 put points near the RMSE of
+# POV-Ray's +A0.3, where the ratio is read, rather than interpolating across
+# a gap),
 # EQ_POV_POINTS ("0.3:2:3 0.3:2:2 0.3:2:4 0.3:1:3 0.1:1:3 0.1:2:3 0.03:1:3
 # 0.03:2:3"), EQ_DIR
 # (/tmp/scenefile-equal-error; never inside the repository). At the
@@ -46,7 +47,7 @@ scenes=${EQ_SCENES:-floor-1000 default glass-mirror}
 ref_spp=${EQ_REF_SPP:-256}
 pov_ref=${EQ_POV_REF:-+AM2 +A0.0 +R4}
 spps=${EQ_SPPS:-1 2 4 8 16}
-adaptive_points=${EQ_ADAPTIVE:-0.3:16 0.2:16 0.15:16 0.1:16 0.03:16 0.1:64 0.03:64}
+adaptive_points=${EQ_ADAPTIVE:-0.3:16 0.2:16 0.15:16 0.1:16 0.05:16 0.03:16 0.1:64 0.03:64}
 pov_points=${EQ_POV_POINTS:-0.3:2:3 0.3:2:2 0.3:2:4 0.3:1:3 0.1:1:3 0.1:2:3 0.03:1:3 0.03:2:3}
 data=${EQ_DIR:-/tmp/scenefile-equal-error}
 doc=$root/docs/PERFORMANCE.md
