@@ -79,7 +79,11 @@ start=$(date +%s)
 load_start=$(cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo unknown)
 
 has_adaptive=no
-if "$bin/sfrender" --help 2>/dev/null | grep -q -- '--adaptive'; then has_adaptive=yes; fi
+# The help is read whole before it is searched: with pipefail, grep -q
+# leaving at the first match could end sfrender on SIGPIPE mid-help, and
+# the pipe then fail.
+sfrender_help=$("$bin/sfrender" --help 2>/dev/null || true)
+if [[ $sfrender_help == *--adaptive* ]]; then has_adaptive=yes; fi
 [[ $has_adaptive == yes ]] || log "sfrender --help lists no --adaptive: its adaptive points are left out"
 
 # --- The scenes: each as sfrender reads it and as POV-Ray's .pov -------------
