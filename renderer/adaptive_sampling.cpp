@@ -70,9 +70,8 @@ int PixelLattice::subdivide(double threshold, const TraceLevel& traceLevel) {
   // must differ by more to be worth its five samples: the threshold
   // doubles with each level. The object test is the pixel's alone: below
   // it, two objects of one colour need no finer squares. With one
-  // threshold and the object test at every level, the finer cuts cost 7
-  // to 12% more CPU time for the same error (docs/RENDERING.md, "Adaptive
-  // sampling").
+  // threshold and the object test at every level, the same error took 8
+  // to 13% more CPU time (docs/RENDERING.md, "Adaptive sampling").
   double levelThreshold = threshold;
   for (int level = 0; !squares.empty(); ++level, levelThreshold *= 2.0) {
     next.clear();
