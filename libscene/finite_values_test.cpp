@@ -9,7 +9,9 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
+#include "libscene/core/finite_check.h"
 #include "libscene/formats/instruction/instruction_reader.h"
 #include "scenefile/matrix.h"
 #include "libscene/formats/pov/pov_reader.h"
@@ -269,6 +271,37 @@ TEST(FiniteValues, CheckSceneFiniteNamesEveryRecordThatHoldsANonFiniteNumber) {
   EXPECT_EQ(out.items()[1].span.line, 13u);
   EXPECT_EQ(out.items()[2].span.line, 22u);
   EXPECT_EQ(out.items()[2].message, "SCALE of SPHERE object 2 holds a value that is not finite");
+}
+
+// The readers' test of many objects on several threads finds a non-finite
+// number in any part, the first object, the last and one on each side of
+// where two parts meet, and passes a clean scene, for any thread count.
+TEST(FiniteValues, TheObjectsTestOnSeveralThreadsFindsANonFiniteNumberInAnyPart) {
+  constexpr std::size_t kCount = 200000;  // three parts of at least 1 << 16
+  std::vector<Object> objects(kCount);
+  for (unsigned threads : {0u, 1u, 2u, 3u, 8u}) {
+    SCOPED_TRACE(threads);
+    EXPECT_TRUE(objectsFinite(objects, threads));
+    for (std::size_t at : {std::size_t{0}, kCount / 2 - 1, kCount / 2, kCount - 1}) {
+      SCOPED_TRACE(at);
+      objects[at].matrix[3][1] = kNaN;
+      EXPECT_FALSE(objectsFinite(objects, threads));
+      objects[at].matrix[3][1] = 0.0;
+      objects[at].material.shininess = kInf;
+      EXPECT_FALSE(objectsFinite(objects, threads));
+      objects[at].material.shininess = 200.0;
+      objects[at].transforms = std::vector<TransformOp>{
+          TransformOp{TransformKind::Translate, {0, 0, -kInf}, SourceSpan{}}};
+      EXPECT_FALSE(objectsFinite(objects, threads));
+      objects[at].transforms.reset();
+    }
+  }
+  // What the readers report then: the one object, by its number.
+  objects[kCount / 2].material.colour.b = kNaN;
+  DiagnosticList out;
+  EXPECT_FALSE(checkObjectsFinite(objects, out));
+  ASSERT_EQ(out.errorCount(), 1u);
+  EXPECT_EQ(out.items()[0].message, "SPHERE object 100001 holds a value that is not finite");
 }
 
 TEST(FiniteValues, NoReaderAcceptsANonFiniteNumberFromTheHostileValues) {

@@ -1,6 +1,7 @@
 // Reading a scene in any format, through the format registry.
 #include "scenefile/read.h"
 
+#include "libscene/core/finite_check.h"
 #include "libscene/text/text_lines.h"
 #include "scenefile/validation.h"
 
@@ -71,9 +72,15 @@ ReadResult unknownFormat(std::string_view text, std::string fileName,
 
 // The reader's result, with the last line of defence: the readers report a
 // value that is not finite where it was made, and this makes sure that no
-// accepted scene holds one, whatever a reader missed.
-ReadResult checked(ReadResult result) {
-  if (result.ok()) checkSceneFinite(result.scene, result.diagnostics);
+// accepted scene holds one, whatever a reader missed. The objects' test runs
+// first on the reader's threads; only where it fails (or a thread could not
+// start) does the check in order run, for its reports.
+ReadResult checked(ReadResult result, const ReadOptions& options) {
+  if (!result.ok()) return result;
+  checkFramingFinite(result.scene, result.diagnostics);
+  if (!objectsFinite(result.scene.objects, options.threads)) {
+    checkObjectsFinite(result.scene.objects, result.diagnostics);
+  }
   return result;
 }
 
@@ -99,7 +106,7 @@ ReadResult parseSceneAs(Format format, std::string_view text, std::string fileNa
   if (text.size() > options.maxFileSize) {
     return refusedAsTooLarge(text.size(), std::move(fileName), options);
   }
-  return checked(formatInfo(format).read(text, std::move(fileName), options));
+  return checked(formatInfo(format).read(text, std::move(fileName), options), options);
 }
 
 }  // namespace scene
