@@ -163,7 +163,7 @@ class Tracers {
         double t = objectDistance(scene_.objects()[plane], p.ray, p.nearest);
         if (t >= 0.0) {
           p.nearest = t;
-          p.id = static_cast<std::int32_t>(plane);
+          p.id = static_cast<std::int32_t>(scene_.sceneObject(plane));
         }
       }
       nearest[k] = p.nearest;
@@ -238,8 +238,9 @@ class Tracers {
     h.instID[0] = RTC_INVALID_GEOMETRY_ID;
   }
   void collect(unsigned geomID, unsigned primID, const Pixel& p, std::int32_t& id) const {
-    id = geomID == RTC_INVALID_GEOMETRY_ID ? p.id
-                                           : static_cast<std::int32_t>(geometry_.bounded[primID]);
+    id = geomID == RTC_INVALID_GEOMETRY_ID
+             ? p.id
+             : static_cast<std::int32_t>(scene_.sceneObject(geometry_.bounded[primID]));
   }
   // Packets: lanes past the image's edge are left out (valid 0).
   template <typename RayHitN>
@@ -295,8 +296,8 @@ int run(const std::string& path, render::RenderSettings settings, int runs,
   Geometry geometry;
   geometry.objects = &compiled.objects();
   for (std::uint32_t i = 0; i < compiled.objects().size(); ++i) {
-    // RenderScene's objects are the scene's, in its order.
-    const scene::Object& o = loaded->objects[i];
+    // RenderScene numbers its objects in its own order (sceneObject).
+    const scene::Object& o = loaded->objects[compiled.sceneObject(i)];
     if (auto b = render::worldBounds(o.kind, o.matrix)) {
       geometry.bounded.push_back(i);
       geometry.bounds.push_back(*b);

@@ -78,7 +78,7 @@ Pass traceDouble(const render::RenderScene& scene, const render::RenderSettings&
       glm::dvec3 d = glm::normalize(ray.direction);
       glm::dvec3 n = glm::dot(hit->normal, d) > 0.0 ? -hit->normal : hit->normal;
       glm::dvec3 c = tracer.shadeSurface(*hit, n, -d, context);
-      pass.ids[k] = static_cast<std::int32_t>(hit->object);
+      pass.ids[k] = static_cast<std::int32_t>(scene.sceneObject(hit->object));
       for (int ch = 0; ch < 3; ++ch) pass.rgb[3 * k + ch] = static_cast<float>(c[ch]);
     }
   }
@@ -108,7 +108,7 @@ Pass traceFloat(const render::RenderScene& scene, const render::RenderSettings& 
       bench::FloatHit hit;
       if (!tracer.closestHit(r, hit)) continue;
       glm::vec3 c = tracer.shade(hit, r, hints, counts, measureSelf);
-      pass.ids[k] = static_cast<std::int32_t>(hit.object);
+      pass.ids[k] = static_cast<std::int32_t>(scene.sceneObject(hit.object));
       for (int ch = 0; ch < 3; ++ch) pass.rgb[3 * k + ch] = c[ch];
     }
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -343,6 +344,13 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   buildSubtrees(in, subtrees, threads);
   nodes_.resize(closeGaps(nodes_, subtrees, 2 * n - 1));
   keepOrder();
+}
+
+std::vector<std::uint32_t> Bvh::numberItemsByPlace() {
+  std::vector<std::uint32_t> old(items_.size());
+  old.swap(items_);
+  std::iota(items_.begin(), items_.end(), 0u);
+  return old;
 }
 
 std::vector<std::uint32_t> Bvh::visitRanks(std::uint8_t signs) const {

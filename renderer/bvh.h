@@ -76,6 +76,12 @@ class Bvh {
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   const std::vector<std::uint32_t>& items() const { return items_; }
 
+  /// Numbers the items by their place in items(), so that items()[k] is k
+  /// and each leaf lists the same boxes as before under their new numbers,
+  /// and returns the old numbers in that order (what items() was): for a
+  /// caller that lays out its own records in the BVH's order.
+  std::vector<std::uint32_t> numberItemsByPlace();
+
   // Calls visit(item) for every item whose leaf box the ray meets within
   // [0, tMax]; visit returns the new tMax (smaller after a hit, to prune) or
   // a negative value to stop at once (for any-hit queries). Items are

@@ -750,7 +750,7 @@ std::vector<std::int32_t> renderObjectIds(const RenderScene& scene,
           for (int i = tile.x0; i < tile.x1; ++i) {
             if (auto hit = scene.closestHit(camera.rayThrough(i + 0.5, j + 0.5), RaySource{})) {
               ids[static_cast<std::size_t>(j) * settings.width + i] =
-                  static_cast<std::int32_t>(hit->object);
+                  static_cast<std::int32_t>(scene.sceneObject(hit->object));
             }
           }
         }

@@ -43,16 +43,18 @@ TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
 TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   RenderMemoryEstimate e = estimateRenderMemory(1000, 7, 640, 480);
   EXPECT_EQ(e.image, 640u * 480 * (3 * sizeof(float) + 3 * sizeof(float)));
-  // The records, each object's index in its list and its BVH leaf, and a
-  // plane's normal, counted for any object.
+  // The records, each object's index in its list, its index in the scene
+  // and its BVH leaf, and a plane's normal, counted for any object.
   EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
-                             2 * sizeof(std::uint32_t) + sizeof(glm::dvec3)) +
+                             3 * sizeof(std::uint32_t) + sizeof(glm::dvec3)) +
                          7 * sizeof(RenderLight));
-  // At least the nodes, items and boxes, and the build's copy of each box
-  // beside its index (padded to 8 bytes); the rest is the threads' lists of
-  // the top of the tree and of its subtrees, a few bytes a box.
+  // At least the nodes, items and boxes, the build's copy of each box
+  // beside its index (padded to 8 bytes), and the constructor's three lists
+  // of indices (the planes and the bounded objects in the scene's order,
+  // which may double, and the BVH's order); the rest is the threads' lists
+  // of the top of the tree and of its subtrees, a few bytes a box.
   std::uint64_t parts = 1000 * (2 * sizeof(Bounds) + (sizeof(Bounds) + 8) + 2 * sizeof(BvhNode) +
-                                sizeof(std::uint32_t));
+                                4 * sizeof(std::uint32_t));
   // And 7 lights' grids of at most 8 cells a box on each face: per cell
   // its start, count and full flag, per entry an index (16 a box, plus one
   // a cell, at most), and while two build at once, 6 ranges of cells a box

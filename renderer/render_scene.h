@@ -25,6 +25,7 @@ struct Ray {
 // Which surface a ray leaves, so that it is not found again at t = 0: a ray
 // leaving a convex solid (or a plane) outward cannot meet it again, and one
 // going inward meets it only where it leaves.
+// (Objects are numbered as RenderScene numbers them: RenderScene::objects.)
 struct RaySource {
   static constexpr std::uint32_t kNone = 0xFFFFFFFF;
   std::uint32_t object = kNone;
@@ -58,7 +59,7 @@ struct RenderLight {
 // A surface point found by a ray.
 struct Hit {
   double t = 0.0;
-  std::uint32_t object = RaySource::kNone;
+  std::uint32_t object = RaySource::kNone;  // as RenderScene numbers it (objects())
   glm::dvec3 point{0.0};       // world space, on the surface
   glm::dvec3 pointError{0.0};  // bound on the error of `point`
   glm::dvec3 normal{0.0};      // unit, outward (for a plane: its +y side)
@@ -108,7 +109,13 @@ class RenderScene {
   /// UINT64_MAX, never a wrapped figure.
   static Bytes bytesFor(std::uint64_t objects, std::uint64_t lights);
 
+  /// The objects' records, numbered as every object here is (Hit::object,
+  /// RaySource::object, the accessors below): the planes first, then the
+  /// bounded objects in the BVH's order, where neighbours in space lie
+  /// together in memory. sceneObject gives an object's index in the scene.
   const std::vector<RenderObject>& objects() const { return objects_; }
+  /// The index in scene::Scene::objects of object `object`.
+  std::uint32_t sceneObject(std::uint32_t object) const { return sceneObjects_[object]; }
   const scene::Material& material(std::uint32_t object) const { return materials_[object]; }
   const std::vector<RenderLight>& lights() const { return lights_; }
   const scene::Camera& camera() const { return camera_; }
@@ -245,8 +252,9 @@ class RenderScene {
   // and its material.
   std::vector<glm::dmat3> linearToWorld_;
   std::vector<scene::Material> materials_;
-  std::vector<std::uint32_t> bounded_;  // BVH item -> object index
-  std::vector<std::uint32_t> planes_;   // unbounded objects, tested for every ray
+  std::vector<std::uint32_t> sceneObjects_;  // object -> its index in the scene
+  std::vector<std::uint32_t> bounded_;       // BVH item -> object
+  std::vector<std::uint32_t> planes_;        // unbounded objects, tested for every ray
   // Per plane (as planes_), its world normal: the same at every point, so
   // made once, by the expression finishHit uses for other objects.
   std::vector<glm::dvec3> planeNormals_;

@@ -122,7 +122,7 @@ TEST(Bvh, AnyHitAgreesWithBruteForceWhateverItsHint) {
       ASSERT_NE(kept, RaySource::kNone) << "ray " << r;
       // The object it names blocks this segment on its own.
       scene::Scene one = sceneLookingAt({0, 0, 1}, {0, 0, 0});
-      one.objects.push_back(s.objects[kept]);
+      one.objects.push_back(s.objects[compiled.sceneObject(kept)]);
       ASSERT_TRUE(RenderScene(one).closestHitBruteForce(ray, RaySource{}, tMax).has_value())
           << "ray " << r;
     } else {
@@ -176,6 +176,73 @@ TEST(Bvh, HitsAreIdenticalToBruteForce) {
     }
   }
   EXPECT_EQ(total, scene::testing::randomCases(1000000));
+}
+
+// The compiled scene numbers its objects the planes first, in the scene's
+// order, then the bounded objects in the BVH's order, whose items are then
+// numbered by their place; sceneObject names each one's place in the scene,
+// and every record is that object's. The layout is the BVH's, so the same
+// for any thread count.
+TEST(RecordOrder, PlanesFirstThenTheBvhsOrderEachRecordItsSceneObjects) {
+  RandomTransforms random(5);
+  scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+  const int count = 20000;  // past the size at which records and BVH are built in parts
+  double spread = std::cbrt(static_cast<double>(count)) * 4.0;
+  for (int i = 0; i < count; ++i) {
+    ObjectKind kind = i % 997 == 3 ? ObjectKind::Plane : static_cast<ObjectKind>(1 + i % 3);
+    scene::Material m;
+    m.colour = glm::dvec3(i, 0.5, 0.25);
+    m.transparency = i == count - 1 ? 0.5 : 0.0;
+    s.objects.push_back(
+        object(kind,
+               {scale(random.uniform(0.2, 1), random.uniform(0.2, 1), random.uniform(0.2, 1)),
+                rotateY(random.uniform(0, 3)),
+                translate(random.uniform(-spread, spread), random.uniform(-spread, spread),
+                          random.uniform(-spread, spread))},
+               m));
+  }
+  RenderScene one(s, 1);
+  RenderScene four(s, 4);
+  EXPECT_TRUE(one.hasTransparency());
+  std::vector<int> seen(count, 0);
+  std::uint32_t planes = 0;
+  for (std::uint32_t r = 0; r < static_cast<std::uint32_t>(count); ++r) {
+    std::uint32_t inScene = one.sceneObject(r);
+    ASSERT_LT(inScene, static_cast<std::uint32_t>(count));
+    ++seen[inScene];
+    ASSERT_EQ(four.sceneObject(r), inScene) << "object " << r;
+    const scene::Object& o = s.objects[inScene];
+    ASSERT_EQ(one.objects()[r].kind, o.kind) << "object " << r;
+    ASSERT_EQ(one.objects()[r].translation, glm::dvec3(o.matrix[3])) << "object " << r;
+    ASSERT_EQ(one.linearToWorld(r), glm::dmat3(o.matrix)) << "object " << r;
+    ASSERT_EQ(one.material(r), o.material) << "object " << r;
+    if (o.kind == ObjectKind::Plane) {
+      // The planes come first, in the scene's order.
+      ASSERT_EQ(r, planes++);
+      if (r > 0) {
+        ASSERT_GT(inScene, one.sceneObject(r - 1));
+      }
+    }
+  }
+  for (int i = 0; i < count; ++i) ASSERT_EQ(seen[i], 1) << "scene object " << i;
+  EXPECT_EQ(one.planeObjects().size(), planes);
+  ASSERT_EQ(one.boundedObjects().size(), count - planes);
+  for (std::uint32_t k = 0; k < one.bvh().items().size(); ++k) {
+    ASSERT_EQ(one.bvh().items()[k], k);
+    ASSERT_EQ(one.boundedObjects()[k], planes + k);
+  }
+  // Each leaf holds the boxes of the objects its items name.
+  for (const BvhNode& node : one.bvh().nodes()) {
+    for (std::uint32_t i = 0; i < node.count; ++i) {
+      std::uint32_t object = one.boundedObjects()[one.bvh().items()[node.offset + i]];
+      const scene::Object& o = s.objects[one.sceneObject(object)];
+      Bounds box = *worldBounds(o.kind, o.matrix);
+      for (int a = 0; a < 3; ++a) {
+        ASSERT_LE(node.planes[a], box.lo[a]) << "object " << object;
+        ASSERT_GE(node.planes[3 + a], box.hi[a]) << "object " << object;
+      }
+    }
+  }
 }
 
 TEST(RestingOnAPlane, NoLightGapAtTheContact) {
@@ -306,12 +373,14 @@ TEST(PlaneHits, EachCarriesTheNormalOfItsOwnPlane) {
   for (int i = 0; i < 4000; ++i) {
     glm::dvec3 origin(random.uniform(-8, 8), random.uniform(-8, 8), random.uniform(-8, 8));
     std::optional<Hit> hit = compiled.closestHit(Ray{origin, random.direction()}, RaySource{});
-    if (!hit || s.objects[hit->object].kind != ObjectKind::Plane) continue;
-    ++planeHits[hit->object];
-    glm::dmat3 linear(s.objects[hit->object].matrix);
+    if (!hit) continue;
+    std::uint32_t inScene = compiled.sceneObject(hit->object);
+    if (s.objects[inScene].kind != ObjectKind::Plane) continue;
+    ++planeHits[inScene];
+    glm::dmat3 linear(s.objects[inScene].matrix);
     glm::dvec3 expected =
         glm::normalize(glm::transpose(glm::inverse(linear)) * glm::dvec3(0, 1, 0));
-    EXPECT_NEAR(glm::length(hit->normal - expected), 0.0, 1e-12) << hit->object;
+    EXPECT_NEAR(glm::length(hit->normal - expected), 0.0, 1e-12) << inScene;
     EXPECT_NEAR(glm::dot(hit->normal, linear[0]), 0.0, 1e-12 * glm::length(linear[0]));
   }
   for (std::size_t i = 0; i < s.objects.size(); ++i) {

@@ -282,23 +282,30 @@ TEST(MediumStack, ACopyHoldsTheSameSolidsAndGoesItsOwnWay) {
     s.objects.push_back(object(ObjectKind::Sphere, {}, glass));
   }
   RenderScene compiled(s);
+  // The stack holds objects as the compiled scene numbers them; the spheres
+  // here are named by their place in the scene.
+  auto sphere = [&](std::uint32_t inScene) {
+    std::uint32_t object = 0;
+    while (compiled.sceneObject(object) != inScene) ++object;
+    return object;
+  };
   MediumStack three;
-  for (std::uint32_t object : {0u, 1u, 2u}) three.push(object);
+  for (std::uint32_t object : {0u, 1u, 2u}) three.push(sphere(object));
 
   MediumStack copied(three);
   EXPECT_EQ(copied.size(), 3);
   EXPECT_EQ(copied.refractiveIndex(compiled), 1.3);
   // Assigned over a deeper stack: the deeper one's solids are gone.
   MediumStack assigned;
-  for (std::uint32_t object : {3u, 3u, 3u, 3u, 3u}) assigned.push(object);
+  for (int k = 0; k < 5; ++k) assigned.push(sphere(3));
   assigned = three;
   EXPECT_EQ(assigned.size(), 3);
   EXPECT_EQ(assigned.refractiveIndex(compiled), 1.3);
   // The order came with them: removing the innermost leaves the one below.
-  assigned.remove(2);
+  assigned.remove(sphere(2));
   EXPECT_EQ(assigned.refractiveIndex(compiled), 1.2);
-  assigned.remove(0);
-  assigned.remove(1);
+  assigned.remove(sphere(0));
+  assigned.remove(sphere(1));
   EXPECT_EQ(assigned.size(), 0);
   EXPECT_EQ(assigned.refractiveIndex(compiled), 1.0);
   // Assigned the empty stack, a stack is empty.

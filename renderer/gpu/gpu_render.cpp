@@ -345,8 +345,10 @@ std::vector<std::int32_t> renderObjectIdsGpu(const RenderScene& scene,
   PixelRegion full{0, 0, std::max(0, settings.width), std::max(0, settings.height)};
   KernelOutput out = runKernel(scene, settings, full, true, {}, nullptr);
   std::vector<std::int32_t> ids(static_cast<std::size_t>(full.width()) * full.height());
+  // The kernel numbers objects as the scene's records do; kNone is -1.
   for (std::size_t k = 0; k < ids.size(); ++k) {
-    ids[k] = static_cast<std::int32_t>(out.counts[4 * k + 3]);  // kNone is -1
+    std::uint32_t object = out.counts[4 * k + 3];
+    ids[k] = object == RaySource::kNone ? -1 : static_cast<std::int32_t>(scene.sceneObject(object));
   }
   return ids;
 }

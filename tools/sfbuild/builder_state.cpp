@@ -505,8 +505,9 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y) {
   auto hit = renderScene.closestHit(camera.rayThrough(x, y), render::RaySource{});
   if (!hit) return {};
   std::size_t objects = state.scene.objects.size();
-  if (hit->object < objects) return Selection{false, hit->object};
-  return Selection{true, hit->object - objects};
+  std::size_t picked = renderScene.sceneObject(hit->object);
+  if (picked < objects) return Selection{false, picked};
+  return Selection{true, picked - objects};
 }
 
 double verticalFovDegrees(const BuilderState& state) {
