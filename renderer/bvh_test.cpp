@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -155,6 +158,51 @@ TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
     ++pairs;
   }
   EXPECT_GT(pairs, 500);
+}
+
+// The outward rounding of box planes to float is std::nextafter's step from
+// the nearest float, for doubles of every magnitude, at and between floats,
+// at zeros, at the ends of the float range and past them, and NaN.
+TEST(FloatPlanes, RoundOutwardAsNextafterDoes) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  auto below = [](double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) > v ? std::nextafter(f, -kInf) : f;
+  };
+  auto above = [](double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) < v ? std::nextafter(f, kInf) : f;
+  };
+  auto check = [&](double v) {
+    float b = floatAtOrBelow(v);
+    float a = floatAtOrAbove(v);
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(b), std::bit_cast<std::uint32_t>(below(v))) << v;
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(a), std::bit_cast<std::uint32_t>(above(v))) << v;
+    if (!std::isnan(v)) {
+      ASSERT_LE(static_cast<double>(b), v);
+      ASSERT_GE(static_cast<double>(a), v);
+    }
+  };
+  const double denorm = std::numeric_limits<float>::denorm_min();
+  const double most = std::numeric_limits<float>::max();
+  for (double v : {0.0, -0.0, denorm, -denorm, 0.5 * denorm, -0.5 * denorm, 1e-300, -1e-300, most,
+                   -most, most * (1 + 1e-9), -most * (1 + 1e-9), 1e300, -1e300,
+                   std::numeric_limits<double>::infinity(),
+                   -std::numeric_limits<double>::infinity(), std::nan("")}) {
+    check(v);
+  }
+  std::mt19937_64 rng(17);
+  for (int i = 0; i < 200000; ++i) {
+    // A float, the doubles just beside it, and a double of any magnitude.
+    float f = std::bit_cast<float>(static_cast<std::uint32_t>(rng()));
+    if (std::isnan(f)) continue;
+    double d = f;
+    check(d);
+    check(std::nextafter(d, 1e308));
+    check(std::nextafter(d, -1e308));
+    check(std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng),
+                     static_cast<int>(rng() % 300) - 150));
+  }
 }
 
 TEST(BvhBuild, NoBoxesMakeAnEmptyTree) {
