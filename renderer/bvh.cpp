@@ -313,12 +313,12 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   // of either is the first touch of its fresh pages. The list is made in
   // one pass (sized first, it would be written twice).
   std::vector<BuildItem> items;
+  allocateHere(items, n);
+  allocateHere(nodes_, kNodesPerBox * n);
   runParts(2, threads, [&](std::size_t array) {
     if (array == 0) {
-      items.reserve(n);
       for (std::uint32_t i = 0; i < n; ++i) items.push_back(BuildItem{boxes[i], i, 0});
     } else {
-      nodes_.reserve(kNodesPerBox * n);
       nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
     }
   });

@@ -56,4 +56,15 @@ void runParts(std::size_t parts, int threads, Work&& work) {
   }
 }
 
+// Reserves room for `count` elements of `v` on the calling thread, for
+// other threads to fill. glibc serves a thread from an arena of its own,
+// and a big block of a helper thread's arena is mapped apart and unmapped
+// when freed, while the main thread's (where sfrender keeps freed memory,
+// tools/sfrender/main.cpp) is handed out again: a big array taken here may
+// reuse memory already touched, which a helper's must zero afresh.
+template <typename T>
+void allocateHere(std::vector<T>& v, std::size_t count) {
+  v.reserve(count);
+}
+
 }  // namespace render

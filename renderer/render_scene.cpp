@@ -124,7 +124,14 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     (scene.objects[i].kind == scene::ObjectKind::Plane ? planesInScene : boundedInScene)
         .push_back(i);
   }
+  // Their room is taken on this thread (renderer/parallel_parts.h,
+  // allocateHere) and written on the others.
   std::vector<Bounds> boxes;
+  allocateHere(objects_, count);
+  allocateHere(materials_, count);
+  allocateHere(linearToWorld_, count);
+  allocateHere(sceneObjects_, count);
+  allocateHere(boxes, boundedInScene.size());
   runParts(5, static_cast<int>(parts), [&](std::size_t array) {
     switch (array) {
       case 0:

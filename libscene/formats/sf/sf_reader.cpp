@@ -400,11 +400,16 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
 
   // Then the parts themselves. A part stops at its first diagnostic: any
   // diagnostic sends the file to the whole-file reader, whose diagnostics
-  // are the ones reported.
+  // are the ones reported. Each part's objects get their room here, on this
+  // thread, though the part's own thread fills it: glibc may hand out again
+  // what this thread frees, where a big block of a part's thread goes back
+  // to the system when freed, to be zeroed afresh for the next big array.
   std::vector<ReadResult> results;
   results.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     results.push_back(ReadResult{Scene{}, DiagnosticList(fileName, options.errorLimit)});
+    results[k].scene.objects.reserve(
+        std::min(k == 0 ? allRecords : records[k], options.maxObjects));
   }
   std::vector<PartFacts> facts(count);
   bool read = runOnThreads(count, [&](std::size_t k) {
