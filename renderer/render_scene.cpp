@@ -210,22 +210,28 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
   // A grid per light, for its shadow rays (docs/RENDERING.md, "Direction
   // grids"); not for a scene of planes alone, which has nothing to list.
   if (lightGrids && boxes.size() >= kMinLightGridObjects) {
-    // Each item's leaf, whose box the grids' shadow rays test first
-    // (meetsItemBox): nothing else reads it.
-    leafOf_.resize(boxes.size());
-    const std::vector<BvhNode>& nodes = bvh_.nodes();
-    for (std::uint32_t node = 0; node < nodes.size(); ++node) {
-      for (std::uint32_t i = 0; i < nodes[node].count; ++i) {
-        leafOf_[bvh_.items()[nodes[node].offset + i]] = node;
-      }
-    }
     // The grids are independent: up to kGridsBuiltAtOnce at a time (what
     // bytesFor counts), each built by one thread as it would be alone. Their
-    // boxes are in the items' order, so box k is item k.
+    // boxes are in the items' order, so box k is item k. The last part,
+    // taken by the first thread to finish a grid, is each item's leaf, whose
+    // box the grids' shadow rays test first (meetsItemBox): nothing else
+    // reads it, and the grids take unequal times.
     lightGrids_.resize(std::min(lights_.size(), kMaxLightGrids));
-    runParts(lightGrids_.size(), std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
-      lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, kLightGridCells,
-                                                 DirectionGrid::Limits{});
+    allocateHere(leafOf_, boxes.size());
+    const std::size_t grids = lightGrids_.size();
+    runParts(grids + 1, std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
+      if (i < grids) {
+        lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, kLightGridCells,
+                                                   DirectionGrid::Limits{});
+        return;
+      }
+      leafOf_.resize(boxes.size());
+      const std::vector<BvhNode>& nodes = bvh_.nodes();
+      for (std::uint32_t node = 0; node < nodes.size(); ++node) {
+        for (std::uint32_t k = 0; k < nodes[node].count; ++k) {
+          leafOf_[bvh_.items()[nodes[node].offset + k]] = node;
+        }
+      }
     });
   }
 }
