@@ -572,6 +572,26 @@ TEST(FileIo, AtomicWriteReplacesWholeAndLeavesNoTemporary) {
   fs::remove_all(dir);
 }
 
+// A file big enough that the later half of its buffer is faulted in on a
+// thread of its own while the first half is read comes back byte for byte,
+// and so does one cut short by the byte limit.
+TEST(FileIo, ABigFileIsReadWholeWhileItsLaterPagesAreFaultedIn) {
+  fs::path dir = fs::temp_directory_path() / ("sfbigread-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string text(40u << 20, '\0');
+  for (std::size_t i = 0; i < text.size(); ++i) text[i] = static_cast<char>('a' + (i * 7919) % 26);
+  std::string error;
+  ASSERT_TRUE(writeFileAtomically(dir / "big", text, error)) << error;
+  std::optional<std::string> read = readWholeFile(dir / "big", error);
+  ASSERT_TRUE(read.has_value()) << error;
+  EXPECT_TRUE(*read == text);
+  std::optional<std::string> cut = readWholeFile(dir / "big", error, 30u << 20);
+  ASSERT_TRUE(cut.has_value()) << error;
+  EXPECT_EQ(cut->size(), (30u << 20) + 1);
+  EXPECT_TRUE(cut->compare(0, cut->size(), text, 0, cut->size()) == 0);
+  fs::remove_all(dir);
+}
+
 // The limits (docs/FORMATS.md, "Limits"): each over its default or lowered
 // limit, then raised.
 
