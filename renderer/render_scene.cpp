@@ -176,11 +176,23 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
   bounded_.resize(boundedInScene.size());
   std::iota(bounded_.begin(), bounded_.end(), planeCount);
 
-  // Step 3: the records, in parts side by side, each gathered from its
-  // place in the scene, which a file in no spatial order makes a random
-  // read: the object kGatherAhead records on is fetched while this one is
-  // made (at 1,000,000 objects 50 -> 33 ms on 2 threads; 4 to 16 ahead did
-  // the same).
+  // Step 3: the records in that order, the lights, and the lights' grids.
+  makeRecords(scene, parts, threads);
+  lights_.reserve(scene.lights.size());
+  for (const scene::Light& light : scene.lights) {
+    lights_.push_back(RenderLight{light.position(), light.colour});
+  }
+  // A grid per light, for its shadow rays (docs/RENDERING.md, "Direction
+  // grids"); not for a scene of planes alone, which has nothing to list.
+  if (lightGrids && boxes.size() >= kMinLightGridObjects) buildLightGrids(boxes, threads);
+}
+
+void RenderScene::makeRecords(const scene::Scene& scene, std::size_t parts, int threads) {
+  const std::size_t count = scene.objects.size();
+  // In parts side by side, each record gathered from its place in the
+  // scene, which a file in no spatial order makes a random read: the object
+  // kGatherAhead records on is fetched while this one is made (at 1,000,000
+  // objects 50 -> 33 ms on 2 threads; 4 to 16 ahead did the same).
   std::vector<std::uint8_t> transparent(parts, 0);
   runParts(parts, threads, [&](std::size_t part) {
     const std::size_t end = count * (part + 1) / parts;
@@ -203,37 +215,32 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
     planeNormals_.push_back(
         glm::normalize(objects_[plane].normalToWorld(glm::dvec3(0.0, 1.0, 0.0))));
   }
-  lights_.reserve(scene.lights.size());
-  for (const scene::Light& light : scene.lights) {
-    lights_.push_back(RenderLight{light.position(), light.colour});
-  }
-  // A grid per light, for its shadow rays (docs/RENDERING.md, "Direction
-  // grids"); not for a scene of planes alone, which has nothing to list.
-  if (lightGrids && boxes.size() >= kMinLightGridObjects) {
-    // The grids are independent: up to kGridsBuiltAtOnce at a time (what
-    // bytesFor counts), each built by one thread as it would be alone. Their
-    // boxes are in the items' order, so box k is item k. The last part,
-    // taken by the first thread to finish a grid, is each item's leaf, whose
-    // box the grids' shadow rays test first (meetsItemBox): nothing else
-    // reads it, and the grids take unequal times.
-    lightGrids_.resize(std::min(lights_.size(), kMaxLightGrids));
-    allocateHere(leafOf_, boxes.size());
-    const std::size_t grids = lightGrids_.size();
-    runParts(grids + 1, std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
-      if (i < grids) {
-        lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, kLightGridCells,
-                                                   DirectionGrid::Limits{});
-        return;
+}
+
+void RenderScene::buildLightGrids(const std::vector<Bounds>& boxes, int threads) {
+  // The grids are independent: up to kGridsBuiltAtOnce at a time (what
+  // bytesFor counts), each built by one thread as it would be alone. Their
+  // boxes are in the items' order, so box k is item k. The last part,
+  // taken by the first thread to finish a grid, is each item's leaf, whose
+  // box the grids' shadow rays test first (meetsItemBox): nothing else
+  // reads it, and the grids take unequal times.
+  lightGrids_.resize(std::min(lights_.size(), kMaxLightGrids));
+  allocateHere(leafOf_, boxes.size());
+  const std::size_t grids = lightGrids_.size();
+  runParts(grids + 1, std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
+    if (i < grids) {
+      lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, kLightGridCells,
+                                                 DirectionGrid::Limits{});
+      return;
+    }
+    leafOf_.resize(boxes.size());
+    const std::vector<BvhNode>& nodes = bvh_.nodes();
+    for (std::uint32_t node = 0; node < nodes.size(); ++node) {
+      for (std::uint32_t k = 0; k < nodes[node].count; ++k) {
+        leafOf_[bvh_.items()[nodes[node].offset + k]] = node;
       }
-      leafOf_.resize(boxes.size());
-      const std::vector<BvhNode>& nodes = bvh_.nodes();
-      for (std::uint32_t node = 0; node < nodes.size(); ++node) {
-        for (std::uint32_t k = 0; k < nodes[node].count; ++k) {
-          leafOf_[bvh_.items()[nodes[node].offset + k]] = node;
-        }
-      }
-    });
-  }
+    }
+  });
 }
 
 Bounds RenderScene::itemBounds(std::uint32_t item) const {

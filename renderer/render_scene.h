@@ -238,6 +238,12 @@ class RenderScene {
     finishHit(index, ray, candidate, hit.emplace());
     return hit;
   }
+  // The constructor's steps after the BVH: the records (objects_,
+  // materials_, linearToWorld_, planeNormals_) from the scene's objects that
+  // sceneObjects_ names, in `parts` parts on `threads` threads; and the
+  // lights' grids over `boxes` (item k's box at k), with each item's leaf.
+  void makeRecords(const scene::Scene& scene, std::size_t parts, int threads);
+  void buildLightGrids(const std::vector<Bounds>& boxes, int threads);
   // Whether the ray meets the box of the leaf holding BVH item `item`
   // within (0, tMax): hitsBox on the leaf's float box, which contains the
   // object's box.
