@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <thread>
 #include <vector>
-#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
