@@ -374,10 +374,10 @@ void RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate
     hit.pointError[r] = gamma(3) * magnitude + (1.0 + gamma(3)) * carried;
   }
   // Step 2: the normal, through the inverse transpose; a plane's was made
-  // by the same expression in the constructor (planes_ is in object order).
+  // by the same expression in the constructor (the planes are the first
+  // objects, so plane `index` has the normal at `index`).
   if (plane) {
-    auto slot = std::lower_bound(planes_.begin(), planes_.end(), index) - planes_.begin();
-    hit.normal = planeNormals_[static_cast<std::size_t>(slot)];
+    hit.normal = planeNormals_[index];
   } else {
     hit.normal = glm::normalize(object.normalToWorld(s.normal));
   }

@@ -261,8 +261,9 @@ class RenderScene {
   std::vector<std::uint32_t> sceneObjects_;  // object -> its index in the scene
   std::vector<std::uint32_t> bounded_;       // BVH item -> object
   std::vector<std::uint32_t> planes_;        // unbounded objects, tested for every ray
-  // Per plane (as planes_), its world normal: the same at every point, so
-  // made once, by the expression finishHit uses for other objects.
+  // Per plane (as planes_: objects 0 to its size less 1), its world normal:
+  // the same at every point, so made once, by the expression finishHit uses
+  // for other objects.
   std::vector<glm::dvec3> planeNormals_;
   std::vector<RenderLight> lights_;
   scene::Camera camera_;
