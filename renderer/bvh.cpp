@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -50,36 +51,166 @@ struct BuildInput {
   BvhNode* nodes;
 };
 
-// Fills in the node over items [begin, end): its box, and either a leaf's
-// items or a split, for which it orders the items (those of the first
-// child first) and returns where the second child's begin.
-std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std::uint32_t begin,
-                                       std::uint32_t end, int depth) {
-  BuildItem* items = in.items;
+// A node's box and the box of its items' centres: what its split needs
+// before it reads an item. The split works out its children's from its bins
+// (the union of the bins each side takes), so each level of the build
+// passes over its items twice (bin, partition) rather than three times.
+struct NodeExtent {
   Bounds bounds;
-  Bounds centreBounds;
-  for (std::uint32_t i = begin; i < end; ++i) {
-    bounds.extend(items[i].box);
-    centreBounds.extend(items[i].box.centre());
+  Bounds centres;
+  void extend(const BuildItem& item) {
+    bounds.extend(item.box);
+    centres.extend(item.box.centre());
   }
+};
+
+NodeExtent extentOf(const BuildItem* items, std::uint32_t begin, std::uint32_t end) {
+  NodeExtent extent;
+  for (std::uint32_t i = begin; i < end; ++i) extent.extend(items[i]);
+  return extent;
+}
+
+// Which of kBins bins along `axis` a centre falls in.
+struct BinRule {
+  int axis;
+  double lo;
+  double scale;
+  int operator()(const glm::dvec3& centre) const {
+    return std::clamp(static_cast<int>((centre[axis] - lo) * scale), 0, kBins - 1);
+  }
+};
+
+// Bins of a split, in the order of their numbers: each one's number, the
+// extent of its items and their count. Bins that no item falls in may be
+// left out: they change no cost (see cheapestSplit).
+struct Bins {
+  int size = 0;
+  std::array<int, kBins> number;
+  std::array<NodeExtent, kBins> extent;
+  std::array<std::uint32_t, kBins> count;
+};
+
+// All kBins bins, filled in one pass over the items, each item's bin kept
+// in it for the partition.
+Bins manyItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, const BinRule& rule) {
+  Bins bins;
+  bins.size = kBins;
+  for (int b = 0; b < kBins; ++b) bins.number[b] = b;
+  bins.extent.fill(NodeExtent{});
+  bins.count.fill(0);
+  for (std::uint32_t i = begin; i < end; ++i) {
+    glm::dvec3 centre = items[i].box.centre();
+    int b = rule(centre);
+    items[i].bin = static_cast<std::uint32_t>(b);
+    ++bins.count[b];
+    bins.extent[b].bounds.extend(items[i].box);
+    bins.extent[b].centres.extend(centre);
+  }
+  return bins;
+}
+
+// Below this many items a split sets up only the bins its items fall in:
+// setting up and sweeping all kBins was most of the time of the small
+// splits, and most splits are small.
+constexpr std::uint32_t kFewItems = 16;
+
+// The bins that hold an item, for at most kFewItems items: one pass finds
+// them, a second fills them.
+Bins fewItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, const BinRule& rule) {
+  std::uint32_t held = 0;
+  for (std::uint32_t i = begin; i < end; ++i) {
+    int b = rule(items[i].box.centre());
+    items[i].bin = static_cast<std::uint32_t>(b);
+    held |= 1u << b;
+  }
+  Bins bins;
+  std::array<int, kBins> slot;
+  for (; held != 0; held &= held - 1) {
+    int b = std::countr_zero(held);
+    slot[b] = bins.size;
+    bins.number[bins.size] = b;
+    bins.extent[bins.size] = NodeExtent{};
+    bins.count[bins.size] = 0;
+    ++bins.size;
+  }
+  for (std::uint32_t i = begin; i < end; ++i) {
+    int j = slot[items[i].bin];
+    ++bins.count[j];
+    bins.extent[j].extend(items[i]);
+  }
+  return bins;
+}
+
+// The split of least cost by the surface area heuristic, as the index in
+// `bins` of the last bin on the left. The splits are those after bins 0 to
+// kBins - 2, priced as left count * left area + right count * right area,
+// and the first of the cheapest is taken. The split after a bin with no
+// item prices the same as the split after the bin before it, so leaving
+// the bin out changes neither the price of any split nor which is first of
+// the cheapest. Bin 0, which holds the lowest centre, is never left out.
+int cheapestSplit(const Bins& bins) {
+  // Right to left: what the bins after each one cost.
+  std::array<double, kBins> rightCost;
+  Bounds right;
+  std::uint32_t rightCount = 0;
+  for (int j = bins.size - 1; j >= 0; --j) {
+    rightCost[j] = rightCount ? rightCount * right.surfaceArea() : 0.0;
+    right.extend(bins.extent[j].bounds);
+    rightCount += bins.count[j];
+  }
+  int cheapest = -1;
+  double least = 0.0;
+  Bounds left;
+  std::uint32_t leftCount = 0;
+  for (int j = 0; j < bins.size && bins.number[j] <= kBins - 2; ++j) {
+    left.extend(bins.extent[j].bounds);
+    leftCount += bins.count[j];
+    double cost = (leftCount ? leftCount * left.surfaceArea() : 0.0) + rightCost[j];
+    if (cheapest < 0 || cost < least) {
+      cheapest = j;
+      least = cost;
+    }
+  }
+  return cheapest;
+}
+
+// A node's box: its bounds rounded outward to floats.
+void writeBox(BvhNode& node, const Bounds& bounds) {
   for (int i = 0; i < 3; ++i) {
     node.planes[i] = floatAtOrBelow(bounds.lo[i]);
     node.planes[3 + i] = floatAtOrAbove(bounds.hi[i]);
   }
+}
+
+void writeLeaf(BvhNode& node, std::uint32_t begin, std::uint32_t count, const Bounds& bounds) {
+  writeBox(node, bounds);
+  node.offset = begin;
+  node.count = static_cast<std::uint16_t>(count);
+}
+
+// Fills in the node over items [begin, end), of the given extent: its box,
+// and either a leaf's items or a split, for which it orders the items (those
+// of the first child first), sets the children's extents, and returns where
+// the second child's begin.
+std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std::uint32_t begin,
+                                       std::uint32_t end, int depth, const NodeExtent& extentIn,
+                                       std::array<NodeExtent, 2>& children) {
+  BuildItem* items = in.items;
+  const Bounds& centreBounds = extentIn.centres;
   std::uint32_t count = end - begin;
-  if (count <= kMaxLeafItems || depth >= kMaxDepth) {
-    if (count <= 0xFFFF) {
-      node.offset = begin;
-      node.count = static_cast<std::uint16_t>(count);
-      return std::nullopt;
-    }
+  if ((count <= kMaxLeafItems || depth >= kMaxDepth) && count <= 0xFFFF) {
+    writeLeaf(node, begin, count, extentIn.bounds);
+    return std::nullopt;
   }
+  writeBox(node, extentIn.bounds);
 
   // Step 1: the widest axis of the centres; all centres equal means no split
   // can help, so halve the list.
   glm::dvec3 extent = centreBounds.hi - centreBounds.lo;
   int axis = extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
   std::uint32_t mid = begin + count / 2;
+  node.axis = static_cast<std::uint8_t>(axis);
+  node.count = 0;
   if (count == 2) {
     // What the bins below give two items, without them (two in five of
     // the splits, where the bins' set-up was most of the work): whatever the
@@ -89,72 +220,58 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     if (items[begin + 1].centre(axis) < items[begin].centre(axis)) {
       std::swap(items[begin], items[begin + 1]);
     }
-    node.axis = static_cast<std::uint8_t>(axis);
-    node.count = 0;
+    children = {NodeExtent{}, NodeExtent{}};
+    children[0].extend(items[begin]);
+    children[1].extend(items[begin + 1]);
     return mid;
   }
-  bool median = true;
   if (extent[axis] > 0.0 && depth < kMaxDepth) {
     // Step 2: bin the centres and price every split between bins by the
     // surface area heuristic.
-    std::array<Bounds, kBins> binBounds;
-    std::array<std::uint32_t, kBins> binCounts{};
-    double scale = kBins / extent[axis];
-    auto binOf = [&](const BuildItem& item) {
-      int b = static_cast<int>((item.centre(axis) - centreBounds.lo[axis]) * scale);
-      return std::clamp(b, 0, kBins - 1);
-    };
-    for (std::uint32_t i = begin; i < end; ++i) {
-      int b = binOf(items[i]);
-      items[i].bin = static_cast<std::uint32_t>(b);
-      ++binCounts[b];
-      binBounds[b].extend(items[i].box);
-    }
-    std::array<double, kBins - 1> cost{};
-    Bounds left;
+    BinRule rule{axis, centreBounds.lo[axis], kBins / extent[axis]};
+    Bins bins = count <= kFewItems ? fewItemsBins(items, begin, end, rule)
+                                   : manyItemsBins(items, begin, end, rule);
+    int cheapest = cheapestSplit(bins);
     std::uint32_t leftCount = 0;
-    for (int b = 0; b < kBins - 1; ++b) {
-      left.extend(binBounds[b]);
-      leftCount += binCounts[b];
-      cost[b] = leftCount ? leftCount * left.surfaceArea() : 0.0;
-    }
-    Bounds right;
-    std::uint32_t rightCount = 0;
-    for (int b = kBins - 1; b > 0; --b) {
-      right.extend(binBounds[b]);
-      rightCount += binCounts[b];
-      cost[b - 1] += rightCount ? rightCount * right.surfaceArea() : 0.0;
-    }
-    int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
-    BuildItem* split = std::partition(items + begin, items + end, [&](const BuildItem& item) {
-      return item.bin <= static_cast<std::uint32_t>(best);
-    });
-    std::uint32_t at = static_cast<std::uint32_t>(split - items);
-    if (at != begin && at != end) {
-      mid = at;
-      median = false;
+    for (int j = 0; j <= cheapest; ++j) leftCount += bins.count[j];
+    if (leftCount != 0 && leftCount != count) {
+      // Step 3: the split, and the children's extents, the unions of their
+      // bins'.
+      std::uint32_t last = static_cast<std::uint32_t>(bins.number[cheapest]);
+      std::partition(items + begin, items + end,
+                     [&](const BuildItem& item) { return item.bin <= last; });
+      children = {NodeExtent{}, NodeExtent{}};
+      for (int j = 0; j < bins.size; ++j) {
+        NodeExtent& child = children[j <= cheapest ? 0 : 1];
+        child.bounds.extend(bins.extent[j].bounds);
+        child.centres.extend(bins.extent[j].centres);
+      }
+      return begin + leftCount;
     }
   }
-  if (median) {
-    std::nth_element(
-        items + begin, items + mid, items + end,
-        [&](const BuildItem& a, const BuildItem& b) { return a.centre(axis) < b.centre(axis); });
-  }
-  node.axis = static_cast<std::uint8_t>(axis);
-  node.count = 0;
+  std::nth_element(
+      items + begin, items + mid, items + end,
+      [&](const BuildItem& a, const BuildItem& b) { return a.centre(axis) < b.centre(axis); });
+  children = {extentOf(items, begin, mid), extentOf(items, mid, end)};
   return mid;
 }
 
-// Builds the subtree over items [begin, end) depth first into the nodes
-// from `at` on; returns the index past its last node.
+// Builds the subtree over items [begin, end), of the given extent, depth
+// first into the nodes from `at` on; returns the index past its last node.
 std::uint32_t buildSubtree(const BuildInput& in, std::uint32_t at, std::uint32_t begin,
-                           std::uint32_t end, int depth) {
+                           std::uint32_t end, int depth, const NodeExtent& extent) {
   BvhNode& node = in.nodes[at];
-  std::optional<std::uint32_t> mid = splitNode(in, node, begin, end, depth);
+  if (end - begin == 1) {
+    // A leaf, the node of half the calls, without the split's set-up.
+    writeLeaf(node, begin, 1, extent.bounds);
+    return at + 1;
+  }
+  std::array<NodeExtent, 2> children;
+  std::optional<std::uint32_t> mid = splitNode(in, node, begin, end, depth, extent, children);
   if (!mid) return at + 1;
-  std::uint32_t second = buildSubtree(in, at + 1, begin, *mid, depth + 1);
+  std::uint32_t second = buildSubtree(in, at + 1, begin, *mid, depth + 1, children[0]);
   node.offset = second;
-  return buildSubtree(in, second, *mid, end, depth + 1);
+  return buildSubtree(in, second, *mid, end, depth + 1, children[1]);
 }
 
 // A subtree left to the threads: items [begin, end) at `depth`, built into
@@ -166,6 +283,7 @@ struct Subtree {
   int depth = 0;
   std::uint32_t at = 0;
   std::uint32_t used = 0;
+  NodeExtent extent;
 };
 
 // Past this many subtrees the top of the tree stops splitting, which bounds
@@ -181,6 +299,7 @@ struct TopRange {
   std::uint32_t begin = 0;
   std::uint32_t end = 0;
   int depth = 0;
+  NodeExtent extent;
 };
 
 // The top of the tree, above the subtrees of at most `largest` items (and
@@ -190,34 +309,36 @@ struct TopRange {
 // keeps 2c - 1 nodes, so the second child of a split at `at` is at
 // at + 2 (mid - begin). Leaves `subtrees` in node order.
 void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
-             std::uint32_t count, int threads) {
-  std::vector<TopRange> level{TopRange{0, 0, count, 0}};
+             std::uint32_t count, const NodeExtent& extent, int threads) {
+  std::vector<TopRange> level{TopRange{0, 0, count, 0, extent}};
   std::vector<TopRange> splitting, next;
   std::vector<std::uint32_t> mids;
+  std::vector<std::array<NodeExtent, 2>> children;
   while (!level.empty()) {
     // A split adds a range: at most kMaxSubtrees of them in all.
     bool room = subtrees.size() + 2 * level.size() <= kMaxSubtrees;
     splitting.clear();
     for (const TopRange& r : level) {
       if (!room || r.end - r.begin <= largest || r.depth >= kMaxDepth) {
-        subtrees.push_back(Subtree{r.begin, r.end, r.depth, r.at, 0});
+        subtrees.push_back(Subtree{r.begin, r.end, r.depth, r.at, 0, r.extent});
       } else {
         splitting.push_back(r);
       }
     }
     // More than one item below kMaxDepth: splitNode splits, never a leaf.
     mids.assign(splitting.size(), 0);
+    children.resize(splitting.size());
     runParts(splitting.size(), threads, [&](std::size_t k) {
       const TopRange& r = splitting[k];
-      mids[k] = *splitNode(in, in.nodes[r.at], r.begin, r.end, r.depth);
+      mids[k] = *splitNode(in, in.nodes[r.at], r.begin, r.end, r.depth, r.extent, children[k]);
     });
     next.clear();
     for (std::size_t k = 0; k < splitting.size(); ++k) {
       const TopRange& r = splitting[k];
       std::uint32_t second = r.at + 2 * (mids[k] - r.begin);
       in.nodes[r.at].offset = second;
-      next.push_back(TopRange{r.at + 1, r.begin, mids[k], r.depth + 1});
-      next.push_back(TopRange{second, mids[k], r.end, r.depth + 1});
+      next.push_back(TopRange{r.at + 1, r.begin, mids[k], r.depth + 1, children[k][0]});
+      next.push_back(TopRange{second, mids[k], r.end, r.depth + 1, children[k][1]});
     }
     level.swap(next);
   }
@@ -239,7 +360,7 @@ void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int thr
   });
   runParts(order.size(), threads, [&](std::size_t k) {
     Subtree& s = subtrees[order[k]];
-    s.used = buildSubtree(in, s.at, s.begin, s.end, s.depth) - s.at;
+    s.used = buildSubtree(in, s.at, s.begin, s.end, s.depth, s.extent) - s.at;
   });
 }
 
@@ -286,22 +407,20 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
   // more than one thread the build also holds its list of subtrees, with the
   // order it builds them in and closeGaps's two lists (at most
   // kMaxSubtrees each) and its threads (at most kMaxBuildThreads), and only
-  // for kMinParallelBoxes boxes or more, so a share of a few bytes a box
-  // covers them.
+  // for kMinParallelBoxes boxes or more: at most kParallelBytes in all.
   constexpr std::uint64_t kSubtreeBytes = sizeof(Subtree) + 3 * sizeof(std::uint32_t);
   // planTop's levels: at most 2 kMaxSubtrees ranges in each of its three
-  // lists, a split point for each, and runParts' slot for a part's
-  // exception.
+  // lists, a split point and the children's extents for each, and
+  // runParts' slot for a part's exception.
   constexpr std::uint64_t kLevelBytes =
       2 * kMaxSubtrees *
-      (3 * sizeof(TopRange) + sizeof(std::uint32_t) + sizeof(std::exception_ptr));
+      (3 * sizeof(TopRange) + sizeof(std::uint32_t) + sizeof(std::array<NodeExtent, 2>) +
+       sizeof(std::exception_ptr));
   constexpr std::uint64_t kParallelBytes =
       kMaxSubtrees * kSubtreeBytes + kLevelBytes + kMaxBuildThreads * sizeof(std::thread);
-  constexpr std::uint64_t kSubtreeShare =
-      (kParallelBytes + kMinParallelBoxes - 1) / kMinParallelBoxes;
-  std::uint64_t perBox =
-      kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(BuildItem) + kSubtreeShare;
-  return saturatingProduct(boxes, perBox);
+  std::uint64_t perBox = kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(BuildItem);
+  return saturatingSum(saturatingProduct(boxes, perBox),
+                       boxes >= kMinParallelBoxes ? kParallelBytes : 0);
 }
 
 Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* itemBoxes) {
@@ -315,9 +434,13 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   std::vector<BuildItem> items;
   allocateHere(items, n);
   allocateHere(nodes_, kNodesPerBox * n);
+  NodeExtent extent;
   runParts(2, threads, [&](std::size_t array) {
     if (array == 0) {
-      for (std::uint32_t i = 0; i < n; ++i) items.push_back(BuildItem{boxes[i], i, 0});
+      for (std::uint32_t i = 0; i < n; ++i) {
+        items.push_back(BuildItem{boxes[i], i, 0});
+        extent.extend(items.back());
+      }
     } else {
       nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
     }
@@ -335,7 +458,7 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
     }
   };
   if (threads == 1) {
-    nodes_.resize(buildSubtree(in, 0, 0, n, 0));
+    nodes_.resize(buildSubtree(in, 0, 0, n, 0, extent));
     keepOrder();
     return;
   }
@@ -346,7 +469,7 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   std::uint32_t largest = std::max<std::uint32_t>(n / (kTasksPerThread * threads), 1);
   std::vector<Subtree> subtrees;
   subtrees.reserve(kMaxSubtrees);
-  planTop(in, largest, subtrees, n, threads);
+  planTop(in, largest, subtrees, n, extent, threads);
   buildSubtrees(in, subtrees, threads);
   nodes_.resize(closeGaps(nodes_, subtrees, 2 * n - 1));
   keepOrder();

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -158,6 +160,122 @@ TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
     ++pairs;
   }
   EXPECT_GT(pairs, 500);
+}
+
+// The build's rule written the plain way, as a reference: every split
+// bins the centres of its items in 16 bins along the widest axis of their
+// centres, prices the split after each of bins 0 to 14 by the surface area
+// heuristic, takes the first of the cheapest (std::min_element) when it
+// leaves items on both sides, and else halves the list at the median.
+struct ReferenceBuild {
+  std::vector<Bounds> boxes;
+  std::vector<std::uint32_t> items;
+  std::vector<BvhNode> nodes;
+
+  std::uint32_t build(std::uint32_t at, std::uint32_t begin, std::uint32_t end) {
+    Bounds bounds, centres;
+    for (std::uint32_t i = begin; i < end; ++i) {
+      bounds.extend(boxes[items[i]]);
+      centres.extend(boxes[items[i]].centre());
+    }
+    BvhNode& node = nodes[at];
+    for (int i = 0; i < 3; ++i) {
+      node.planes[i] = floatAtOrBelow(bounds.lo[i]);
+      node.planes[3 + i] = floatAtOrAbove(bounds.hi[i]);
+    }
+    if (end - begin == 1) {
+      node.offset = begin;
+      node.count = 1;
+      return at + 1;
+    }
+    glm::dvec3 e = centres.hi - centres.lo;
+    int axis = e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
+    auto centre = [&](std::uint32_t item) { return boxes[item].centre()[axis]; };
+    std::uint32_t mid = begin + (end - begin) / 2;
+    bool split = false;
+    if (e[axis] > 0.0) {
+      double scale = 16 / e[axis];
+      auto binOf = [&](std::uint32_t item) {
+        return std::clamp(static_cast<int>((centre(item) - centres.lo[axis]) * scale), 0, 15);
+      };
+      std::array<Bounds, 16> binBounds;
+      std::array<std::uint32_t, 16> counts{};
+      for (std::uint32_t i = begin; i < end; ++i) {
+        binBounds[binOf(items[i])].extend(boxes[items[i]]);
+        ++counts[binOf(items[i])];
+      }
+      std::array<double, 15> cost;
+      for (int b = 0; b < 15; ++b) {
+        Bounds left, right;
+        std::uint32_t l = 0, r = 0;
+        for (int k = 0; k < 16; ++k) {
+          (k <= b ? left : right).extend(binBounds[k]);
+          (k <= b ? l : r) += counts[k];
+        }
+        cost[b] = (l ? l * left.surfaceArea() : 0.0) + (r ? r * right.surfaceArea() : 0.0);
+      }
+      int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
+      auto at = std::partition(items.begin() + begin, items.begin() + end,
+                               [&](std::uint32_t item) { return binOf(item) <= best; });
+      std::uint32_t cut = static_cast<std::uint32_t>(at - items.begin());
+      if (cut != begin && cut != end) {
+        mid = cut;
+        split = true;
+      }
+    }
+    if (!split && end - begin == 2) {
+      if (centre(items[begin + 1]) < centre(items[begin])) {
+        std::swap(items[begin], items[begin + 1]);
+      }
+    } else if (!split) {
+      std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                       [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
+    }
+    node.axis = static_cast<std::uint8_t>(axis);
+    std::uint32_t second = build(at + 1, begin, mid);
+    node.offset = second;
+    return build(second, mid, end);
+  }
+};
+
+// Boxes on a coarse grid, of a few sizes: most bins of a split are empty
+// and many splits price the same, so the order in which the build picks
+// among equal prices shows.
+std::vector<Bounds> gridBoxes(std::uint64_t seed, int count) {
+  std::mt19937_64 rng(seed);
+  std::vector<Bounds> boxes;
+  for (int i = 0; i < count; ++i) {
+    glm::dvec3 centre(static_cast<double>(rng() % 7), static_cast<double>(rng() % 3),
+                      static_cast<double>(rng() % 5) * 0.5);
+    glm::dvec3 half(0.25 * static_cast<double>(1 + rng() % 2));
+    boxes.push_back(Bounds{centre - half, centre + half});
+  }
+  return boxes;
+}
+
+// The build (which sets up only the bins its items fall in for small
+// splits, and works each child's extent out from its bins) makes the
+// reference's tree, node for node and item for item.
+TEST(BvhBuild, SplitsAsThePlainBinnedSurfaceAreaRuleDoes) {
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    int count = 2 + static_cast<int>(seed % 90);
+    std::vector<Bounds> boxes = seed % 2 ? gridBoxes(seed, count) : randomBoxes(seed, count);
+    if (seed % 6 == 0) {
+      // Areas past the double range: every split prices infinity, and the
+      // first, after bin 0, is taken.
+      for (Bounds& box : boxes) box = Bounds{box.lo * 1e305, box.hi * 1e305};
+    }
+    ReferenceBuild reference{boxes, {}, std::vector<BvhNode>(2 * boxes.size() - 1)};
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) reference.items.push_back(i);
+    reference.build(0, 0, static_cast<std::uint32_t>(boxes.size()));
+    Bvh bvh(boxes, 1);
+    ASSERT_EQ(bvh.items(), reference.items) << "seed " << seed;
+    ASSERT_EQ(bvh.nodes().size(), reference.nodes.size()) << "seed " << seed;
+    ASSERT_EQ(std::memcmp(bvh.nodes().data(), reference.nodes.data(),
+                          reference.nodes.size() * sizeof(BvhNode)),
+              0)
+        << "seed " << seed;
+  }
 }
 
 // The outward rounding of box planes to float is std::nextafter's step from

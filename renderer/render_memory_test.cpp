@@ -51,8 +51,9 @@ TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   // At least the nodes, items and boxes, the build's copy of each box
   // beside its index (padded to 8 bytes), and the constructor's three lists
   // of indices (the planes and the bounded objects in the scene's order,
-  // which may double, and the BVH's order); the rest is the threads' lists
-  // of the top of the tree and of its subtrees, a few bytes a box.
+  // which may double, and the BVH's order). The threads' lists of the top
+  // of the tree and of its subtrees come only with a parallel build, from
+  // 16,384 boxes.
   std::uint64_t parts = 1000 * (2 * sizeof(Bounds) + (sizeof(Bounds) + 8) + 2 * sizeof(BvhNode) +
                                 4 * sizeof(std::uint32_t));
   // And 7 lights' grids of at most 8 cells a box on each face: per cell
