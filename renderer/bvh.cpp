@@ -176,10 +176,7 @@ int cheapestSplit(const Bins& bins) {
 
 // A node's box: its bounds rounded outward to floats.
 void writeBox(BvhNode& node, const Bounds& bounds) {
-  for (int i = 0; i < 3; ++i) {
-    node.planes[i] = floatAtOrBelow(bounds.lo[i]);
-    node.planes[3 + i] = floatAtOrAbove(bounds.hi[i]);
-  }
+  floatPlanesAround(bounds, node.planes);
 }
 
 void writeLeaf(BvhNode& node, std::uint32_t begin, std::uint32_t count, const Bounds& bounds) {

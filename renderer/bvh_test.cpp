@@ -323,6 +323,44 @@ TEST(FloatPlanes, RoundOutwardAsNextafterDoes) {
   }
 }
 
+// A box's six planes rounded at once are the planes rounded one by one,
+// for every mix of the values above across the six.
+TEST(FloatPlanes, ABoxsPlanesRoundedTogetherAreEachRoundedAlone) {
+  const double denorm = std::numeric_limits<float>::denorm_min();
+  const double most = std::numeric_limits<float>::max();
+  std::vector<double> special = {
+      0.0,   -0.0,   denorm,    -denorm,    0.5 * denorm, 1e-300, -1e-300, most, -most * (1 + 1e-9),
+      1e300, -1e300, 1.0 / 3.0, -1.0 / 3.0, std::nan("")};
+  std::mt19937_64 rng(23);
+  auto value = [&] {
+    if (rng() % 3 == 0) return special[rng() % special.size()];
+    float f = std::bit_cast<float>(static_cast<std::uint32_t>(rng()));
+    double d = std::isnan(f) ? 1.5 : f;
+    switch (rng() % 3) {
+      case 0:
+        return d;
+      case 1:
+        return std::nextafter(d, rng() % 2 ? 1e308 : -1e308);
+      default:
+        return std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng),
+                          static_cast<int>(rng() % 300) - 150);
+    }
+  };
+  for (int i = 0; i < 300000; ++i) {
+    Bounds box{glm::dvec3(value(), value(), value()), glm::dvec3(value(), value(), value())};
+    float planes[6];
+    floatPlanesAround(box, planes);
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(planes[k]),
+                std::bit_cast<std::uint32_t>(floatAtOrBelow(box.lo[k])))
+          << box.lo[k];
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(planes[3 + k]),
+                std::bit_cast<std::uint32_t>(floatAtOrAbove(box.hi[k])))
+          << box.hi[k];
+    }
+  }
+}
+
 TEST(BvhBuild, NoBoxesMakeAnEmptyTree) {
   EXPECT_TRUE(Bvh(std::vector<Bounds>{}, 4).empty());
 }
