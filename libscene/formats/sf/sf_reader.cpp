@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "libscene/core/populate_pages.h"
 #include "libscene/core/run_on_threads.h"
 #include "libscene/text/reader_support.h"
 #include "libscene/text/text_lines.h"
@@ -387,6 +388,20 @@ std::vector<std::size_t> partStarts(std::string_view text, unsigned parts) {
   return starts;
 }
 
+// The first part's room for the later parts' objects, faulted in on a
+// thread a part before they are moved there: moving them into fresh pages
+// on one thread was a sixth of the reading at 1,000,000 objects.
+void populateMergeTarget(const std::vector<ReadResult>& results, std::size_t threads) {
+  const std::vector<Object>& first = results[0].scene.objects;
+  std::size_t later = 0;
+  for (std::size_t k = 1; k < results.size(); ++k) later += results[k].scene.objects.size();
+  if (first.capacity() - first.size() < later) return;  // the move takes new room
+  const Object* from = first.data() + first.size();
+  runOnThreads(threads, [&](std::size_t k) {
+    populatePagesForWriting(from + later * k / threads, from + later * (k + 1) / threads);
+  });
+}
+
 }  // namespace
 
 std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::string fileName,
@@ -431,6 +446,9 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
   }
   std::vector<PartFacts> facts(count);
   bool read = runOnThreads(count, [&](std::size_t k) {
+    // The room for the part's own objects, faulted in at once.
+    const Object* room = results[k].scene.objects.data();
+    populatePagesForWriting(room, room + std::min(records[k], options.maxObjects));
     facts[k] = SceneFileParser(part(k), options, results[k], firstLine[k],
                                k == 0 ? allRecords : records[k])
                    .runPart();
@@ -447,6 +465,7 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
     objectsSeen += facts[k].objectsSeen;
   }
   if (objectsSeen > options.maxObjects) return std::nullopt;
+  populateMergeTarget(results, count);
   ReadResult merged{std::move(results[0].scene),
                     DiagnosticList(std::move(fileName), options.errorLimit)};
   for (std::size_t k = 1; k < count; ++k) {
