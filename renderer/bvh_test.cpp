@@ -361,6 +361,50 @@ TEST(FloatPlanes, ABoxsPlanesRoundedTogetherAreEachRoundedAlone) {
   }
 }
 
+// hitsBox's test of all three slabs answers as the test that stops at the
+// first slab that empties the interval, for rays along the axes (infinite
+// inverse components), from the boxes' planes (0 * infinity), and at
+// random.
+TEST(BoxTest, AllThreeSlabsAnswerAsStoppingAtTheFirstMissDoes) {
+  auto stopping = [](const Bounds& b, const BoxRay& r, double tMin, double tMax) {
+    for (int i = 0; i < 3; ++i) {
+      double tNear = (b.lo[i] - r.origin[i]) * r.inverseDirection[i];
+      double tFar = (b.hi[i] - r.origin[i]) * r.inverseDirection[i];
+      if (tNear > tFar) std::swap(tNear, tFar);
+      tFar *= 1.0 + 2.0 * gamma(3);
+      tMin = tNear > tMin ? tNear : tMin;
+      tMax = tFar < tMax ? tFar : tMax;
+      if (tMin > tMax) return false;
+    }
+    return true;
+  };
+  std::mt19937_64 rng(29);
+  auto coordinate = [&] {
+    // Often a plane of the box, or zero, so that slabs are grazed.
+    switch (rng() % 4) {
+      case 0:
+        return static_cast<double>(static_cast<int>(rng() % 5) - 2);
+      default:
+        return std::uniform_real_distribution<double>(-3, 3)(rng);
+    }
+  };
+  int hits = 0;
+  for (int i = 0; i < 500000; ++i) {
+    glm::dvec3 lo(coordinate(), coordinate(), coordinate());
+    Bounds box{lo, lo + glm::dvec3(std::abs(coordinate()), std::abs(coordinate()),
+                                   std::abs(coordinate()))};
+    glm::dvec3 direction(coordinate(), coordinate(), coordinate());
+    BoxRay ray{glm::dvec3(coordinate(), coordinate(), coordinate()), 1.0 / direction};
+    double tMax = rng() % 3 == 0 ? std::numeric_limits<double>::infinity() : std::abs(coordinate());
+    bool expected = stopping(box, ray, 0.0, tMax);
+    ASSERT_EQ(hitsBox(box, ray, 0.0, tMax), expected) << i;
+    hits += expected;
+  }
+  // Both answers, many times.
+  EXPECT_GT(hits, 10000);
+  EXPECT_LT(hits, 490000);
+}
+
 TEST(BvhBuild, NoBoxesMakeAnEmptyTree) {
   EXPECT_TRUE(Bvh(std::vector<Bounds>{}, 4).empty());
 }
