@@ -109,6 +109,35 @@ Bins manyItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, con
   return bins;
 }
 
+// From this many items, a split at the top of the tree that has threads to
+// itself (the root's) bins its items on them, each a share, into bins of
+// its own that it then merges: the same bins, since a bin's box is a union
+// and its count a sum.
+constexpr std::uint32_t kMinItemsBinnedInParts = std::uint32_t{1} << 18;
+
+Bins manyItemsBinsInParts(BuildItem* items, std::uint32_t begin, std::uint32_t end,
+                          const BinRule& rule, int threads) {
+  const std::uint32_t count = end - begin;
+  if (threads < 2 || count < kMinItemsBinnedInParts) {
+    return manyItemsBins(items, begin, end, rule);
+  }
+  const std::size_t parts = static_cast<std::size_t>(threads);
+  std::vector<Bins> shares(parts);
+  runParts(parts, threads, [&](std::size_t k) {
+    shares[k] = manyItemsBins(items, static_cast<std::uint32_t>(begin + count * k / parts),
+                              static_cast<std::uint32_t>(begin + count * (k + 1) / parts), rule);
+  });
+  Bins bins = shares[0];
+  for (std::size_t k = 1; k < parts; ++k) {
+    for (int b = 0; b < kBins; ++b) {
+      bins.extent[b].bounds.extend(shares[k].extent[b].bounds);
+      bins.extent[b].centres.extend(shares[k].extent[b].centres);
+      bins.count[b] += shares[k].count[b];
+    }
+  }
+  return bins;
+}
+
 // Below this many items a split sets up only the bins its items fall in:
 // setting up and sweeping all kBins was most of the time of the small
 // splits, and most splits are small.
@@ -188,10 +217,10 @@ void writeLeaf(BvhNode& node, std::uint32_t begin, std::uint32_t count, const Bo
 // Fills in the node over items [begin, end), of the given extent: its box,
 // and either a leaf's items or a split, for which it orders the items (those
 // of the first child first), sets the children's extents, and returns where
-// the second child's begin.
+// the second child's begin. Many items are binned on `threads` threads.
 std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std::uint32_t begin,
                                        std::uint32_t end, int depth, const NodeExtent& extentIn,
-                                       std::array<NodeExtent, 2>& children) {
+                                       std::array<NodeExtent, 2>& children, int threads = 1) {
   BuildItem* items = in.items;
   const Bounds& centreBounds = extentIn.centres;
   std::uint32_t count = end - begin;
@@ -227,7 +256,7 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     // surface area heuristic.
     BinRule rule{axis, centreBounds.lo[axis], kBins / extent[axis]};
     Bins bins = count <= kFewItems ? fewItemsBins(items, begin, end, rule)
-                                   : manyItemsBins(items, begin, end, rule);
+                                   : manyItemsBinsInParts(items, begin, end, rule, threads);
     int cheapest = cheapestSplit(bins);
     std::uint32_t leftCount = 0;
     for (int j = 0; j <= cheapest; ++j) leftCount += bins.count[j];
@@ -325,9 +354,12 @@ void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& 
     // More than one item below kMaxDepth: splitNode splits, never a leaf.
     mids.assign(splitting.size(), 0);
     children.resize(splitting.size());
+    // A split alone on its level (the root's) bins on every thread.
+    int binThreads = splitting.size() == 1 ? threads : 1;
     runParts(splitting.size(), threads, [&](std::size_t k) {
       const TopRange& r = splitting[k];
-      mids[k] = *splitNode(in, in.nodes[r.at], r.begin, r.end, r.depth, r.extent, children[k]);
+      mids[k] = *splitNode(in, in.nodes[r.at], r.begin, r.end, r.depth, r.extent, children[k],
+                           binThreads);
     });
     next.clear();
     for (std::size_t k = 0; k < splitting.size(); ++k) {
@@ -413,8 +445,11 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
       2 * kMaxSubtrees *
       (3 * sizeof(TopRange) + sizeof(std::uint32_t) + sizeof(std::array<NodeExtent, 2>) +
        sizeof(std::exception_ptr));
-  constexpr std::uint64_t kParallelBytes =
-      kMaxSubtrees * kSubtreeBytes + kLevelBytes + kMaxBuildThreads * sizeof(std::thread);
+  // The root's bins, a set a thread.
+  constexpr std::uint64_t kRootBinBytes =
+      kMaxBuildThreads * (sizeof(Bins) + sizeof(std::exception_ptr));
+  constexpr std::uint64_t kParallelBytes = kMaxSubtrees * kSubtreeBytes + kLevelBytes +
+                                           kRootBinBytes + kMaxBuildThreads * sizeof(std::thread);
   std::uint64_t perBox = kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(BuildItem);
   return saturatingSum(saturatingProduct(boxes, perBox),
                        boxes >= kMinParallelBoxes ? kParallelBytes : 0);
@@ -444,15 +479,20 @@ Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* ite
   });
   BuildInput in{items.data(), nodes_.data()};
   // The items in the order the build left them, which the leaves index,
-  // and their boxes in that order where asked for, in one pass over them.
+  // and their boxes in that order where asked for, in one pass over them,
+  // shared out to the threads.
   auto keepOrder = [&] {
     items_.resize(n);
     if (itemBoxes) itemBoxes->resize(n);
     Bounds* boxesInOrder = itemBoxes ? itemBoxes->data() : nullptr;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      items_[i] = items[i].index;
-      if (boxesInOrder) boxesInOrder[i] = items[i].box;
-    }
+    const std::size_t parts = static_cast<std::size_t>(threads);
+    runParts(parts, threads, [&](std::size_t part) {
+      const std::uint32_t end = static_cast<std::uint32_t>(n * (part + 1) / parts);
+      for (std::uint32_t i = static_cast<std::uint32_t>(n * part / parts); i < end; ++i) {
+        items_[i] = items[i].index;
+        if (boxesInOrder) boxesInOrder[i] = items[i].box;
+      }
+    });
   };
   if (threads == 1) {
     nodes_.resize(buildSubtree(in, 0, 0, n, 0, extent));

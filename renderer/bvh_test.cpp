@@ -88,6 +88,10 @@ TEST(BvhBuild, TheTreeIsTheSameWhateverTheThreadCount) {
     // list may hold: the top stops at the budget, the tree stays the same.
     for (int threads : {2, 4, 64}) expectSameTree(one, Bvh(boxes, threads), threads);
   }
+  // Enough boxes that the root bins them on several threads.
+  std::vector<Bounds> boxes = randomBoxes(300000, 300000);
+  Bvh one(boxes, 1);
+  for (int threads : {2, 3}) expectSameTree(one, Bvh(boxes, threads), threads);
 }
 
 // Past the greatest depth the build makes leaves of many boxes, which take
