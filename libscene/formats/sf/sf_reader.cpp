@@ -99,6 +99,9 @@ struct PartFacts {
   std::size_t objectsSeen = 0;
 };
 
+// How many objects' room a part faults in at a time: 4 MB.
+constexpr std::size_t kObjectsPopulatedAhead = (std::size_t{4} << 20) / sizeof(Object);
+
 class SceneFileParser {
  public:
   SceneFileParser(std::string_view text, const ReadOptions& options, ReadResult& result)
@@ -124,6 +127,7 @@ class SceneFileParser {
   // that need the whole file, up to the first diagnostic of any kind.
   PartFacts runPart() {
     stopAtDiagnostic_ = true;
+    populateAhead_ = true;
     readRecords();
     return PartFacts{firstRecord_.has_value(), firstIsCamera_, cameraNamed_, objectsSeen_};
   }
@@ -306,10 +310,25 @@ class SceneFileParser {
         object.material.colour = colour;
         object.matrix = matrix;
         object.span = spans.record;
+        if (populateAhead_) populateRoomAhead();
         scene_.objects.push_back(std::move(object));
         return;
       }
     }
+  }
+
+  // A part's room for its next kObjectsPopulatedAhead objects, faulted in
+  // at once when the objects reach the end of what was faulted in so far:
+  // a fresh page costs more to fault in write by write than the object
+  // written there (docs/PERFORMANCE.md, "Big scenes: bins, planes and
+  // pages"), and room only just ahead of the objects costs no memory for
+  // lines that only look like records.
+  void populateRoomAhead() {
+    std::vector<Object>& objects = scene_.objects;
+    if (objects.size() < populatedUpTo_) return;
+    std::size_t to = std::min(objects.capacity(), populatedUpTo_ + kObjectsPopulatedAhead);
+    populatePagesForWriting(objects.data() + populatedUpTo_, objects.data() + to);
+    populatedUpTo_ = to;
   }
 
   void noteRecordOrder(RecordKind kind, SourceSpan span) {
@@ -356,6 +375,8 @@ class SceneFileParser {
   std::size_t objectsSeen_ = 0;
   bool stopped_ = false;  // past maxObjects: nothing more is read
   bool stopAtDiagnostic_ = false;
+  bool populateAhead_ = false;
+  std::size_t populatedUpTo_ = 0;  // objects whose room is faulted in
   std::optional<SourceSpan> firstRecord_;
   bool firstIsCamera_ = false;
   std::string firstName_;
@@ -446,9 +467,6 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
   }
   std::vector<PartFacts> facts(count);
   bool read = runOnThreads(count, [&](std::size_t k) {
-    // The room for the part's own objects, faulted in at once.
-    const Object* room = results[k].scene.objects.data();
-    populatePagesForWriting(room, room + std::min(records[k], options.maxObjects));
     facts[k] = SceneFileParser(part(k), options, results[k], firstLine[k],
                                k == 0 ? allRecords : records[k])
                    .runPart();
