@@ -126,15 +126,14 @@ class SceneFileParser {
   // Reads the text as a part of a file: its records, without the checks
   // that need the whole file, up to the first diagnostic of any kind.
   PartFacts runPart() {
-    stopAtDiagnostic_ = true;
-    populateAhead_ = true;
+    readingPart_ = true;
     readRecords();
     return PartFacts{firstRecord_.has_value(), firstIsCamera_, cameraNamed_, objectsSeen_};
   }
 
  private:
   void readRecords() {
-    while (!out_.full() && !stopped_ && !(stopAtDiagnostic_ && !out_.empty()) && pull()) {
+    while (!out_.full() && !stopped_ && !(readingPart_ && !out_.empty()) && pull()) {
       if (cursor_.blank() || reportComment(cursor_, out_)) continue;
       if (reportInvalidByte(cursor_, out_)) {
         // Most likely a damaged record name: its body follows, and reading
@@ -310,7 +309,7 @@ class SceneFileParser {
         object.material.colour = colour;
         object.matrix = matrix;
         object.span = spans.record;
-        if (populateAhead_) populateRoomAhead();
+        if (readingPart_) populateRoomAhead();
         scene_.objects.push_back(std::move(object));
         return;
       }
@@ -374,8 +373,9 @@ class SceneFileParser {
   // Objects and lights named so far, read or not, against maxObjects.
   std::size_t objectsSeen_ = 0;
   bool stopped_ = false;  // past maxObjects: nothing more is read
-  bool stopAtDiagnostic_ = false;
-  bool populateAhead_ = false;
+  // A part of a file (runPart): it stops at its first diagnostic, and
+  // faults in its objects' room ahead of them.
+  bool readingPart_ = false;
   std::size_t populatedUpTo_ = 0;  // objects whose room is faulted in
   std::optional<SourceSpan> firstRecord_;
   bool firstIsCamera_ = false;
