@@ -12,6 +12,7 @@
 
 #include "renderer/bvh.h"
 #include "renderer/direction_grid.h"
+#include "renderer/material_maxima.h"
 #include "renderer/unit_shapes.h"
 #include "scenefile/scene.h"
 
@@ -120,6 +121,8 @@ class RenderScene {
   const std::vector<RenderLight>& lights() const { return lights_; }
   const scene::Camera& camera() const { return camera_; }
   bool hasTransparency() const { return hasTransparency_; }
+  // The objects' materials' largest terms (RadianceBound's).
+  const MaterialMaxima& materialMaxima() const { return materialMaxima_; }
   const Bvh& bvh() const { return bvh_; }
   // What the GPU renderer uploads (renderer/gpu/gpu_scene.h): per BVH item
   // its object, the planes kept apart, and each object's 3x3 block.
@@ -239,7 +242,7 @@ class RenderScene {
     return hit;
   }
   // The constructor's steps after the BVH: the records (objects_,
-  // materials_, linearToWorld_, planeNormals_) from the scene's objects that
+  // materials_, linearToWorld_, planeNormals_, materialMaxima_) from the scene's objects that
   // sceneObjects_ names, in `parts` parts on `threads` threads; and the
   // lights' grids over `boxes` (item k's box at k), with each item's leaf.
   void makeRecords(const scene::Scene& scene, std::size_t parts, int threads);
@@ -273,6 +276,7 @@ class RenderScene {
   // rays test its box before the object, as a walk down the BVH would.
   std::vector<std::uint32_t> leafOf_;
   bool hasTransparency_ = false;
+  MaterialMaxima materialMaxima_;
 };
 
 // World bounds of a unit shape under an object matrix (none for a plane).
