@@ -316,7 +316,12 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
           bestCandidate = *c;
         }
       };
-      for (std::uint32_t plane : planes_) consider(plane);
+      for (std::uint32_t plane : planes_) {
+        if (auto c = intersectPlane(plane, ray, fromEye[0], bestCandidate.t)) {
+          best = plane;
+          bestCandidate = *c;
+        }
+      }
       for (std::uint32_t item : eye.grid.items(cell)) consider(bounded_[item]);
       if (best == RaySource::kNone) {
         out[k].reset();
@@ -351,6 +356,25 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
   if (object.kind != scene::ObjectKind::Plane && span.exit > 0.0 && span.exit < tMax) {
     return Candidate{span.exit, true, span.exitFace};
   }
+  return std::nullopt;
+}
+
+[[gnu::always_inline]] inline std::optional<RenderScene::Candidate> RenderScene::intersectPlane(
+    std::uint32_t index, const Ray& ray, const RaySource& source, double tMax) const {
+  // A ray leaving a plane cannot meet it.
+  if (index == source.object) return std::nullopt;
+  const RenderObject& object = objects_[index];
+  // The y components of toLocalPoint(origin) and toLocal * direction, added
+  // up as glm's matrix product adds them (column by column, left to right).
+  const glm::dmat3& m = object.toLocal;
+  const glm::dvec3 p = ray.origin - object.translation;
+  const glm::dvec3& d = ray.direction;
+  double originY = m[0][1] * p.x + m[1][1] * p.y + m[2][1] * p.z;
+  double directionY = m[0][1] * d.x + m[1][1] * d.y + m[2][1] * d.z;
+  // unitShapeDistances for a plane: one distance, entering its +y face.
+  if (directionY == 0.0) return std::nullopt;
+  double t = -originY / directionY;
+  if (t > 0.0 && t < tMax) return Candidate{t, false, static_cast<SpanFace>(3)};
   return std::nullopt;
 }
 
@@ -403,7 +427,12 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
       bestCandidate = *c;
     }
   };
-  for (std::uint32_t plane : planes_) consider(plane);
+  for (std::uint32_t plane : planes_) {
+    if (auto c = intersectPlane(plane, ray, source, bestCandidate.t)) {
+      best = plane;
+      bestCandidate = *c;
+    }
+  }
   BoxRay boxRay{ray.origin, 1.0 / ray.direction};
   bvh_.traverse(boxRay, bestCandidate.t, [&](std::uint32_t item) {
     consider(bounded_[item]);
@@ -434,7 +463,12 @@ void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int cou
     for (int lane = 0; lane < n; ++lane) {
       best[lane] = RaySource::kNone;
       bestCandidate[lane] = Candidate{tMax, false, SpanFace::None};
-      for (std::uint32_t plane : planes_) consider(lane, plane);
+      for (std::uint32_t plane : planes_) {
+        if (auto c = intersectPlane(plane, ray[lane], source[lane], bestCandidate[lane].t)) {
+          best[lane] = plane;
+          bestCandidate[lane] = *c;
+        }
+      }
       boxRays[lane] = BoxRay{ray[lane].origin, 1.0 / ray[lane].direction};
       tMaxes[lane] = bestCandidate[lane].t;
     }
@@ -469,7 +503,7 @@ std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySo
 bool RenderScene::blockedByPlane(const Ray& ray, const RaySource& source, double tMax,
                                  std::uint32_t* lastOccluder) const {
   for (std::uint32_t plane : planes_) {
-    if (intersectObject(plane, ray, source, tMax)) {
+    if (intersectPlane(plane, ray, source, tMax)) {
       if (lastOccluder) *lastOccluder = plane;
       return true;
     }

@@ -230,6 +230,12 @@ class RenderScene {
   };
   std::optional<Candidate> intersectObject(std::uint32_t index, const Ray& ray,
                                            const RaySource& source, double tMax) const;
+  // intersectObject for plane `index` (one of planes_), bit for bit, from
+  // the y row of its transform alone: a plane's distance reads only the
+  // object-space y of the origin and the direction, and every ray tests
+  // every plane.
+  std::optional<Candidate> intersectPlane(std::uint32_t index, const Ray& ray,
+                                          const RaySource& source, double tMax) const;
   // The hit on object `index` that `candidate` found along `ray`, written
   // into `hit` in place: returned by value, it was copied into an optional
   // with wide loads that waited on finishHit's narrow stores.

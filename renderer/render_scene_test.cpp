@@ -358,6 +358,72 @@ TEST(LightOnASurface, TheSurfaceItLiesOnCastsNoShadow) {
 // A plane's normal is made once, per plane (RenderScene::finishHit): with
 // several planes between other objects, each hit carries the normal of the
 // plane it met, the inverse transpose's image of +y.
+// The searches test planes from the y row of their transforms alone
+// (RenderScene::intersectPlane); brute force tests them as any object. Rays
+// leaving a plane, rays stopped short, rays in a plane's own directions and
+// packets of them all end at brute force's hit, bit for bit.
+TEST(PlaneHits, TheSearchesMeetPlanesAsBruteForceDoes) {
+  RandomTransforms random(2026);
+  scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+  for (int i = 0; i < 12; ++i) {
+    ObjectKind kind = i % 4 == 0 ? ObjectKind::Cube : ObjectKind::Plane;
+    s.objects.push_back(object(
+        kind,
+        {scale(random.uniform(0.2, 3), random.uniform(1e-3, 3), random.uniform(0.2, 3)),
+         rotateX(random.uniform(-3.2, 3.2)), rotateZ(random.uniform(-3.2, 3.2)),
+         translate(random.uniform(-1e3, 1e3), random.uniform(-5, 5), random.uniform(-5, 5))}));
+  }
+  RenderScene compiled(s);
+  const std::uint32_t planes = static_cast<std::uint32_t>(compiled.planeObjects().size());
+  ASSERT_EQ(planes, 9u);
+  constexpr int kPacket = Bvh::kPacketSize;
+  Ray rays[kPacket];
+  RaySource sources[kPacket];
+  std::optional<Hit> expected[kPacket];
+  int met = 0;
+  for (int r = 0; r < scene::testing::randomCases(200000); ++r) {
+    int lane = r % kPacket;
+    glm::dvec3 origin(random.uniform(-1e3, 1e3), random.uniform(-8, 8), random.uniform(-8, 8));
+    glm::dvec3 d = random.direction();
+    RaySource source{};
+    if (r % 3 == 0) {
+      // Leaving a plane, from a point on it, or along it.
+      std::uint32_t plane = static_cast<std::uint32_t>(r / 3) % planes;
+      glm::dmat3 linear = compiled.linearToWorld(plane);
+      glm::dvec3 translation(s.objects[compiled.sceneObject(plane)].matrix[3]);
+      origin = translation + linear * glm::dvec3(random.uniform(-9, 9), 0, random.uniform(-9, 9));
+      if (r % 2 == 0) d = linear * glm::dvec3(random.uniform(-1, 1), 0, random.uniform(-1, 1));
+      source = RaySource{plane, false};
+    }
+    double tMax = r % 5 == 0 ? random.uniform(0, 20) : std::numeric_limits<double>::infinity();
+    rays[lane] = Ray{origin, d};
+    sources[lane] = source;
+    expected[lane] = compiled.closestHitBruteForce(rays[lane], source, tMax);
+    std::optional<Hit> found = compiled.closestHit(rays[lane], source, tMax);
+    ASSERT_EQ(found.has_value(), expected[lane].has_value()) << "ray " << r;
+    if (found) {
+      met += found->object < planes;
+      ASSERT_EQ(found->object, expected[lane]->object) << "ray " << r;
+      ASSERT_EQ(found->t, expected[lane]->t) << "ray " << r;
+      ASSERT_EQ(found->point, expected[lane]->point) << "ray " << r;
+    }
+    ASSERT_EQ(compiled.anyHit(rays[lane], source, tMax), expected[lane].has_value()) << "ray " << r;
+    if (lane == kPacket - 1) {
+      std::optional<Hit> packet[kPacket];
+      compiled.closestHits(rays, sources, kPacket, packet);
+      for (int k = 0; k < kPacket; ++k) {
+        std::optional<Hit> alone = compiled.closestHitBruteForce(
+            rays[k], sources[k], std::numeric_limits<double>::infinity());
+        ASSERT_EQ(packet[k].has_value(), alone.has_value()) << "ray " << r - lane + k;
+        if (alone) {
+          ASSERT_EQ(packet[k]->t, alone->t) << "ray " << r - lane + k;
+        }
+      }
+    }
+  }
+  EXPECT_GT(met, scene::testing::randomCases(200000) / 10);
+}
+
 TEST(PlaneHits, EachCarriesTheNormalOfItsOwnPlane) {
   RandomTransforms random(77);
   scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
