@@ -332,6 +332,60 @@ TEST(AdaptiveSampling, ErrorFallsWithDepthAtAFractionOfTheSamples) {
   EXPECT_EQ(at16.refinedPixels, at64.refinedPixels);  // decided at the corners
 }
 
+// A pixel that is not cut but whose corners differ by more than half the
+// threshold takes its centre too: an eighth of each corner and half the
+// centre. Here one wall fills the view, so no pixel shows two objects, and
+// at a threshold of 1 no colours differ enough to cut one; the shadow of a
+// cube behind the camera crosses the wall, its edge 0.7 deep. The corners'
+// mean is the `--spp 2` image (no cut at depth 0) and the centre the
+// uniform `--spp 1` image, so every pixel is the first or the mean of the
+// two, and the pixels on the shadow's edge are the mean.
+TEST(AdaptiveSampling, CornersThatDifferByHalfTheThresholdAddTheCentre) {
+  scene::Scene s = sceneLookingAt({0, 0, 0}, {0, 0, -1});
+  scene::Material wall = flat({0.8, 0.8, 0.8}, 0.1);
+  wall.diffuse = 0.9;
+  s.objects.push_back(object(ObjectKind::Cube, {scale(20, 20, 1), translate(0, 0, -5)}, wall));
+  s.objects.push_back(object(ObjectKind::Cube, {scale(0.5, 0.5, 0.5), translate(0.2, 0.1, 2)}));
+  s.lights.push_back(light({0, 0, 5}));
+  RenderScene compiled(s);
+  RenderSettings settings = adaptiveSettings(16, 1.0);
+  settings.width = 160;
+  settings.height = 120;
+  settings.coverage = false;
+  RenderStatistics statistics;
+  Image adaptive = renderImage(compiled, settings, &statistics);
+  RenderSettings cornersOnly = settings;
+  cornersOnly.samplesPerPixel = 2;
+  Image corners = renderImage(compiled, cornersOnly);
+  RenderSettings centresOnly = settings;
+  centresOnly.samplesPerPixel = 1;
+  centresOnly.adaptiveThreshold = 0.0;
+  Image centres = renderImage(compiled, centresOnly);
+  std::uint64_t centred = 0;
+  for (int j = 0; j < settings.height; ++j) {
+    for (int i = 0; i < settings.width; ++i) {
+      glm::vec3 a = adaptive.pixel(i, j), c = corners.pixel(i, j), m = centres.pixel(i, j);
+      if (a == c) continue;
+      ++centred;
+      ASSERT_NEAR(a.x, 0.5f * c.x + 0.5f * m.x, 1e-6f) << i << "," << j;
+      ASSERT_NEAR(a.y, 0.5f * c.y + 0.5f * m.y, 1e-6f) << i << "," << j;
+      ASSERT_NEAR(a.z, 0.5f * c.z + 0.5f * m.z, 1e-6f) << i << "," << j;
+    }
+  }
+  EXPECT_EQ(statistics.refinedPixels, 0u);
+  EXPECT_EQ(statistics.retracedPixels, 0u);
+  // The shadow's edge, about 4 x 50 pixels long, gives some 200.
+  EXPECT_GT(centred, 100u);
+  EXPECT_LE(centred, statistics.centredPixels);
+  EXPECT_EQ(statistics.samples, 161u * 121u + statistics.centredPixels);
+
+  // At depth 0 (`--spp` 2 or 3) no pixel takes its centre.
+  RenderStatistics shallow;
+  renderImage(compiled, cornersOnly, &shallow);
+  EXPECT_EQ(shallow.centredPixels, 0u);
+  EXPECT_EQ(shallow.samples, 161u * 121u);
+}
+
 TEST(AdaptiveSampling, OneSampleAPixelRefinesNothing) {
   RenderScene compiled(defaultScene());
   RenderSettings settings = adaptiveSettings(1, 0.01);

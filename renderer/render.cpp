@@ -214,6 +214,7 @@ struct alignas(64) Worker {
   std::uint64_t samples = 0;
   std::uint64_t refined = 0;
   std::uint64_t fullySampled = 0;
+  std::uint64_t centred = 0;
 };
 
 // Traces the samples of pixels: one for a render, shared by its threads.
@@ -508,9 +509,10 @@ void fillTileCorners(const PixelTracer& tracer, const PixelRegion& tile,
   }
 }
 
-// Adaptive sampling's pass 2 on one thread: each pixel from its corners, and
-// where they differ from its lattice (PixelLattice), its neighbours' shared
-// points lent (SharedSides).
+// Adaptive sampling's pass 2 on one thread: each pixel from its corners; from
+// its corners and its centre where they differ by more than half the
+// threshold; and where they differ by more than the threshold, from its
+// lattice (PixelLattice), its neighbours' shared points lent (SharedSides).
 class PixelSubdivider {
  public:
   PixelSubdivider(const PixelTracer& tracer, const TileEdgeCorners& edges, double threshold,
@@ -523,6 +525,9 @@ class PixelSubdivider {
         samples_(static_cast<std::size_t>(lattice_.side()) * lattice_.side()) {
     const int side = lattice_.side(), last = side - 1;
     cornerPoints_ = {0, last, last * side, last * side + last};
+    // The centre is a lattice point from one cut on (side 3 and up).
+    centrePoint_ = {(side / 2) * side + side / 2};
+    centredPoints_ = {0, last, centrePoint_[0], last * side, last * side + last};
   }
 
   // A new tile: its corners traced or taken from the edges.
@@ -539,9 +544,21 @@ class PixelSubdivider {
     SampleSpread spread;
     for (std::size_t c : own) spread.add(corners_.looks[c]);
     if (lattice_.depth() == 0 || !spread.exceeds(threshold_)) {
+      shared_.forget(column);
+      if (lattice_.depth() > 0 && spread.coloursDiffer(0.5 * threshold_)) {
+        // Corners that differ by more than half the threshold: their mean
+        // and the centre, half and half (docs/RENDERING.md, "Adaptive
+        // sampling"): one sample where a cut takes five.
+        for (int k = 0; k < 4; ++k) samples_[cornerPoints_[k]] = corners_.samples[own[k]];
+        trace(i, j, centrePoint_, tracer_.tolerance(), media, worker);
+        ++worker.samples;
+        ++worker.centred;
+        points_ = &centredPoints_;
+        weights_ = &kCentredWeights;
+        return weightedMean();
+      }
       // Corners that agree: their mean, the sums the lattice would make (in
       // lattice order), without it.
-      shared_.forget(column);
       points_ = &cornerPoints_;
       weights_ = &kCornerWeights;
       PixelSamples pixel;
@@ -580,6 +597,8 @@ class PixelSubdivider {
 
  private:
   inline static const std::vector<double> kCornerWeights = std::vector<double>(4, 0.25);
+  // centredPoints_' weights: an eighth each corner, a half the centre.
+  inline static const std::vector<double> kCentredWeights = {0.125, 0.125, 0.5, 0.125, 0.125};
   const PixelTracer& tracer_;
   const TileEdgeCorners& edges_;
   CornerSamples corners_;  // the tile's
@@ -588,6 +607,8 @@ class PixelSubdivider {
   SharedSides shared_;
   std::vector<SampleColour> samples_;  // by lattice point
   std::vector<int> cornerPoints_;
+  std::vector<int> centrePoint_;    // the centre alone, to trace
+  std::vector<int> centredPoints_;  // the corners and the centre, in lattice order
   const std::vector<int>* points_ = nullptr;
   const std::vector<double>* weights_ = nullptr;
   std::vector<glm::dvec2> at_;
@@ -720,6 +741,7 @@ Image renderImage(const RenderScene& scene, const RenderSettings& settings,
       statistics->samples += w.samples;
       statistics->refinedPixels += w.refined;
       statistics->fullySampledPixels += w.fullySampled;
+      statistics->centredPixels += w.centred;
     }
     statistics->pixels = pixels;
     statistics->seconds =

@@ -255,10 +255,13 @@ struct RenderStatistics {
   // mean samples a pixel.
   std::uint64_t pixels = 0;
   std::uint64_t samples = 0;
-  // Adaptive sampling: the pixels cut (whose corners differ), and those of
-  // them cut somewhere to the finest squares.
+  // Adaptive sampling: the pixels cut (whose corners differ), those of
+  // them cut somewhere to the finest squares, and the pixels not cut that
+  // took their centre too (whose corners differ by more than half the
+  // threshold).
   std::uint64_t refinedPixels = 0;
   std::uint64_t fullySampledPixels = 0;
+  std::uint64_t centredPixels = 0;
   // The GPU path's device (empty on the CPU), and the parts of `seconds`:
   // creating the device and compiling the pipeline, packing and uploading
   // the scene, the kernel (timestamp queries), and reading the image back.

@@ -98,7 +98,8 @@ std::string statisticsText(const render::RenderStatistics& s,
          << withThousands(s.refinedPixels) << " of " << withThousands(s.pixels) << " pixels ("
          << (s.pixels > 0 ? 100.0 * s.refinedPixels / s.pixels : 0.0) << "%), "
          << withThousands(s.fullySampledPixels) << " of them to squares of 1/"
-         << (1 << render::subdivisionDepth(settings.samplesPerPixel)) << " pixel; "
+         << (1 << render::subdivisionDepth(settings.samplesPerPixel)) << " pixel, and sampled "
+         << withThousands(s.centredPixels) << " more at their centre; "
          << (s.pixels > 0 ? static_cast<double>(s.samples) / s.pixels : 0.0)
          << " samples a pixel on average\n";
   }

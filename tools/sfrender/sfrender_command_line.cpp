@@ -62,7 +62,9 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
                  "corners differ by more than THRESHOLD (above 0, at most 1, in any channel; 0.03 "
                  "is a good start) or show different objects is cut in four, its squares again "
                  "where their corners differ by twice as much, and so on, until a pixel holds at "
-                 "most --spp squares (16: 4x4, 64: 8x8); with --spp 1 nothing is refined")
+                 "most --spp squares (16: 4x4, 64: 8x8); a pixel not cut whose corners differ by "
+                 "more than half THRESHOLD is also sampled at its centre; with --spp 1 to 3 "
+                 "nothing is refined")
       ->option_text("THRESHOLD")
       ->default_str("")  // 0, uniform sampling, is what leaving it out gives
       ->check(numberIn(0, 1))
