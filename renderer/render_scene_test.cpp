@@ -355,9 +355,6 @@ TEST(LightOnASurface, TheSurfaceItLiesOnCastsNoShadow) {
   }
 }
 
-// A plane's normal is made once, per plane (RenderScene::finishHit): with
-// several planes between other objects, each hit carries the normal of the
-// plane it met, the inverse transpose's image of +y.
 // The searches test planes from the y row of their transforms alone
 // (RenderScene::intersectPlane); brute force tests them as any object. Rays
 // leaving a plane, rays stopped short, rays in a plane's own directions and
@@ -424,6 +421,9 @@ TEST(PlaneHits, TheSearchesMeetPlanesAsBruteForceDoes) {
   EXPECT_GT(met, scene::testing::randomCases(200000) / 10);
 }
 
+// A plane's normal is made once, per plane (RenderScene::finishHit): with
+// several planes between other objects, each hit carries the normal of the
+// plane it met, the inverse transpose's image of +y.
 TEST(PlaneHits, EachCarriesTheNormalOfItsOwnPlane) {
   RandomTransforms random(77);
   scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
