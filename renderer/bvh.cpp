@@ -62,6 +62,10 @@ struct NodeExtent {
     bounds.extend(item.box);
     centres.extend(item.box.centre());
   }
+  void extend(const NodeExtent& other) {
+    bounds.extend(other.bounds);
+    centres.extend(other.centres);
+  }
 };
 
 NodeExtent extentOf(const BuildItem* items, std::uint32_t begin, std::uint32_t end) {
@@ -130,8 +134,7 @@ Bins manyItemsBinsInParts(BuildItem* items, std::uint32_t begin, std::uint32_t e
   Bins bins = shares[0];
   for (std::size_t k = 1; k < parts; ++k) {
     for (int b = 0; b < kBins; ++b) {
-      bins.extent[b].bounds.extend(shares[k].extent[b].bounds);
-      bins.extent[b].centres.extend(shares[k].extent[b].centres);
+      bins.extent[b].extend(shares[k].extent[b]);
       bins.count[b] += shares[k].count[b];
     }
   }
@@ -267,11 +270,7 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
       std::partition(items + begin, items + end,
                      [&](const BuildItem& item) { return item.bin <= last; });
       children = {NodeExtent{}, NodeExtent{}};
-      for (int j = 0; j < bins.size; ++j) {
-        NodeExtent& child = children[j <= cheapest ? 0 : 1];
-        child.bounds.extend(bins.extent[j].bounds);
-        child.centres.extend(bins.extent[j].centres);
-      }
+      for (int j = 0; j < bins.size; ++j) children[j <= cheapest ? 0 : 1].extend(bins.extent[j]);
       return begin + leftCount;
     }
   }
