@@ -334,12 +334,7 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
           bestCandidate = *c;
         }
       };
-      for (std::uint32_t plane : planes_) {
-        if (auto c = intersectPlane(plane, ray, fromEye[0], bestCandidate.t)) {
-          best = plane;
-          bestCandidate = *c;
-        }
-      }
+      considerPlanes(ray, fromEye[0], best, bestCandidate);
       for (std::uint32_t item : eye.grid.items(cell)) consider(bounded_[item]);
       if (best == RaySource::kNone) {
         out[k].reset();
@@ -396,6 +391,18 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
   return std::nullopt;
 }
 
+[[gnu::always_inline]] inline void RenderScene::considerPlanes(const Ray& ray,
+                                                               const RaySource& source,
+                                                               std::uint32_t& best,
+                                                               Candidate& bestCandidate) const {
+  for (std::uint32_t plane : planes_) {
+    if (auto c = intersectPlane(plane, ray, source, bestCandidate.t)) {
+      best = plane;
+      bestCandidate = *c;
+    }
+  }
+}
+
 void RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate& c,
                             Hit& hit) const {
   const RenderObject& object = objects_[index];
@@ -445,12 +452,7 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
       bestCandidate = *c;
     }
   };
-  for (std::uint32_t plane : planes_) {
-    if (auto c = intersectPlane(plane, ray, source, bestCandidate.t)) {
-      best = plane;
-      bestCandidate = *c;
-    }
-  }
+  considerPlanes(ray, source, best, bestCandidate);
   BoxRay boxRay{ray.origin, 1.0 / ray.direction};
   bvh_.traverse(boxRay, bestCandidate.t, [&](std::uint32_t item) {
     consider(bounded_[item]);
@@ -481,12 +483,7 @@ void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int cou
     for (int lane = 0; lane < n; ++lane) {
       best[lane] = RaySource::kNone;
       bestCandidate[lane] = Candidate{tMax, false, SpanFace::None};
-      for (std::uint32_t plane : planes_) {
-        if (auto c = intersectPlane(plane, ray[lane], source[lane], bestCandidate[lane].t)) {
-          best[lane] = plane;
-          bestCandidate[lane] = *c;
-        }
-      }
+      considerPlanes(ray[lane], source[lane], best[lane], bestCandidate[lane]);
       boxRays[lane] = BoxRay{ray[lane].origin, 1.0 / ray[lane].direction};
       tMaxes[lane] = bestCandidate[lane].t;
     }

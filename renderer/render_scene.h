@@ -236,6 +236,11 @@ class RenderScene {
   // every plane.
   std::optional<Candidate> intersectPlane(std::uint32_t index, const Ray& ray,
                                           const RaySource& source, double tMax) const;
+  // The searches' first step: every plane, the nearest met before
+  // bestCandidate.t becoming `best` (closestHit and the packet and eye
+  // searches alike).
+  void considerPlanes(const Ray& ray, const RaySource& source, std::uint32_t& best,
+                      Candidate& bestCandidate) const;
   // The hit on object `index` that `candidate` found along `ray`, written
   // into `hit` in place: returned by value, it was copied into an optional
   // with wide loads that waited on finishHit's narrow stores.
