@@ -8,7 +8,9 @@ sfrender=$1 list=$2 tasks=$3 pattern=$4
 shift 4
 # shellcheck source=scripts/slurm/requeue.sh
 source "$SFSLURM_DIR/requeue.sh"
-mapfile -t scenes < <(grep -v '^[[:space:]]*$' "$list")
+# shellcheck source=scripts/slurm/scene-list.sh
+source "$SFSLURM_DIR/scene-list.sh"
+mapfile -t scenes < <(read_scene_list "$list")
 count=${#scenes[@]}
 task=$SLURM_ARRAY_TASK_ID
 first=$((task * count / tasks))

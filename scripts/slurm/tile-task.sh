@@ -10,5 +10,5 @@ shift 3
 source "$SFSLURM_DIR/requeue.sh"
 tile=$SLURM_ARRAY_TASK_ID
 status=0
-"$sfrender" "$@" --tile "$tile/$tiles" -o "$work/tile-$tile.exr" --quiet || status=$?
+"$sfrender" "$@" --tile "$tile/$tiles" -o "$work/tile-$tile.exr" || status=$?
 requeue_on_machine_failure "$status"

@@ -111,12 +111,23 @@ cmp "$work/merged.png" "$work/single.png"
 idiff -q -fail 0 -warn 0 "$work/merged.exr" "$work/single.exr"
 echo "the merged PNG is the one process's byte for byte, the merged EXR its pixels bit for bit"
 
-# A batch of 20 scenes over 4 tasks.
+# The image's flags reach the merge: a 16-bit PNG from float tiles, and -v
+# given to the tiles too (which are quiet otherwise; both would fail them).
+jobs=$(bash "$source/scripts/slurm/sfrender-tiles.sh" "$work/scene.sf" -o "$work/deep.png" \
+  --tiles 3 --work "$work/deep" --sfrender "$bin/sfrender" --width 64 --height 36 --bits 16 -v)
+wait_for_job "$(sed -n 's/.*merge=\([0-9]*\).*/\1/p' <<<"$jobs")" 60
+depth=$(od -An -tu1 -j24 -N1 "$work/deep.png" | tr -d ' ')
+[[ $depth == 16 ]] || { echo "deep.png has $depth bits a channel, not 16" >&2; exit 1; }
+echo "--bits 16 and -v carried: a 16-bit PNG from 3 float tiles"
+
+# A batch of 20 scenes over 4 tasks, listed with CRLF line ends, a comment
+# and a blank line.
 mkdir -p "$work/batch" "$work/out"
+printf '# the scenes\r\n\r\n' >"$work/list.txt"
 for seed in $(seq 1 20); do
   "$bin/sfgen" --layout floor -n 200 -s "$seed" -o "$work/batch/scene-$seed.sf" >/dev/null
-  echo "$work/batch/scene-$seed.sf"
-done >"$work/list.txt"
+  printf '%s\r\n' "$work/batch/scene-$seed.sf"
+done >>"$work/list.txt"
 batch=$(bash "$source/scripts/slurm/sfbatch.sh" "$work/list.txt" -o "$work/out/{stem}.png" \
   --tasks 4 --logs "$work/logs" --sfrender "$bin/sfrender" --width 64 --height 36 -q)
 echo "submitted: $batch"
@@ -125,4 +136,4 @@ for task in 0 1 2 3; do wait_for_job "${batch}_$task" 60; done
 for seed in $(seq 1 20); do
   [[ -s $work/out/scene-$seed.png ]] || { echo "scene-$seed.png is missing" >&2; exit 1; }
 done
-echo "the batch wrote all 20 images"
+echo "the batch wrote all 20 images of a CRLF list"
