@@ -376,14 +376,15 @@ TEST(ExtremeValues, LightsSummingBeyondTheLargestDoubleClampAmbientLight) {
 }
 
 // A field of view with no finite image plane is refused, not written as
-// inf: the writers are given settings, not only scenes.
+// inf: the writers are given settings, not only scenes, and hold them to a
+// view's range (checkView).
 TEST(ExtremeValues, AFieldOfViewWithNoFiniteImagePlaneIsRefused) {
   Scene scene = testing::RandomSceneGenerator(4).scene(false);
   ConversionOptions options;
   options.pov.verticalFovDegrees = 360.0;
   DiagnosticList diagnostics;
   EXPECT_FALSE(convertScene(scene, Format::Pov, options, diagnostics).has_value());
-  EXPECT_TRUE(hasError(diagnostics, DiagnosticCode::ValueNotFinite));
+  EXPECT_TRUE(hasError(diagnostics, DiagnosticCode::ValueOutOfRange));
 }
 
 // A turned PLANE whose origin and the eye lie near opposite largest

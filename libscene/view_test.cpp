@@ -4,11 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "libscene/formats/pov/pov_reader.h"
 #include "libscene/testing/test_support.h"
+#include "libscene/text/number.h"
 #include "scenefile/convert.h"
 #include "scenefile/read.h"
+#include "scenefile/validation.h"
 
 namespace scene {
 namespace {
@@ -26,7 +30,8 @@ ReadResult through(const Scene& scene, Format format, const ConversionOptions& o
   DiagnosticList out;
   std::optional<std::string> text = convertScene(scene, format, options, out);
   EXPECT_TRUE(text.has_value()) << formatInfo(format).name;
-  return parseSceneAs(format, text.value_or(""), "back" + std::string(formatInfo(format).extensions[0]));
+  return parseSceneAs(format, text.value_or(""),
+                      "back" + std::string(formatInfo(format).extensions[0]));
 }
 
 TEST(View, APovCameraGivesTheViewItsReaderReports) {
@@ -101,6 +106,83 @@ TEST(View, ANonFiniteViewIsRefusedBeforeAnyWriter) {
   DiagnosticList out;
   EXPECT_FALSE(convertScene(scene, Format::Gltf, {}, out));
   EXPECT_EQ(testing::withCode(out, DiagnosticCode::ValueNotFinite).size(), 1u);
+}
+
+// One range for a view, wherever it comes from: validateScene refuses a
+// scene holding one outside it, every writer refuses to write one (the
+// scene's or its options'), and every value inside reads back.
+TEST(View, OneRangeHoldsForTheValidatorAndEveryWriter) {
+  ReadResult sf = parseScene(kSceneFile, "a.sf");
+  ASSERT_TRUE(sf.ok());
+  const double outFov[] = {-5, 0, 4.9e-324, 1e-300, 0.0009, 179.9991, 180, 1e300};
+  const double outAspect[] = {-1, 0, 1e-300, 1.0 / 32769, 32769, 1e300};
+  std::vector<View> outside;
+  for (double fov : outFov) outside.push_back(View{fov, std::nullopt, {}});
+  for (double aspect : outAspect) outside.push_back(View{60, aspect, {}});
+  for (const View& view : outside) {
+    SCOPED_TRACE(formatNumber(view.verticalFovDegrees) + " " +
+                 formatNumber(view.aspectRatio.value_or(1)));
+    Scene scene = sf.scene;
+    scene.view = view;
+    EXPECT_EQ(testing::withCode(validateScene(scene), DiagnosticCode::ValueOutOfRange).size(), 1u);
+    for (const FormatInfo& row : formats()) {
+      if (!row.write) continue;
+      DiagnosticList out;
+      EXPECT_FALSE(convertScene(scene, row.format, {}, out)) << row.name;
+      EXPECT_EQ(testing::withCode(out, DiagnosticCode::ValueOutOfRange).size(), 1u) << row.name;
+    }
+  }
+  for (double fov : outFov) {
+    ConversionOptions options;
+    options.gltf.yfovDegrees = fov;
+    options.pov.verticalFovDegrees = fov;
+    for (Format format : {Format::Gltf, Format::Pov}) {
+      DiagnosticList out;
+      EXPECT_FALSE(convertScene(sf.scene, format, options, out)) << fov;
+    }
+  }
+  for (auto [width, height] : {std::pair{32769, 480}, {640, -1}, {1, 32769}}) {
+    ConversionOptions options;
+    options.gltf.width = options.pov.width = width;
+    options.gltf.height = options.pov.height = height;
+    for (Format format : {Format::Gltf, Format::Pov}) {
+      DiagnosticList out;
+      EXPECT_FALSE(convertScene(sf.scene, format, options, out)) << width << "x" << height;
+    }
+  }
+  // The edges of the range, through every format that holds a view.
+  for (View view : {View{kMinFovDegrees, kMinAspectRatio, {}}, View{kMaxFovDegrees, 1.0, {}},
+                    View{kMaxFovDegrees, kMaxAspectRatio, {}}, View{kMinFovDegrees, 1.0, {}}}) {
+    Scene scene = sf.scene;
+    scene.view = view;
+    EXPECT_TRUE(validateScene(scene).empty());
+    for (const FormatInfo& row : formats()) {
+      if (!row.holds.view) continue;
+      SCOPED_TRACE(std::string(row.name) + " " + formatNumber(view.verticalFovDegrees) + " " +
+                   formatNumber(*view.aspectRatio));
+      ReadResult back = through(scene, row.format);
+      ASSERT_TRUE(back.ok());
+      ASSERT_TRUE(back.scene.view);
+      EXPECT_NEAR(back.scene.view->verticalFovDegrees, view.verticalFovDegrees, 1e-6);
+      ASSERT_TRUE(back.scene.view->aspectRatio);
+      // POV-Ray's image is whole pixels, 480 rows at the ratio, as
+      // sfrender's: a ratio beyond 32768:480 is that of the nearest size.
+      if (row.format == Format::Pov) continue;
+      EXPECT_NEAR(*back.scene.view->aspectRatio / *view.aspectRatio, 1.0, 1e-9);
+    }
+  }
+}
+
+// A POV-Ray camera whose view is out of range is still a camera: the view is
+// dropped with a loss warning, as a glTF camera's is.
+TEST(View, APovCameraOutOfRangeLosesItsView) {
+  ReadResult read = parseScene(
+      "camera { location <0, 1, -8> look_at <0, 0, 0> angle 0.0001 }\n"
+      "light_source { <0, 10, -10> color rgb 1 }\n",
+      "a.pov");
+  EXPECT_TRUE(read.ok());
+  EXPECT_FALSE(read.scene.view);
+  EXPECT_EQ(testing::withCode(read.diagnostics, DiagnosticCode::PovLoss).size(), 1u);
 }
 
 }  // namespace

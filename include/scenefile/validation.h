@@ -5,11 +5,10 @@
 #pragma once
 
 #include <array>
-#include <string>
-#include <string_view>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <string>
+#include <string_view>
 
 #include "scenefile/diagnostic.h"
 #include "scenefile/scene.h"
@@ -20,6 +19,19 @@ namespace scene {
 inline constexpr double kMaxConditionNumber = 1e12;
 /// Relative tolerance under which two camera vectors count as parallel.
 inline constexpr double kParallelTolerance = 1e-9;
+
+/// A View's vertical field of view, in degrees: what sfrender renders, and
+/// what every format holds and reads back (a POV-Ray camera's vectors or a
+/// glTF yfov in radians stay well within a double's range).
+inline constexpr double kMinFovDegrees = 0.001;
+inline constexpr double kMaxFovDegrees = 179.999;
+/// The longest side of an image, in pixels (sfrender's --width and --height,
+/// sfconvert's): its width times its height fits an int.
+inline constexpr int kMaxImageSide = 32768;
+/// A View's aspect ratio (width over height): that of an image of 1 to
+/// kMaxImageSide pixels a side.
+inline constexpr double kMinAspectRatio = 1.0 / kMaxImageSide;
+inline constexpr double kMaxAspectRatio = kMaxImageSide;
 
 /// What a record is, for the rules that differ between them.
 enum class RecordRole { Camera, Light, Object };
@@ -58,12 +70,20 @@ void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticLis
 void checkMaterialValue(MaterialProperty property, double value, SourceSpan where,
                         DiagnosticList& out);
 
+/// A View's field of view in [kMinFovDegrees, kMaxFovDegrees] and its aspect
+/// ratio, when it has one, in [kMinAspectRatio, kMaxAspectRatio]; each value
+/// outside (NaN included) is a value-out-of-range error at `where`. The one
+/// rule for a view: validateScene and every writer (convertScene) hold a
+/// scene's view to it, and the tools their --fov, --width and --height.
+void checkView(const View& view, SourceSpan where, DiagnosticList& out);
+
 /// OUTPUT_FILE is one name of printable ASCII without blanks, as an
 /// instruction file holds it: a name set in memory may be anything
 /// (output-file-name).
 void checkOutputFileName(const std::string& name, SourceSpan where, DiagnosticList& out);
 
-/// Rules about the scene as a whole: a warning when nothing is lit.
+/// Rules about the scene as a whole: a warning when nothing is lit, and the
+/// view's range (checkView).
 void checkSceneLevel(const Scene& scene, DiagnosticList& out);
 
 /// Every number of the scene is finite: camera, lights, materials, matrices,

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <glm/geometric.hpp>
-#include <glm/matrix.hpp>
 
 #include "libscene/core/finite_check.h"
 #include "libscene/core/run_on_threads.h"
@@ -49,8 +48,8 @@ void checkColour(const glm::dvec3& colour, RecordRole role, const RecordSpans& s
     // -0.0 is not below 0: it is black, like 0.
     if (colour[i] < 0.0) {
       out.error(DiagnosticCode::NegativeColour, spans.colour[i],
-                describeRole(role) + " colour has a negative " + kChannelNames[i] +
-                    " component (" + formatNumber(colour[i]) + ")");
+                describeRole(role) + " colour has a negative " + kChannelNames[i] + " component (" +
+                    formatNumber(colour[i]) + ")");
     } else if (role == RecordRole::Object && colour[i] > 1.0) {
       out.warning(DiagnosticCode::ColourAboveOne, spans.colour[i],
                   std::string("object colour ") + kChannelNames[i] + " component " +
@@ -138,7 +137,8 @@ void checkCameraMatrix(const glm::dmat4& matrix, SourceSpan where, DiagnosticLis
   glm::dmat3 gram = glm::transpose(a) * a;
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
-    for (int r = 0; r < 3; ++r) worst = std::max(worst, std::abs(gram[c][r] - (r == c ? 1.0 : 0.0)));
+    for (int r = 0; r < 3; ++r)
+      worst = std::max(worst, std::abs(gram[c][r] - (r == c ? 1.0 : 0.0)));
   }
   if (worst > kParallelTolerance || glm::determinant(a) < 0.0) {
     out.warning(DiagnosticCode::CameraScaled, where,
@@ -287,11 +287,30 @@ bool checkSceneFinite(const Scene& scene, DiagnosticList& out) {
   return framing && objects;
 }
 
+void checkView(const View& view, SourceSpan where, DiagnosticList& out) {
+  double fov = view.verticalFovDegrees;
+  if (!(fov >= kMinFovDegrees && fov <= kMaxFovDegrees)) {
+    out.error(DiagnosticCode::ValueOutOfRange, where,
+              "the camera's vertical field of view of " + formatNumber(fov) +
+                  " degrees is outside " + formatNumber(kMinFovDegrees) + " to " +
+                  formatNumber(kMaxFovDegrees))
+        .hint = "sfrender renders no other, and no format holds much narrower or wider views";
+  }
+  if (view.aspectRatio &&
+      !(*view.aspectRatio >= kMinAspectRatio && *view.aspectRatio <= kMaxAspectRatio)) {
+    out.error(DiagnosticCode::ValueOutOfRange, where,
+              "the camera's aspect ratio of " + formatNumber(*view.aspectRatio) + " is outside 1/" +
+                  std::to_string(kMaxImageSide) + " to " + std::to_string(kMaxImageSide))
+        .hint = "an image is 1 to " + std::to_string(kMaxImageSide) + " pixels a side";
+  }
+}
+
 void checkSceneLevel(const Scene& scene, DiagnosticList& out) {
   if (scene.lights.empty()) {
-    out.warning(DiagnosticCode::NoLight, scene.camera.span, "scene has no LIGHT")
-        .hint = "nothing will be lit; every object shows its ambient colour at most";
+    out.warning(DiagnosticCode::NoLight, scene.camera.span, "scene has no LIGHT").hint =
+        "nothing will be lit; every object shows its ambient colour at most";
   }
+  if (scene.view) checkView(*scene.view, scene.view->span, out);
 }
 
 void checkOutputFileName(const std::string& name, SourceSpan where, DiagnosticList& out) {

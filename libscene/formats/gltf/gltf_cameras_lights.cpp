@@ -11,6 +11,7 @@
 #include "libscene/formats/gltf/gltf_reference_point.h"
 #include "libscene/text/number.h"
 #include "scenefile/transform.h"
+#include "scenefile/validation.h"
 
 namespace scene::gltf {
 
@@ -55,22 +56,24 @@ void CamerasAndLights::reportFov(int camera) {
   const tinygltf::Camera& c = c_.model.cameras[camera];
   if (c.type != "perspective" || !(c.perspective.yfov > 0.0)) return;
   double degrees = std::round(c.perspective.yfov * 180.0 / std::numbers::pi * 1e6) / 1e6;
-  // sfrender's --fov range; a yfov from pi is reported with the file's
+  // A View's range (checkView); a yfov from pi is reported with the file's
   // other values (gltf_document.h).
-  if (!(degrees >= 0.001 && degrees <= 179.999)) {
+  if (!(degrees >= kMinFovDegrees && degrees <= kMaxFovDegrees)) {
     if (c.perspective.yfov < std::numbers::pi) {
       c_.out.report(c_.loss, DiagnosticCode::GltfIgnored, {},
                     "the camera's vertical field of view of " + formatNumber(c.perspective.yfov) +
-                        " radians is outside what sfrender renders (0.001 to 179.999 degrees), "
-                        "and is dropped");
+                        " radians is outside what sfrender renders (" +
+                        formatNumber(kMinFovDegrees) + " to " + formatNumber(kMaxFovDegrees) +
+                        " degrees), and is dropped");
     }
     return;
   }
   View& view = c_.scene.view.emplace();
   view.verticalFovDegrees = degrees;
-  if (c.perspective.aspectRatio > 0.0 && std::isfinite(c.perspective.aspectRatio)) {
-    view.aspectRatio = c.perspective.aspectRatio;
-  }
+  // The document's check reports every aspect ratio as dropped from a scene
+  // file; one out of a View's range is not kept for sfrender either.
+  double aspect = c.perspective.aspectRatio;
+  if (aspect >= kMinAspectRatio && aspect <= kMaxAspectRatio) view.aspectRatio = aspect;
   c_.out
       .note(DiagnosticCode::CameraFov, {},
             "the camera's vertical field of view is " + formatNumber(degrees) +

@@ -344,7 +344,16 @@ Material PovSceneBuilder::material(const PovPendingObject& pending, const Object
 
 void PovSceneBuilder::reportView(SourceSpan span) {
   const PovCameraView& view = result_.view;
-  result_.read.scene.view = View{view.verticalFovDegrees, view.aspectRatio, span};
+  // A view out of range is dropped, as the glTF reader drops one: the scene
+  // is still good, only sfrender cannot show what POV-Ray would.
+  View read{view.verticalFovDegrees, view.aspectRatio, span};
+  DiagnosticList range;
+  checkView(read, span, range);
+  if (range.hasErrors()) {
+    loss(span, range.items().front().message + ", and is dropped", range.items().front().hint);
+    return;
+  }
+  result_.read.scene.view = read;
   int width = viewSize_ ? viewSize_->first : options_.pov.imageWidth;
   int height =
       viewSize_ ? viewSize_->second : static_cast<int>(std::lround(width / view.aspectRatio));
