@@ -203,7 +203,8 @@ print(f"ADDON: imported {len(meshes)} objects with scenefile from {scenefile.__f
 '
 if [[ -n $python && -n $pydir ]]; then
   step "the Python package in $prefix/$pydir, and the Blender add-on"
-  for file in "$pydir/scenefile/__init__.py" "$pydir/scenefile/_model.py" \
+  for file in "$pydir/scenefile/__init__.py" "$pydir/scenefile/_checks.py" \
+              "$pydir/scenefile/_model.py" \
               "$pydir/scenefile/_core.pyi" "$pydir/scenefile/py.typed" \
               share/scenefile/io_scene_sf.zip share/scenefile/blender/addons/io_scene_sf/__init__.py \
               share/scenefile/blender/addons/io_scene_sf/_site.py; do

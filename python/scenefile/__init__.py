@@ -14,16 +14,15 @@ what a script does is what the tools do. docs/PYTHON.md is the manual.
 from __future__ import annotations
 
 import os
-import tempfile
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
 
-from . import _core
+from . import _checks, _core
 from ._model import (Camera, Colour, Diagnostic, FixIt, Light, Material, Matrix, Note, Object,
                      ObjectKind, Scene, Severity, TransformKind, TransformOp, Vector, View,
-                     _diagnostics, _kind, compose_transform)
+                     _diagnostics, _kind, _matrix, compose_transform)
 
 __version__: str = _core.__version__
 
@@ -55,9 +54,10 @@ _READ_OPTIONS: Dict[str, Tuple[type, float, float]] = {
     "no_loss": (bool, 0, 1), "transpose_matrices": (bool, 0, 1),
     "skip_unsupported": (bool, 0, 1),
 }
+_SIDE = _core.MAX_IMAGE_SIDE
 _WRITE_OPTIONS: Dict[str, Tuple[type, float, float]] = {
     "no_loss": (bool, 0, 1), "approximate": (bool, 0, 1), "output_file": (str, 0, 0),
-    "fov": (float, 0.0, 180.0), "width": (int, 1, 1 << 30), "height": (int, 1, 1 << 30),
+    "fov": (View, 0, 0), "width": (int, 1, _SIDE), "height": (int, 1, _SIDE),
     "tessellation": (int, 3, 1024), "external_buffers": (bool, 0, 1), "flat": (bool, 0, 1),
     "depth": (int, 0, 1000),
 }
@@ -97,33 +97,33 @@ def _options(given: Dict[str, Any], known: Dict[str, Tuple[type, float, float]],
         if value is None:
             continue
         kind, lowest, highest = known[name]
-        if kind is bool:
-            if not isinstance(value, (bool, np.bool_)):
-                raise TypeError(f"{name} must be True or False, not {value!r}")
-            value = bool(value)
+        if kind is View:
+            value = _fov(value)
+        elif kind is bool:
+            value = _checks.flag(value, name)
         elif kind is int:
-            if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-                raise TypeError(f"{name} must be a whole number, not {value!r}")
-            if not lowest <= value <= highest:
-                raise ValueError(f"{name} must lie between {lowest} and {highest}, not {value}")
-            value = int(value)
+            value = _checks.whole(value, name, int(lowest), int(highest))
         elif kind is float:
-            if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float,
-                                                                             np.number)):
-                raise TypeError(f"{name} must be a number, not {value!r}")
-            value = float(value)
-            if not lowest < value < highest:
-                raise ValueError(f"{name} must lie between {lowest:g} and {highest:g}, both "
-                                 f"excluded, not {value:g}")
-        elif not isinstance(value, kind):
-            raise TypeError(f"{name} must be a {kind.__name__}, not {value!r}")
+            value = _checks.real(value, name, lowest, highest, excluded=(True, True))
+        else:
+            value = _checks.instance(value, name, kind)
         out[name] = value
     return out
+
+
+def _fov(value: Any) -> float:
+    """A field of view given as an argument, held to the one rule for a view."""
+    fov = _checks.real(value, "fov")
+    problem = _core.check_view(fov, None)
+    if problem is not None:
+        raise ValueError(f"fov: {problem}")
+    return fov
 
 
 def _format_name(format: Optional[str]) -> Optional[str]:
     if format is None:
         return None
+    _checks.instance(format, "format", str)
     names = [row["name"] for row in _core.formats()]
     name = str(format).lower()
     if name not in names:
@@ -142,6 +142,8 @@ def loads(data: Union[str, bytes], name: str = "<string>", format: Optional[str]
           **limits: Any) -> Scene:
     """The scene in ``data`` (text or bytes), as read() reads a file named ``name``."""
     options = _options(limits, _READ_OPTIONS, "loads")
+    _checks.instance(data, "data", (str, bytes))
+    _checks.instance(name, "name", str)
     if isinstance(data, str):
         data = data.encode("utf-8", "surrogateescape")
     size_diagnostics = _diagnostics(_core.check_file_size(len(data), name, options))
@@ -160,11 +162,19 @@ def _parse(data: bytes, name: str, format: Optional[str], options: Dict[str, Any
     return scene
 
 
+def _path(value: Any, name: str) -> str:
+    """A path argument as a str: a str, or an os.PathLike (pathlib.Path)."""
+    try:
+        path = os.fspath(value)
+    except TypeError:
+        raise TypeError(f"{name} must be a path (a str or an os.PathLike), not "
+                        f"{type(value).__name__}") from None
+    return path if isinstance(path, str) else os.fsdecode(path)
+
+
 def _read_bytes(path: PathLike, options: Dict[str, Any]) -> Tuple[str, bytes, List[Diagnostic]]:
     """The file's name as diagnostics give it, its bytes, and file-too-large if it is."""
-    name = os.fspath(path)
-    if not isinstance(name, str):
-        name = os.fsdecode(name)
+    name = _path(path, "path")
     with open(name, "rb") as f:
         size = os.fstat(f.fileno()).st_size
         refused = _diagnostics(_core.check_file_size(size, name, options))
@@ -216,6 +226,7 @@ def validate(scene: Scene) -> List[Diagnostic]:
     The diagnostics point at records (their lines, for a scene read from a
     file); an error here is one write() and render() would refuse.
     """
+    _checks.instance(scene, "scene", Scene)
     return _diagnostics(_core.validate(scene._to_data(), scene.source or ""))
 
 
@@ -230,65 +241,67 @@ def _format_for(path: str, format: Optional[str]) -> str:
     return found
 
 
-def _umask() -> int:
-    try:
-        with open("/proc/self/status") as f:
-            for line in f:
-                if line.startswith("Umask:"):
-                    return int(line.split()[1], 8)
-    except OSError:
-        pass
-    return 0o022
+def _output_paths(target: str, format: str, external_buffers: bool) -> Tuple[str, str]:
+    """The file written, and its buffer's ("" for none), as sfconvert places
+    them: the buffer beside the .gltf at the end of a link, named after it."""
+    if not external_buffers:
+        return target, ""
+    if format != "gltf":
+        raise ValueError("external_buffers needs a .gltf output (format 'gltf')")
+    gltf_file = os.path.realpath(target) if os.path.islink(target) else target
+    name = os.path.splitext(os.path.basename(gltf_file))[0] + ".bin"
+    buffer = os.path.join(os.path.dirname(gltf_file), name)
+    if os.path.basename(gltf_file) == name or _core.same_file(os.fsencode(buffer),
+                                                              os.fsencode(target)):
+        raise ValueError(f"the buffer file {buffer!r} is the output itself; name the output "
+                         "NAME.gltf")
+    return target, buffer
 
 
-def _write_whole(files: Sequence[Tuple[str, bytes]]) -> None:
-    """Each file written beside its target and renamed: whole or not at all."""
-    temporaries: List[Tuple[str, str]] = []
-    try:
-        for path, data in files:
-            folder = os.path.dirname(os.path.abspath(path))
-            fd, temporary = tempfile.mkstemp(dir=folder, prefix=f".{os.path.basename(path)}.",
-                                             suffix=".tmp")
-            temporaries.append((temporary, path))
-            with os.fdopen(fd, "wb") as f:
-                os.fchmod(f.fileno(), 0o666 & ~_umask())
-                f.write(data)
-                f.flush()
-                os.fsync(f.fileno())
-        # In the order given: a .gltf's buffer before the file that names it.
-        for temporary, path in temporaries:
-            os.replace(temporary, path)
-    except BaseException:
-        for temporary, _ in temporaries:
-            try:
-                os.unlink(temporary)
-            except FileNotFoundError:
-                pass
-        raise
+def _output_file(scene: Scene, path: str, format: str, options: Dict[str, Any]) -> Optional[str]:
+    """The OUTPUT_FILE the writer is given: ``output_file``, or as sfconvert
+    names the image, after the instruction file; checked by the readers' rule."""
+    given = options.get("output_file")
+    if given is None:
+        if format != "instructions" or scene.output_file is not None:
+            return None
+        given = os.path.splitext(os.path.basename(path))[0] + ".ppm"
+        why = f"the image's name {given!r}, made from the file name, "
+    else:
+        why = f"{given!r} "
+    problem = _core.check_output_file_name(given)
+    if problem is not None:
+        raise ValueError(f"output_file: {why}cannot be an OUTPUT_FILE: {problem}; name it with "
+                         "output_file=")
+    return given
 
 
-def _converted(scene: Scene, path: str, format: str, options: Dict[str, Any]) -> Tuple[
-        bytes, bytes, str, List[Diagnostic]]:
-    """The bytes of the scene in ``format``, for ``path``, and the losses."""
+def _converted(scene: Scene, path: str, buffer: str, format: str, options: Dict[str, Any]
+               ) -> Tuple[bytes, bytes, List[Diagnostic]]:
+    """The bytes of the scene in ``format``, for ``path``, its buffer's and the losses."""
     source = scene.source or ""
     problems = _diagnostics(_core.validate(scene._to_data(), source))
     _raise_on_errors(problems)
     core_options = dict(options)
     core_options["generator"] = f"scenefile {__version__} (Python)"
-    if "output_file" not in core_options:
-        # As sfconvert: the image is named after the instruction file.
-        core_options["output_file"] = os.path.splitext(os.path.basename(path))[0] + ".ppm"
-    buffer = ""
-    if core_options.pop("external_buffers", False):
-        if format != "gltf":
-            raise ValueError("external_buffers needs a .gltf output (format 'gltf')")
-        buffer = os.path.splitext(os.path.basename(path))[0] + ".bin"
-        core_options["external_buffer"] = buffer
+    core_options.pop("external_buffers", None)
+    core_options["output_file"] = _output_file(scene, path, format, options)
+    if buffer:
+        core_options["external_buffer"] = os.path.basename(buffer)
     main, sidecar, diagnostics = _core.convert(scene._to_data(), format, core_options, source)
     losses = _diagnostics(diagnostics)
     if main is None:
         raise SceneError(losses)
-    return main, sidecar, buffer, losses
+    return main, sidecar, losses
+
+
+def _write_files(files: Sequence[Tuple[str, bytes]]) -> None:
+    """The files written by the tools' own code: through links, never over a
+    folder, a device or a pipe, whole or not at all."""
+    failed = _core.write_files([(os.fsencode(path), data) for path, data in files])
+    if failed is not None:
+        path, reason = failed
+        raise OSError(f"cannot write {os.fsdecode(path)!r}: {reason}")
 
 
 def write(scene: Scene, path: PathLike, format: Optional[str] = None, no_loss: bool = False,
@@ -302,19 +315,18 @@ def write(scene: Scene, path: PathLike, format: Optional[str] = None, no_loss: b
     approximate, output_file, fov, width, height, tessellation,
     external_buffers (a .gltf's buffer in NAME.bin beside it), flat, depth.
     An invalid scene raises SceneError (validate() gives its warnings too).
-    The file is written whole or not at all.
+    The file is written as the tools write theirs: whole or not at all,
+    through a symbolic link to the file it leads to, keeping the mode of a
+    file it replaces; a folder, a device or a pipe is refused (OSError).
     """
+    _checks.instance(scene, "scene", Scene)
+    target = _path(path, "path")
     checked = _options(dict(options, no_loss=no_loss), _WRITE_OPTIONS, "write")
-    target = os.fspath(path)
-    if not isinstance(target, str):
-        target = os.fsdecode(target)
     fmt = _format_for(target, format)
-    main, sidecar, buffer, losses = _converted(scene, target, fmt, checked)
-    files = []
-    if buffer:
-        files.append((os.path.join(os.path.dirname(target), buffer), sidecar))
-    files.append((target, main))
-    _write_whole(files)
+    _, buffer = _output_paths(target, fmt, checked.get("external_buffers", False))
+    main, sidecar, losses = _converted(scene, target, buffer, fmt, checked)
+    # In this order: a .gltf's buffer before the file that names it.
+    _write_files([(buffer, sidecar), (target, main)] if buffer else [(target, main)])
     return losses
 
 
@@ -326,19 +338,23 @@ def convert(src: PathLike, dst: PathLike, format: Optional[str] = None,
     ``options`` take read()'s limits and write()'s options, ``no_loss``
     applying to both, and ``width`` and ``height`` also giving a POV-Ray
     input's image size, as sfconvert takes them. Returns what reading noted
-    and what writing lost. Never writes over ``src`` (ValueError).
+    and what writing lost. Never writes over ``src``: an output (``dst``,
+    or its buffer) that is the input file, by any name or link, is a
+    ValueError, before anything is read or written.
     """
+    source, target = _path(src, "src"), _path(dst, "dst")
     checked = _options(options, dict(_READ_OPTIONS, **_WRITE_OPTIONS), "convert")
     read_options = {k: v for k, v in checked.items() if k in _READ_OPTIONS}
     if "width" in checked and "height" in checked:
         read_options["width"], read_options["height"] = checked["width"], checked["height"]
     write_options = {k: v for k, v in checked.items() if k in _WRITE_OPTIONS}
-    target = os.fsdecode(os.fspath(dst))
-    if os.path.exists(target) and os.path.samefile(os.fspath(src), target):
-        raise ValueError(f"the output {target!r} is the input file; convert never writes over "
-                         "its input")
     fmt = _format_for(target, format)
-    scene = _read(src, None, read_options)
+    for output, what in zip(_output_paths(target, fmt, checked.get("external_buffers", False)),
+                            ("output", "buffer file")):
+        if output and _core.same_file(os.fsencode(source), os.fsencode(output)):
+            raise ValueError(f"the {what} {output!r} is the input file; convert never writes "
+                             "over its input")
+    scene = _read(source, None, read_options)
     losses = write(scene, target, fmt, **write_options)
     return scene.diagnostics + losses
 
@@ -356,24 +372,21 @@ def render(scene: Scene, width: int = 640, height: int = 480, spp: int = 1, dept
     Ctrl+C (KeyboardInterrupt) stops it. An invalid scene raises SceneError,
     a render that does not fit in free memory MemoryError.
     """
-    settings = {"width": (width, 1, 32768), "height": (height, 1, 32768), "spp": (spp, 1, 65536),
+    _checks.instance(scene, "scene", Scene)
+    settings = {"width": (width, 1, _SIDE), "height": (height, 1, _SIDE), "spp": (spp, 1, 65536),
                 "depth": (depth, 0, 1000), "threads": (threads, 0, 1024),
                 "seed": (seed, 0, (1 << 63) - 1)}
-    for name, (value, lowest, highest) in settings.items():
-        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-            raise TypeError(f"{name} must be a whole number, not {value!r}")
-        if not lowest <= value <= highest:
-            raise ValueError(f"{name} must lie between {lowest} and {highest}, not {value}")
-    if fov is None:
-        # As sfrender: the scene's own view, within what --fov takes.
-        fov = min(max(scene.view.fov, 0.001), 179.999) if scene.view is not None else 60.0
-    fov = float(fov)
-    if not 0.0 < fov < 180.0:
-        raise ValueError(f"fov must lie between 0 and 180 degrees, both excluded, not {fov}")
+    whole = {name: _checks.whole(value, name, lowest, highest)
+             for name, (value, lowest, highest) in settings.items()}
+    given = None if fov is None else _fov(fov)
     data = scene._to_data()
     _raise_on_errors(_diagnostics(_core.validate(data, scene.source or "")))
-    return _core.render(data, int(width), int(height), int(spp), int(depth), fov, int(threads),
-                        int(seed))
+    if given is None:
+        # As sfrender: the scene's own view, which validate() held to the
+        # range of an fov given.
+        given = scene.view.fov if scene.view is not None else 60.0
+    return _core.render(data, whole["width"], whole["height"], whole["spp"], whole["depth"], given,
+                        whole["threads"], whole["seed"])
 
 
 def default_scene() -> Scene:
@@ -385,8 +398,13 @@ def decompose_transform(matrix: npt.ArrayLike) -> Tuple[List[TransformOp], bool]
     """The operations an instruction file writes for ``matrix`` (SCALE,
     ROTATE_X, ROTATE_Y, ROTATE_Z, TRANSLATE, those that do nothing left out),
     and whether they give it back exactly (False for a matrix with shear,
-    whose nearest rotation and scale they are)."""
-    ops, exact = _core.decompose_transform(np.asarray(matrix, dtype=np.float64))
+    whose nearest rotation and scale they are). ``matrix`` must be one an
+    object may have (validate()'s rules): finite, its fourth row 0 0 0 1, and
+    invertible; ValueError otherwise."""
+    m = _matrix(matrix, "matrix")
+    if not np.isfinite(m).all():
+        raise ValueError("matrix must hold finite numbers only")
+    ops, exact = _core.decompose_transform(m)
     return [TransformOp(kind, value) for kind, value in ops], bool(exact)
 
 
@@ -419,8 +437,10 @@ def fit_primitive(positions: npt.ArrayLike, triangles: npt.ArrayLike,
     triangle (an (m, 3) array, or flat), counter-clockwise seen from
     outside. The rules are the glTF reader's (docs/GLTF.md, "Other
     programs' meshes"): a flat rectangle or disc is a PLANE facing its
-    winding's normal, then a box, a capped cylinder, a sphere.
+    winding's normal, then a box, a capped cylinder, a sphere. ``tolerance``
+    is the largest deviation accepted, relative to the shape's size (above 0).
     """
+    checked = _checks.real(tolerance, "tolerance", 0.0, excluded=(True, False))
     indices = np.asarray(triangles)
     if indices.size and (not np.issubdtype(indices.dtype, np.integer) or indices.min() < 0):
         raise ValueError("the triangles must be vertex indices: whole numbers from 0")
@@ -428,7 +448,7 @@ def fit_primitive(positions: npt.ArrayLike, triangles: npt.ArrayLike,
         raise ValueError("a vertex index is past 2^32")
     kind, matrix, error, reason = _core.fit_primitive(
         np.asarray(positions, dtype=np.float64).reshape(-1, 3),
-        indices.astype(np.uint32).reshape(-1), float(tolerance))
+        indices.astype(np.uint32).reshape(-1), checked)
     return MeshFit(None if kind is None else ObjectKind(kind), matrix, error, reason)
 
 
@@ -441,7 +461,11 @@ def primitive_mesh(kind: Union[ObjectKind, str], segments: int = 32,
     normals (n, 3) and triangles (m, 3), counter-clockwise seen from outside;
     a PLANE is the square [-plane_half_size, plane_half_size]^2 of y = 0."""
     name = _kind(kind, ObjectKind, "object kind").value
-    return _core.primitive_mesh(name, int(segments), float(plane_half_size))
+    count = _checks.whole(segments, "segments", _core.MIN_SEGMENTS, _core.MAX_SEGMENTS)
+    # Above 0, and within a float32, the mesh's type.
+    half = _checks.real(plane_half_size, "plane_half_size", 0.0,
+                        float(np.finfo(np.float32).max), excluded=(True, False))
+    return _core.primitive_mesh(name, count, half)
 
 
 def formats() -> List[Dict[str, Any]]:

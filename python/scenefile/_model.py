@@ -22,7 +22,7 @@ from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union, 
 import numpy as np
 import numpy.typing as npt
 
-from . import _core
+from . import _checks, _core
 
 Colour = Tuple[float, float, float]
 Vector = Tuple[float, float, float]
@@ -70,23 +70,15 @@ class Severity(str, enum.Enum):
         return self.value
 
 
+# The model holds values as data, as the C++ model does: a number that is
+# not finite is kept for validate() to point at (value-not-finite), which
+# write() and render() run; only its type is checked when it is set.
 def _number(value: Any, what: str) -> float:
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
-        raise TypeError(f"{what} must be a number, not {type(value).__name__}")
-    return float(value)
+    return _checks.real(value, what, finite=False)
 
 
 def _vector(value: Any, what: str) -> Vector:
-    items = list(np.asarray(value, dtype=np.float64).reshape(-1)) if _is_array(value) else value
-    try:
-        x, y, z = items
-    except (TypeError, ValueError):
-        raise ValueError(f"{what} must be three numbers") from None
-    return (_number(x, what), _number(y, what), _number(z, what))
-
-
-def _is_array(value: Any) -> bool:
-    return isinstance(value, np.ndarray)
+    return _checks.vector(value, what, finite=False)
 
 
 def _matrix(value: Any, what: str) -> Matrix:
@@ -212,8 +204,8 @@ class TransformOp:
         self._kind: TransformKind = _kind(kind, TransformKind, "transform kind")
         if self._kind in (TransformKind.SCALE, TransformKind.TRANSLATE):
             self._value = _vector(value, f"{self._kind.value}'s value")
-        elif isinstance(value, (int, float, np.number)) and not isinstance(value, bool):
-            self._value = (float(value), 0.0, 0.0)
+        elif isinstance(value, (int, float, np.integer, np.floating)):
+            self._value = (_number(value, f"{self._kind.value}'s angle"), 0.0, 0.0)
         else:
             v = _vector(value, f"{self._kind.value}'s value")
             if v[1] != 0.0 or v[2] != 0.0:
@@ -344,10 +336,11 @@ class Camera:
     @classmethod
     def looking_at(cls, location: VectorLike, look_at: VectorLike) -> Camera:
         """An instruction file's camera: the eye at location, looking at look_at, up from +Y."""
+        # Arguments of a computation, not data: finite, or the matrix is not.
+        eye, target = _checks.vector(location, "location"), _checks.vector(look_at, "look_at")
         camera = cls()
-        camera._matrix = _core.camera_from_look_at(_vector(location, "location"),
-                                                   _vector(look_at, "look_at"))
-        camera._look_at = _vector(look_at, "look_at")
+        camera._matrix = _core.camera_from_look_at(eye, target)
+        camera._look_at = target
         camera._look_at_matrix = camera._matrix.copy()
         return camera
 

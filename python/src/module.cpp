@@ -7,11 +7,13 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "python/src/file_writes.h"
 #include "python/src/render_image.h"
 #include "python/src/scene_data.h"
 #include "renderer/default_scene.h"
@@ -156,16 +158,56 @@ py::array_t<double> composeTransform(const py::iterable& ops) {
   return matrixToArray(scene::composeTransform(list));
 }
 
-// decompose_transform(matrix) -> (ops, exact): the instruction file's form.
+// The first error among `found`, as a ValueError.
+void raiseFirstError(const scene::DiagnosticList& found) {
+  for (const scene::Diagnostic& d : found.items()) {
+    if (d.severity == scene::Severity::Error) throw py::value_error(d.message);
+  }
+}
+
+// decompose_transform(matrix) -> (ops, exact): the instruction file's form,
+// for a matrix an object may have (validation.h's rules); the form of any
+// other would not be finite.
 py::tuple decomposeTransform(const py::handle& matrix) {
-  scene::TransformDecomposition d =
-      scene::decomposeTransform(matrixFromArray(matrix, "the matrix"));
+  glm::dmat4 m = matrixFromArray(matrix, "the matrix");
+  scene::DiagnosticList problems;
+  scene::checkMatrixLastRow(m, scene::RecordSpans::uniform({}), problems);
+  scene::checkObjectMatrix(m, "the", {}, problems);
+  raiseFirstError(problems);
+  scene::TransformDecomposition d = scene::decomposeTransform(m);
+  for (const scene::TransformOp& op : d.ops) {
+    if (!std::isfinite(op.value.x) || !std::isfinite(op.value.y) || !std::isfinite(op.value.z)) {
+      throw py::value_error("the matrix has no decomposition in finite numbers");
+    }
+  }
   py::list ops;
   for (const scene::TransformOp& op : d.ops) {
     ops.append(py::make_tuple(py::str(std::string(scene::transformKindName(op.kind))),
                               vectorToTuple(op.value)));
   }
   return py::make_tuple(ops, d.exact());
+}
+
+// check_output_file_name(name) -> the reason an instruction file cannot
+// hold it as its OUTPUT_FILE, or None: the readers' own rule.
+std::optional<std::string> checkOutputFileName(const py::str& name) {
+  scene::DiagnosticList problems;
+  scene::checkOutputFileName(encodeText(name, "output_file"), {}, problems);
+  if (problems.items().empty()) return std::nullopt;
+  const scene::Diagnostic& d = problems.items().front();
+  return d.message + " (" + d.hint + ")";
+}
+
+// check_view(fov, aspect_ratio) -> why a view with these is out of range, or
+// None: the one rule for a view, which validate() holds a scene's view to.
+std::optional<std::string> checkView(double fov, std::optional<double> aspectRatio) {
+  scene::View view;
+  view.verticalFovDegrees = fov;
+  view.aspectRatio = aspectRatio;
+  scene::DiagnosticList problems;
+  scene::checkView(view, {}, problems);
+  if (problems.items().empty()) return std::nullopt;
+  return problems.items().front().message;
 }
 
 py::array_t<double> cameraFromLookAt(const py::handle& location, const py::handle& lookAt) {
@@ -295,6 +337,10 @@ PYBIND11_MODULE(_core, m) {
   m.def("default_scene", [] { return sp::sceneToData(render::defaultScene()); });
   m.def("compose_transform", &sp::composeTransform, py::arg("ops"));
   m.def("decompose_transform", &sp::decomposeTransform, py::arg("matrix"));
+  m.def("check_output_file_name", &sp::checkOutputFileName, py::arg("name"));
+  m.def("check_view", &sp::checkView, py::arg("fov"), py::arg("aspect_ratio"));
+  m.def("write_files", &sp::writeFiles, py::arg("files"));
+  m.def("same_file", &sp::sameFile, py::arg("a"), py::arg("b"));
   m.def("camera_from_look_at", &sp::cameraFromLookAt, py::arg("location"), py::arg("look_at"));
   m.def("fit_primitive", &sp::fitPrimitive, py::arg("positions"), py::arg("indices"),
         py::arg("tolerance"));
@@ -305,4 +351,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("suggest_spelling", &sp::suggestSpelling, py::arg("word"), py::arg("candidates"));
   m.attr("FIT_TOLERANCE") = scene::kFitTolerance;
   m.attr("DEFAULT_SEGMENTS") = scene::kDefaultSegments;
+  m.attr("MIN_SEGMENTS") = scene::kMinSegments;
+  m.attr("MAX_IMAGE_SIDE") = scene::kMaxImageSide;
+  m.attr("MAX_SEGMENTS") = scene::kMaxSegments;
 }

@@ -189,3 +189,40 @@ def test_validate_points_at_what_is_wrong():
     nan = built_scene()
     nan.objects[1].material.ri = float("nan")
     assert [d.code for d in scenefile.validate(nan)] == ["value-not-finite"]
+
+
+@pytest.mark.parametrize("fov, aspect_ratio", [(60, -1), (60, 0), (60, 1e9), (-5, None),
+                                               (1e-300, None), (0, None), (180, None),
+                                               (float("nan"), None), (60, float("inf"))])
+def test_a_view_out_of_range_is_a_validation_error(tmp_path, fov, aspect_ratio):
+    # The readers' range for a view: what validate() passes reads back.
+    scene = built_scene()
+    scene.view = View(fov, aspect_ratio)
+    errors = [d for d in scenefile.validate(scene) if d.severity == "error"]
+    assert [d.code for d in errors] in (["value-out-of-range"], ["value-not-finite"])
+    for name in ("v.gltf", "v.pov", "v.sf"):
+        with pytest.raises(scenefile.SceneError):
+            scenefile.write(scene, tmp_path / name)
+    with pytest.raises(scenefile.SceneError):
+        scenefile.render(scene, 4, 4, fov=None)
+    assert os.listdir(tmp_path) == []
+
+
+def test_a_view_in_range_reads_back(tmp_path):
+    scene = built_scene()
+    for view in (View(0.001, 1 / 32768), View(179.999, 32768), View(45, None)):
+        scene.view = view
+        assert scenefile.validate(scene) == []
+        scenefile.write(scene, tmp_path / "v.gltf")
+        assert scenefile.read(tmp_path / "v.gltf").view.fov == pytest.approx(view.fov)
+
+
+@pytest.mark.parametrize("fov", [1e-300, 4.9e-324, -5, 0, 180, 1e300])
+def test_an_fov_given_is_held_to_the_views_range(tmp_path, fov):
+    scene = built_scene()
+    for name in ("f.gltf", "f.pov"):
+        with pytest.raises(ValueError, match="fov"):
+            scenefile.write(scene, tmp_path / name, fov=fov)
+    with pytest.raises(ValueError, match="fov"):
+        scenefile.render(scene, 4, 4, fov=fov)
+    assert os.listdir(tmp_path) == []

@@ -1,0 +1,38 @@
+#include "python/src/file_writes.h"
+
+#include <filesystem>
+#include <vector>
+
+#include "tools/common/file_io.h"
+
+namespace scenefile_python {
+
+std::optional<std::pair<py::bytes, std::string>> writeFiles(const py::list& files) {
+  // The bytes objects stay referenced by `files` while the GIL is released,
+  // and bytes never change: the views stay valid.
+  std::vector<tools::FileToWrite> toWrite;
+  for (py::handle item : files) {
+    auto pair = py::cast<py::tuple>(item);
+    auto path = py::cast<std::string>(py::bytes(pair[0]));
+    py::bytes data = pair[1];
+    char* buffer = nullptr;
+    py::ssize_t size = 0;
+    PyBytes_AsStringAndSize(data.ptr(), &buffer, &size);
+    toWrite.push_back({std::filesystem::path(path), {buffer, static_cast<std::size_t>(size)}});
+  }
+  std::string error;
+  std::filesystem::path failed;
+  bool written = false;
+  {
+    py::gil_scoped_release release;
+    written = tools::writeFilesAtomically(toWrite, error, &failed);
+  }
+  if (written) return std::nullopt;
+  return std::make_pair(py::bytes(failed.string()), error);
+}
+
+bool sameFile(const py::bytes& a, const py::bytes& b) {
+  return tools::isSameFile(std::string(a), std::string(b));
+}
+
+}  // namespace scenefile_python
