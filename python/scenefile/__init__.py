@@ -446,9 +446,14 @@ def fit_primitive(positions: npt.ArrayLike, triangles: npt.ArrayLike,
         raise ValueError("the triangles must be vertex indices: whole numbers from 0")
     if indices.size and indices.max() > np.iinfo(np.uint32).max:
         raise ValueError("a vertex index is past 2^32")
+    try:
+        points = np.asarray(positions, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise TypeError("positions must be an (n, 3) array of numbers") from None
+    if points.size % 3 or (points.ndim > 1 and points.shape[-1] != 3):
+        raise ValueError(f"positions must be an (n, 3) array, not of shape {points.shape}")
     kind, matrix, error, reason = _core.fit_primitive(
-        np.asarray(positions, dtype=np.float64).reshape(-1, 3),
-        indices.astype(np.uint32).reshape(-1), checked)
+        points.reshape(-1, 3), indices.astype(np.uint32).reshape(-1), checked)
     return MeshFit(None if kind is None else ObjectKind(kind), matrix, error, reason)
 
 

@@ -280,7 +280,12 @@ class TransformOp:
 
 def compose_transform(ops: Iterable[TransformOp]) -> Matrix:
     """M = Ok * ... * O2 * O1 for operations O1..Ok in file order."""
-    return _core.compose_transform([op._to_data() for op in ops])
+    try:
+        items = list(ops)
+    except TypeError:
+        raise TypeError(f"ops must be TransformOps, not {type(ops).__name__}") from None
+    return _core.compose_transform(
+        [_checks.instance(op, "each of ops", TransformOp)._to_data() for op in items])
 
 
 class View:

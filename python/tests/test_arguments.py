@@ -111,6 +111,11 @@ BAD_CALLS = [
     (lambda s: scenefile.check(ALL, error_limit=2.0), "error_limit", TypeError),
     (lambda s: scenefile.loads(b"", max_objects=-1), "max_objects", ValueError),
     (lambda s: scenefile.loads(5), "data", TypeError),
+    (lambda s: scenefile.compose_transform(["SCALE"]), "ops", TypeError),
+    (lambda s: scenefile.compose_transform(5), "ops", TypeError),
+    (lambda s: scenefile.fit_primitive("abc", [0, 1, 2]), "positions", TypeError),
+    (lambda s: scenefile.fit_primitive([[0, 0]], [0, 1, 2]), "positions", ValueError),
+    (lambda s: scenefile.fit_primitive([[0, 0, 0]], [0.5, 1, 2]), "triangles", ValueError),
 ]
 
 
