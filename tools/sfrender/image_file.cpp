@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tools/common/file_io.h"
+#include "tools/sfrender/memory_file.h"
 #include "tools/sfrender/oiio_module.h"
 #include "tools/sfrender/png_file.h"
 
@@ -241,10 +242,12 @@ std::string pngBytes(const render::Image& image, const ImageOptions& options, in
   return pngFileBytes(levels, error);
 }
 
-// Writes through the module, as `format` stores the image.
+// Writes through the module, as `format` stores the image, into `encoded`
+// (memory_file.h): OpenImageIO's writers pick the format by `path`'s
+// extension.
 bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const ImageFormat& format,
-                      const ImageOptions& options, const std::filesystem::path& temporary,
-                      std::string& error) {
+                      const ImageOptions& options, const std::filesystem::path& path,
+                      MemoryFile& encoded, std::string& error) {
   int bits = storedBits(format, options);
   SfrenderImageData data{image.width,
                          image.height,
@@ -277,7 +280,8 @@ bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const 
     data.pixels = bytes.data();
   }
   char message[512] = "";
-  if (!oiio.write(temporary.c_str(), &data, message, sizeof message)) {
+  if (!encoded.create(error)) return false;
+  if (!oiio.write(path.c_str(), &data, encoded.descriptor(), message, sizeof message)) {
     error = message;
     return false;
   }
@@ -385,24 +389,29 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
     return false;
   }
   int bits = storedBits(*format, options);
-  // The PNG is made before the temporary is opened, so that a failure
-  // leaves nothing behind.
-  std::string png;
-  if (own && isPng(path)) {
-    png = pngBytes(image, options, bits, error);
-    if (png.empty()) return false;
-  }
-
-  // The image goes to a temporary beside the target (file_io.h), which keeps
-  // the target's extension so that OpenImageIO picks the same writer.
-  StagedFile file;
-  if (!file.open(path, true, error)) return false;
+  // The file's bytes are made first, in memory, and only then is the
+  // temporary beside the target opened, written by checked writes, flushed
+  // and renamed (file_io.h): no writer's failure, unreported short write or
+  // exit() can leave a temporary or a part of an image behind.
+  std::string ownBytes;
+  MemoryFile encoded;
+  std::optional<std::string_view> bytes;
   if (own) {
-    if (!file.write(isPng(path) ? png : ppmBytes(image, bits), error)) return false;
-  } else if (!writeThroughOiio(*w.oiio, image, *format, options, file.temporaryPath(), error)) {
-    return false;
+    ownBytes = isPng(path) ? pngBytes(image, options, bits, error) : ppmBytes(image, bits);
+    if (ownBytes.empty()) return false;
+    bytes = ownBytes;
+  } else {
+    if (!writeThroughOiio(*w.oiio, image, *format, options, path, encoded, error)) return false;
+    bytes = encoded.bytes(error);
+    if (!bytes) return false;
+    if (bytes->empty()) {
+      error = "OpenImageIO's " + format->name + " writer wrote nothing";
+      return false;
+    }
   }
-  return file.finish(error) && file.commit(error, replace);
+  StagedFile file;
+  return file.open(path, false, error) && file.write(*bytes, error) && file.finish(error) &&
+         file.commit(error, replace);
 }
 
 bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file, std::string& error) {

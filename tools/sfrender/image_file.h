@@ -54,8 +54,10 @@ std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& pa
 // the linear values (srgbToLinear); with options.alpha a fourth channel
 // from the image's coverage, straight in integer formats, premultiplied in
 // floating-point ones. PPM is written by hand, every other format through
-// OpenImageIO. The file is written beside the target under a temporary
-// name and renamed, so it appears whole or not at all.
+// OpenImageIO (into memory, memory_file.h). The bytes are then written
+// beside the target under a temporary name, each write checked, flushed and
+// renamed (file_io.h), so the file appears whole or not at all: on a full
+// disk the old file stays as it was.
 // With `replace` false (--no-clobber), an existing file is kept and the
 // write fails.
 bool writeImageFile(const render::Image& image, const std::filesystem::path& path,

@@ -7,11 +7,14 @@
 // libraries already.
 #include "tools/sfrender/oiio_module.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <lcms2.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstddef>
 #include <cstring>
 #include <memory>
@@ -152,6 +155,48 @@ bool describeColour(const SfrenderImageData& image, const std::string& format,
   return true;
 }
 
+// The spec of the image to write: its size and channels, where it lies in
+// the full image (EXR's data window within its display window, which starts
+// at 0, 0; TIFF and PNG record the position as they can), and how alpha is
+// stored.
+OIIO::ImageSpec specOf(const SfrenderImageData& image) {
+  OIIO::ImageSpec spec(image.width, image.height, image.channels, storedType(image.pixelType));
+  if (image.channels == 4) spec.alpha_channel = 3;
+  spec.x = image.x;
+  spec.y = image.y;
+  spec.full_x = 0;
+  spec.full_y = 0;
+  spec.full_width = image.fullWidth;
+  spec.full_height = image.fullHeight;
+  // Otherwise OpenImageIO divides colour by alpha on the way to a format
+  // that stores it straight (PNG), and marks a TIFF's alpha associated.
+  if (image.channels == 4 && image.straightAlpha) spec.attribute("oiio:UnassociatedAlpha", 1);
+  spec.attribute("pnm:binary", 1);
+  return spec;
+}
+
+// Writers that choose what they write by the name they open: OpenImageIO
+// 2.4's JPEG 2000 takes its codec from the extension (.j2k or .jp2), and
+// opened as /proc/self/fd/N it writes nothing and reports success.
+constexpr std::array<std::string_view, 1> kNamedWriters = {"jpeg2000"};
+
+// Writes all of `bytes` to `fd`; false with errno set when it cannot.
+bool writeAll(int fd, const std::vector<unsigned char>& bytes) {
+  const unsigned char* data = bytes.data();
+  std::size_t left = bytes.size();
+  while (left > 0) {
+    ssize_t n = ::write(fd, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = EIO;
+      return false;
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
 }  // namespace
 
 extern "C" {
@@ -168,14 +213,16 @@ __attribute__((visibility("default"))) std::size_t sfrender_oiio_formats(char* l
   return lines.size();
 }
 
-// `path` is always image_file.cpp's temporary, which keeps the target's
-// extension for OpenImageIO to choose its writer by, and is renamed over the
-// target only once this returns: OpenImageIO writes the file in place, a
-// part at a time.
-__attribute__((visibility("default"))) int sfrender_oiio_write(const char* path,
+// `fd` is image_file.cpp's file in memory. Writers open it by its name,
+// /proc/self/fd/N, but for those that choose what they write by the name
+// they open (kNamedWriters), which get an IOProxy under `name` instead and
+// whose bytes are copied into `fd`. Not every writer through an IOProxy: in
+// OpenImageIO 2.4 TIFF's then leaves out its Exif directory (the sRGB tag).
+__attribute__((visibility("default"))) int sfrender_oiio_write(const char* name,
                                                                const SfrenderImageData* image,
-                                                               char* error, std::size_t errorSize) {
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+                                                               int fd, char* error,
+                                                               std::size_t errorSize) {
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(name);
   if (!out) {
     std::string message = OIIO::geterror();
     copyText(message.empty() ? "no writer takes the name" : message, error, errorSize);
@@ -190,31 +237,26 @@ __attribute__((visibility("default"))) int sfrender_oiio_write(const char* path,
              errorSize);
     return 0;
   }
-  OIIO::TypeDesc stored = storedType(image->pixelType);
+  OIIO::ImageSpec spec = specOf(*image);
   // Halves are given as floats, which OpenImageIO rounds to the nearest half.
-  OIIO::TypeDesc given = stored == OIIO::TypeDesc::HALF ? OIIO::TypeDesc::FLOAT : stored;
-  OIIO::ImageSpec spec(image->width, image->height, image->channels, stored);
-  if (image->channels == 4) spec.alpha_channel = 3;
-  // A region: EXR's data window within its display window (which starts at
-  // 0, 0); TIFF and PNG record the position as they can.
-  spec.x = image->x;
-  spec.y = image->y;
-  spec.full_x = 0;
-  spec.full_y = 0;
-  spec.full_width = image->fullWidth;
-  spec.full_height = image->fullHeight;
-  // Otherwise OpenImageIO divides colour by alpha on the way to a format
-  // that stores it straight (PNG), and marks a TIFF's alpha associated.
-  if (image->channels == 4 && image->straightAlpha) spec.attribute("oiio:UnassociatedAlpha", 1);
-  spec.attribute("pnm:binary", 1);
+  OIIO::TypeDesc given = spec.format == OIIO::TypeDesc::HALF ? OIIO::TypeDesc::FLOAT : spec.format;
+  std::vector<unsigned char> proxied;
+  OIIO::Filesystem::IOVecOutput proxy(proxied);
+  bool named = std::find(kNamedWriters.begin(), kNamedWriters.end(), out->format_name()) !=
+               kNamedWriters.end();
+  if (named) out->set_ioproxy(&proxy);
   std::string message;
   bool ok = describeColour(*image, out->format_name(), spec, message);
-  if (ok) ok = out->open(path, spec);
+  if (ok) ok = out->open(named ? std::string(name) : "/proc/self/fd/" + std::to_string(fd), spec);
   if (ok) ok = out->write_image(given, image->pixels);
   // geterror() empties the message, so it is taken before close() and after.
   if (!ok && message.empty()) message = out->geterror();
   ok = out->close() && ok;
   if (!ok && message.empty()) message = out->geterror();
+  if (ok && named && !writeAll(fd, proxied)) {
+    message = std::strerror(errno);
+    ok = false;
+  }
   if (!ok) {
     copyText(message.empty() ? "the image could not be written" : message, error, errorSize);
     return 0;

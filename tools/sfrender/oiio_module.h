@@ -51,10 +51,14 @@ struct SfrenderImageRegion {
 // '\0', and returns the length of the whole list, as snprintf does.
 typedef std::size_t (*SfrenderOiioFormats)(char* list, std::size_t size);
 
-// Writes the image to `path` in the format of its extension; returns 1 on
-// success, or 0 with a message in `error`.
-typedef int (*SfrenderOiioWrite)(const char* path, const SfrenderImageData* image, char* error,
-                                 std::size_t errorSize);
+// Writes the image, in the format of `name`'s extension, into the empty file
+// open as `fd`, a file in memory (memory_file.h) that sfrender then writes
+// to the target by checked writes: OpenImageIO's writers do not all report
+// a short write (BMP, Targa, SGI, FITS, JPEG 2000, WebP write through stdio
+// and go on; libjpeg ends the process). Returns 1 on success, or 0 with a
+// message in `error`.
+typedef int (*SfrenderOiioWrite)(const char* name, const SfrenderImageData* image, int fd,
+                                 char* error, std::size_t errorSize);
 
 // Reads the image at `path`: with `pixels` null, only its region
 // (`region`); otherwise also its first three channels as floats, row by row

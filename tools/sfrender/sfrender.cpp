@@ -299,7 +299,7 @@ std::optional<int> Renderer::targetRefusal() {
     return toInt(ExitCode::IoError);
   }
   std::string error;
-  if (!checkCanWrite(target, true,
+  if (!checkCanWrite(target, false,
                      ppmFileSize(imageWidth(settings_), imageHeight(settings_), target, o_.image),
                      error)) {
     output_.fileError(target.string(), "cannot write the image: " + error);
