@@ -423,11 +423,42 @@ def own_edited():
     write("gltf/own-sphere-on-cube-mesh.gltf", text(doc))
 
 
+def node_transforms():
+    """A node's matrix, translation, rotation or scale of the wrong type or
+    shape, a matrix beside TRS, a rotation that is not a unit quaternion:
+    errors at the node's property, never a node silently at the origin."""
+    h = "gltf-hostile/"
+    base = scene_gltf()
+    box = ["nodes", 0]
+    cases = {
+        "node-translation-string": {"translation": ["1", 0, 0]},
+        "node-translation-object": {"translation": {"x": 5}},
+        "node-translation-two": {"translation": [1, 2]},
+        "node-matrix-boolean": {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, True]},
+        "node-matrix-fifteen": {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0]},
+        "node-matrix-and-translation": {"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0,
+                                                   0, 0, 0, 1], "translation": [3, 0, 0]},
+        "node-rotation-zero": {"rotation": [0, 0, 0, 0]},
+        "node-rotation-length-two": {"rotation": [0, 0, 0, 2]},
+        "node-rotation-null": {"rotation": None},
+        "node-scale-null-element": {"scale": [1, None, 1]},
+        "node-scale-nested": {"scale": [[1], 1, 1]},
+    }
+    for name, values in cases.items():
+        doc = base
+        for key, value in values.items():
+            doc = changed(doc, box + [key], value)
+        write(h + name + ".gltf", text(doc))
+    write(h + "glb-node-rotation-zero.glb",
+          glb(json.dumps(changed(base, box + ["rotation"], [0, 0, 0, 0])).encode()))
+
+
 def main():
     third_party()
     edited_elsewhere()
     hostile()
     hardening()
+    node_transforms()
 
 
 if __name__ == "__main__":

@@ -7,9 +7,12 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <utility>
 
+#include "libscene/formats/gltf/gltf_import_context.h"
 #include "libscene/formats/gltf/gltf_json_scan.h"
 #include "libscene/formats/gltf/gltf_mapping.h"
+#include "libscene/text/number.h"
 #include "libscene/text/text_lines.h"
 
 namespace scene::gltf {
@@ -96,6 +99,7 @@ class Checker {
       optional(n, "mesh", at, "mesh", "meshes");
       optional(n, "camera", at, "camera", "cameras");
       optional(n, "skin", at, "skin", "skins");
+      nodeTransform(n, at);
       const Json* light = member(n, "extensions", "KHR_lights_punctual");
       if (light && light->is_object()) {
         std::string where = at + "/extensions/KHR_lights_punctual";
@@ -271,6 +275,72 @@ class Checker {
         }
       }
     }
+  }
+
+  // A node's matrix, translation, rotation and scale: each an array of
+  // finite numbers of its length, a matrix never beside the others (the
+  // glTF schema), a rotation a unit quaternion. tinygltf leaves a property
+  // it cannot read empty, which would put the node silently at the origin.
+  void nodeTransform(const Json& n, const std::string& at) {
+    std::string name;
+    auto it = n.find("name");
+    if (it != n.end() && it->is_string()) name = quoted(it->get<std::string>());
+    std::string node = "node " + at.substr(at.rfind('/') + 1) + name;
+    const std::pair<const char*, std::size_t> properties[] = {
+        {"matrix", 16}, {"translation", 3}, {"rotation", 4}, {"scale", 3}};
+    for (const auto& [key, length] : properties) {
+      it = n.find(key);
+      if (it == n.end()) continue;
+      std::string where = at + "/" + key;
+      std::string rule = "; glTF requires the " + std::string(key) + " of " + node + " to be " +
+                         std::to_string(length) + " finite numbers";
+      if (!it->is_array() || it->size() != length) {
+        problem(DiagnosticCode::GltfInvalid, where,
+                where +
+                    (it->is_array() ? " has " + std::to_string(it->size()) + " elements"
+                                    : " is " + describe(*it)) +
+                    rule);
+        continue;
+      }
+      for (std::size_t i = 0; i < length; ++i) {
+        const Json& v = (*it)[i];
+        if (!v.is_number() || !std::isfinite(v.get<double>())) {
+          std::string element = where + "/" + std::to_string(i);
+          problem(DiagnosticCode::GltfInvalid, element, element + " is " + describe(v) + rule);
+          break;
+        }
+      }
+    }
+    if (n.contains("matrix")) {
+      for (const char* key : {"translation", "rotation", "scale"}) {
+        if (!n.contains(key)) continue;
+        problem(DiagnosticCode::GltfInvalid, at + "/" + key,
+                at + " (" + node + ") has both a matrix and a " + key +
+                    "; glTF allows a matrix or a translation, rotation and scale, not both");
+        break;
+      }
+    }
+    rotation(n, at, node);
+  }
+
+  // The Khronos validator's rule: a rotation is a unit quaternion when its
+  // length is within kUnitQuaternionTolerance of 1.
+  void rotation(const Json& n, const std::string& at, const std::string& node) {
+    auto it = n.find("rotation");
+    if (it == n.end() || !it->is_array() || it->size() != 4) return;
+    double sum = 0.0;
+    for (const Json& v : *it) {
+      if (!v.is_number()) return;
+      sum += v.get<double>() * v.get<double>();
+    }
+    double length = std::sqrt(sum);
+    if (std::abs(length - 1.0) <= kUnitQuaternionTolerance) return;
+    std::string where = at + "/rotation";
+    problem(DiagnosticCode::GltfInvalid, where,
+            where + " " + it->dump() + " has length " + formatNumber(length) +
+                "; glTF requires the rotation of " + node +
+                " to be a unit quaternion (length within " +
+                formatNumber(kUnitQuaternionTolerance) + " of 1)");
   }
 
   void textureInfo(const Json& m, const std::string& at, const char* key) {

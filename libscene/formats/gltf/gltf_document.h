@@ -19,6 +19,11 @@ namespace scene::gltf {
 // primitives of every mesh and KHR_lights_punctual's lights included.
 std::size_t countObjects(const nlohmann::json& doc);
 
+// How far from 1 a node's rotation quaternion may be in length (the Khronos
+// glTF Validator's ROTATION_NON_UNIT threshold, which allows for rotations
+// stored in 8 bits); the reader normalises what lies within it.
+inline constexpr double kUnitQuaternionTolerance = 0.00769;
+
 // A problem found in the document, at the JSON pointer of the value.
 struct DocumentProblem {
   Severity severity = Severity::Error;
@@ -34,7 +39,9 @@ struct DocumentProblem {
 // sources and samplers, materials' textures) must be a whole number from 0
 // below the size of the array it points into; every object array must hold
 // objects, and every mesh at least one primitive (the glTF 2.0 schema).
-// Values are checked where the schema bounds them (a camera's yfov,
+// A node's matrix, translation, rotation and scale must be arrays of 16, 3,
+// 4 and 3 finite numbers, a matrix never beside the others, a rotation a
+// unit quaternion. Values are checked where the schema bounds them (a camera's yfov,
 // aspectRatio and znear above 0; a light's colour in [0, 1], intensity from
 // 0, range above 0; emissiveFactor in [0, 1]); what a scene file cannot hold
 // (emission, aspectRatio, range, a yfov from pi) is a loss: a warning, or an

@@ -12,8 +12,8 @@
 #include "libscene/formats/gltf/gltf_json_scan.h"
 #include "libscene/formats/gltf/gltf_reader.h"
 #include "libscene/formats/gltf/gltf_writer.h"
-#include "scenefile/read.h"
 #include "libscene/testing/test_support.h"
+#include "scenefile/read.h"
 
 namespace scene {
 namespace {
@@ -66,6 +66,40 @@ TEST(GltfDocument, EveryIndexTheReaderFollowsIsChecked) {
     ASSERT_EQ(found.size(), 1u) << text;
     EXPECT_EQ(found[0].pointer, pointer);
     EXPECT_EQ(found[0].severity, Severity::Error);
+  }
+}
+
+TEST(GltfDocument, ANodeTransformOfTheWrongTypeOrShapeIsAnErrorAtTheNode) {
+  const char* cases[][2] = {
+      {"/nodes/0/translation/0", R"({"translation": ["1", 0, 0]})"},
+      {"/nodes/0/translation", R"({"translation": {"x": 5}})"},
+      {"/nodes/0/translation", R"({"translation": [1, 2, 3, 4]})"},
+      {"/nodes/0/matrix/3", R"({"matrix": [1, 0, 0, false, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})"},
+      {"/nodes/0/matrix", R"({"matrix": []})"},
+      {"/nodes/0/scale/2", R"({"scale": [1, 1, {}]})"},
+      {"/nodes/0/scale", R"({"scale": 2})"},
+      {"/nodes/0/rotation", R"({"rotation": [0, 0, 0, 0]})"},
+      {"/nodes/0/rotation", R"({"rotation": [0, 0, 0, 0.99]})"},
+      {"/nodes/0/rotation/1", R"({"rotation": [0, null, 0, 1]})"},
+      {"/nodes/0/scale", R"({"matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1],
+                             "scale": [1, 1, 1]})"},
+  };
+  for (const auto& [pointer, node] : cases) {
+    Json doc = {{"asset", {{"version", "2.0"}}}, {"nodes", {Json::parse(node)}}};
+    std::vector<gltf::DocumentProblem> found = gltf::checkDocument(doc, false);
+    ASSERT_EQ(found.size(), 1u) << node;
+    EXPECT_EQ(found[0].pointer, pointer) << node;
+    EXPECT_EQ(found[0].severity, Severity::Error);
+    EXPECT_NE(found[0].message.find("node 0"), std::string::npos) << found[0].message;
+  }
+  // Within the Khronos validator's tolerance a rotation is a unit
+  // quaternion, and the reader normalises it.
+  for (const char* node :
+       {R"({"rotation": [0, 0, 0, 0.9924]})", R"({"rotation": [0, 0, 0, 1.0076]})",
+        R"({"rotation": [0.5, 0.5, 0.5, 0.5]})",
+        R"({"translation": [1e300, 0, -1e-300], "scale": [0, 0, 0]})"}) {
+    Json doc = {{"asset", {{"version", "2.0"}}}, {"nodes", {Json::parse(node)}}};
+    EXPECT_TRUE(gltf::checkDocument(doc, false).empty()) << node;
   }
 }
 

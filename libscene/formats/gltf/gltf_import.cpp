@@ -12,6 +12,9 @@ namespace scene::gltf {
 
 namespace {
 
+// checkDocument (gltf_document.h) has made sure that each property is
+// absent or whole, and that a rotation is a unit quaternion to within a
+// tolerance, which is normalised away here.
 glm::dmat4 localMatrix(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) {
     glm::dmat4 m;
@@ -24,8 +27,7 @@ glm::dmat4 localMatrix(const tinygltf::Node& node) {
   }
   if (node.rotation.size() == 4) {
     glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-    double length = glm::length(q);
-    if (length > 0.0 && std::isfinite(length)) q /= length;
+    q /= glm::length(q);
     glm::dmat3 r = glm::mat3_cast(q);
     glm::dmat4 t = m;
     m = glm::dmat4(r);
@@ -97,14 +99,6 @@ bool Importer::checkIndices() {
     int light = nodeLight(m, static_cast<int>(i));
     if (light != -1)
       ok &= index(light, m.lights.size(), where + " KHR_lights_punctual", "light", false);
-    if (!(node.matrix.empty() || node.matrix.size() == 16) ||
-        !(node.translation.empty() || node.translation.size() == 3) ||
-        !(node.rotation.empty() || node.rotation.size() == 4) ||
-        !(node.scale.empty() || node.scale.size() == 3)) {
-      c_.out.error(DiagnosticCode::GltfInvalid, {},
-                   where + " has a matrix, translation, rotation or scale of the wrong length");
-      ok = false;
-    }
   }
   for (std::size_t i = 0; i < m.meshes.size() && !c_.out.full(); ++i) {
     for (std::size_t p = 0; p < m.meshes[i].primitives.size(); ++p) {
