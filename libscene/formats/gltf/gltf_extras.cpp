@@ -1,6 +1,7 @@
 #include "libscene/formats/gltf/gltf_extras.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -169,40 +170,79 @@ double distanceOfPbr(const PbrMaterial& a, const PbrMaterial& b) {
   return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
 }
 
-std::optional<int> writtenSegments(ObjectKind kind, std::size_t vertices) {
+std::optional<int> writtenSegments(ObjectKind kind, std::size_t triangles) {
   for (int n = kMinSegments; n <= kMaxSegments; ++n) {
+    auto segments = static_cast<std::size_t>(n);
     std::size_t want = 0;
     switch (kind) {
       case ObjectKind::Sphere:
-        want = 2 + static_cast<std::size_t>(n) * (std::max(2, n / 2) - 1);
+        want = 2 * segments * (static_cast<std::size_t>(std::max(2, n / 2)) - 1);
         break;
       case ObjectKind::Cylinder:
-        want = 4 * static_cast<std::size_t>(n) + 2;
+        want = 4 * segments;
         break;
       case ObjectKind::Cube:
-        want = 24;
+        want = 12;
         break;
       case ObjectKind::Plane:
-        want = 4;
+        want = 2;
         break;
     }
-    if (want == vertices) return n;
+    if (want == triangles) return n;
   }
   return std::nullopt;
 }
 
-bool isWrittenMesh(ObjectKind kind, int segments, const std::vector<double>& xyz) {
-  if (xyz.empty()) return false;
-  // A plane's square is as large as the scene it was written for: its first
-  // coordinate gives the half-size.
-  TriangleMesh want = primitiveMesh(kind, segments, static_cast<float>(std::abs(xyz[0])));
-  if (want.positions.size() * 3 != xyz.size()) return false;
-  for (std::size_t i = 0; i < want.positions.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      if (static_cast<double>(want.positions[i][c]) != xyz[3 * i + c]) return false;
-    }
+namespace {
+
+// A triangle as its three corners, turned (not mirrored) so that the
+// smallest comes first: the same triangle gives the same value whichever
+// corner a file starts it at, and keeps its winding.
+using Corner = std::array<float, 3>;
+using Triangle = std::array<Corner, 3>;
+
+Triangle canonical(const Corner& a, const Corner& b, const Corner& c) {
+  if (b < a && b < c) return {b, c, a};
+  if (c < a && c < b) return {c, a, b};
+  return {a, b, c};
+}
+
+std::vector<Triangle> sortedTriangles(const std::vector<Corner>& corners,
+                                      const std::vector<std::uint32_t>& indices) {
+  std::vector<Triangle> out;
+  out.reserve(indices.size() / 3);
+  for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+    out.push_back(canonical(corners[indices[i]], corners[indices[i + 1]], corners[indices[i + 2]]));
   }
-  return true;
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+bool isWrittenMesh(ObjectKind kind, const std::vector<glm::dvec3>& positions,
+                   const std::vector<std::uint32_t>& indices) {
+  std::optional<int> segments = writtenSegments(kind, indices.size() / 3);
+  if (!segments || positions.empty() || indices.size() % 3 != 0) return false;
+  // The writer's coordinates are floats: any other value is not its mesh.
+  std::vector<Corner> corners;
+  corners.reserve(positions.size());
+  float halfSize = 0.0f;
+  for (const glm::dvec3& p : positions) {
+    Corner c{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)};
+    for (int i = 0; i < 3; ++i) {
+      if (static_cast<double>(c[i]) != p[i]) return false;
+    }
+    // A plane's square is as large as the scene it was written for: its
+    // corners give the half-size.
+    halfSize = std::max(halfSize, std::abs(c[0]));
+    corners.push_back(c);
+  }
+  TriangleMesh want = primitiveMesh(kind, *segments, halfSize);
+  std::vector<Corner> wantCorners;
+  wantCorners.reserve(want.positions.size());
+  for (const glm::vec3& p : want.positions) wantCorners.push_back({p.x, p.y, p.z});
+  return sortedTriangles(corners, indices) == sortedTriangles(wantCorners, want.indices);
 }
 
 }  // namespace scene::gltf

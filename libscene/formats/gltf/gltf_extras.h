@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
@@ -57,10 +58,16 @@ const std::string& ownExtras(const std::vector<std::string>& extras, int index);
 double distanceOfPbr(const PbrMaterial& a, const PbrMaterial& b);
 
 // The --tessellation that gives the writer's mesh of `kind` this many
-// vertices, if one does.
-std::optional<int> writtenSegments(ObjectKind kind, std::size_t vertices);
-// Whether `xyz` (three coordinates a vertex) is exactly the writer's mesh of
-// `kind` at `segments` (scenefile/mesh.h), a plane's at the size it gives.
-bool isWrittenMesh(ObjectKind kind, int segments, const std::vector<double>& xyz);
+// triangles, if one does.
+std::optional<int> writtenSegments(ObjectKind kind, std::size_t triangles);
+// Whether the triangles (three indices into `positions` each) are exactly
+// the writer's mesh of `kind` (scenefile/mesh.h) at some tessellation, a
+// plane's at the size its corners give: the same triangles, each turning the
+// same way, in any order, with vertices at one place shared or not. So the
+// order of the vertices and of the triangles, and which vertices are
+// merged, do not matter (glTF-Transform's weld and reorder change them);
+// any coordinate that moved does.
+bool isWrittenMesh(ObjectKind kind, const std::vector<glm::dvec3>& positions,
+                   const std::vector<std::uint32_t>& indices);
 
 }  // namespace scene::gltf

@@ -324,22 +324,24 @@ void MeshReader::reportFit(const std::string& label, const MeshFit& fit) {
 
 bool MeshReader::holdsWrittenMesh(int mesh, ObjectKind kind) {
   const tinygltf::Primitive& prim = c_.model.meshes[mesh].primitives[0];
+  int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
   auto position = prim.attributes.find("POSITION");
-  if ((prim.mode >= 0 && prim.mode != TINYGLTF_MODE_TRIANGLES) ||
-      position == prim.attributes.end()) {
+  if ((mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+       mode != TINYGLTF_MODE_TRIANGLE_FAN) ||
+      !prim.targets.empty() || position == prim.attributes.end()) {
     return false;
   }
-  auto [cached, fresh] = writtenMesh_.emplace(std::pair{position->second, kind}, false);
+  // What primitiveTriangles would skip with a loss is simply not ours.
+  for (int accessor : {position->second, prim.indices}) {
+    if (accessor < 0) continue;
+    const tinygltf::Accessor& a = c_.model.accessors[accessor];
+    if (a.sparse.isSparse || a.bufferView < 0) return false;
+  }
+  auto [cached, fresh] =
+      writtenMesh_.emplace(std::tuple{position->second, prim.indices, mode, kind}, false);
   if (!fresh) return cached->second;
-  const tinygltf::Accessor& accessor = c_.model.accessors[position->second];
-  std::optional<int> segments = writtenSegments(kind, accessor.count);
-  if (!segments || accessor.sparse.isSparse || accessor.bufferView < 0) return false;
-  bool skipped = false;
-  std::optional<std::vector<double>> xyz =
-      readAccessor(position->second, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
-                   "POSITION", maxVertices_, verticesRead_, skipped);
-  if (!xyz) return false;
-  cached->second = isWrittenMesh(kind, *segments, *xyz);
+  std::optional<Triangles> t = primitiveTriangles(mesh, 0);
+  cached->second = t && isWrittenMesh(kind, t->positions, t->indices);
   return cached->second;
 }
 

@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -36,11 +37,11 @@ class MeshReader {
   // none when it is not a primitive.
   const std::vector<FittedPart>& fitMesh(int mesh, int node);
 
-  // Whether the mesh holds the vertices the writer writes for `kind`
-  // (scenefile/mesh.h): a node edited to point at another mesh keeps its
-  // old extras, and they are believed only while the mesh is still their
-  // kind's. Cached by accessor, which the writer shares among a kind's
-  // meshes.
+  // Whether the mesh's one primitive is the writer's mesh of `kind`
+  // (isWrittenMesh, gltf_extras.h): a node edited to point at another mesh,
+  // or a mesh edited, keeps its old extras, and they are believed only while
+  // the mesh is still their kind's. Cached by accessors, which the writer
+  // shares among a kind's meshes.
   bool holdsWrittenMesh(int mesh, ObjectKind kind);
 
  private:
@@ -72,7 +73,8 @@ class MeshReader {
 
   const ImportContext& c_;
   std::map<int, std::vector<FittedPart>> fitted_;
-  std::map<std::pair<int, ObjectKind>, bool> writtenMesh_;
+  // By POSITION accessor, indices accessor, mode and kind.
+  std::map<std::tuple<int, int, int, ObjectKind>, bool> writtenMesh_;
   // POSITION vertices and indices allowed in the whole file, and read so far.
   std::size_t maxVertices_;
   std::size_t maxIndices_;
