@@ -19,7 +19,7 @@ std::optional<glm::dvec3> vec3(const Json& j) {
   if (!j.is_array() || j.size() != 3) return std::nullopt;
   glm::dvec3 v;
   for (int i = 0; i < 3; ++i) {
-    std::optional<double> x = number(j[i]);
+    std::optional<double> x = extrasNumber(j[i]);
     if (!x) return std::nullopt;
     v[i] = *x;
   }
@@ -32,7 +32,7 @@ std::optional<glm::dmat4> rows(const Json& j) {
   for (int r = 0; r < 4; ++r) {
     if (!j[r].is_array() || j[r].size() != 4) return std::nullopt;
     for (int c = 0; c < 4; ++c) {
-      std::optional<double> x = number(j[r][c]);
+      std::optional<double> x = extrasNumber(j[r][c]);
       if (!x) return std::nullopt;
       m[c][r] = *x;
     }
@@ -62,7 +62,7 @@ std::optional<std::vector<TransformOp>> transformsFromJson(const Json& j) {
       return std::nullopt;
     if (entry.size() != (vector ? 4u : 2u)) return std::nullopt;
     for (std::size_t i = 1; i < entry.size(); ++i) {
-      std::optional<double> v = number(entry[i]);
+      std::optional<double> v = extrasNumber(entry[i]);
       if (!v) return std::nullopt;
       op.value[static_cast<int>(i - 1)] = *v;
     }
@@ -78,6 +78,24 @@ std::optional<double> number(const Json& j) {
   double v = j.get<double>();
   if (!std::isfinite(v)) return std::nullopt;
   return v;
+}
+
+std::optional<double> extrasNumber(const Json& j) {
+  if (j.is_string() && j.get_ref<const std::string&>() == "-0") return -0.0;
+  return number(j);
+}
+
+Json extrasJson(Json sf) {
+  // Depth is that of the writer's own values: a matrix's rows at most.
+  auto mark = [](auto& self, Json& j) -> void {
+    if (j.is_number_float() && j.get<double>() == 0.0 && std::signbit(j.get<double>())) {
+      j = "-0";
+    } else if (j.is_structured()) {
+      for (Json& e : j) self(self, e);
+    }
+  };
+  mark(mark, sf);
+  return Json{{kExtrasKey, std::move(sf)}};
 }
 
 Json parseOrNull(const std::string& text) {
@@ -119,7 +137,7 @@ std::optional<RecordExtras> recordExtras(const std::string& extrasText) {
     out.noView = !view.get<bool>();
   }
   if (out.record == "LIGHT" && sf->contains("referenceDistance")) {
-    out.referenceDistance = number((*sf)["referenceDistance"]);
+    out.referenceDistance = extrasNumber((*sf)["referenceDistance"]);
     if (!out.referenceDistance || !(*out.referenceDistance > 0.0)) return std::nullopt;
   }
   if (sf->contains("transforms")) {
@@ -141,7 +159,7 @@ std::optional<Material> materialExtras(const std::string& extrasText) {
   for (MaterialProperty p : kMaterialProperties) {
     std::string key(materialPropertyName(p));
     for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    std::optional<double> v = sf->contains(key) ? number((*sf)[key]) : std::nullopt;
+    std::optional<double> v = sf->contains(key) ? extrasNumber((*sf)[key]) : std::nullopt;
     if (!v) return std::nullopt;
     materialValue(m, p) = *v;
   }

@@ -20,6 +20,14 @@ namespace scene::gltf {
 
 // A JSON number that is finite, else nothing.
 std::optional<double> number(const nlohmann::json& j);
+// A number of our own extras: as number(), or the string "-0" for a
+// negative zero (extrasJson).
+std::optional<double> extrasNumber(const nlohmann::json& j);
+// The `extras` value that holds our own values `sf`, each negative zero as
+// the string "-0": JavaScript writes -0 as 0 in JSON, so a file passed
+// through a JavaScript program (glTF-Transform, for one) would otherwise
+// lose the sign that a scene file's matrix keeps.
+nlohmann::json extrasJson(nlohmann::json sf);
 // The JSON of `text`, or null when it is empty or not JSON.
 nlohmann::json parseOrNull(const std::string& text);
 // The `sf` object of an `extras` value, if it has one.

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -105,6 +106,35 @@ TEST(GltfRoundTrip, InstructionFileThroughGlbKeepsEveryMaterialValue) {
     EXPECT_EQ(back.scene.objects[i].material, original.scene.objects[i].material);
   }
   EXPECT_EQ(instructions(back.scene), instructions(original.scene));
+}
+
+// JavaScript writes -0 as 0 in JSON: a file rewritten by a JavaScript
+// program (glTF-Transform, for one) keeps a zero's sign only where our
+// extras spell it out.
+TEST(GltfRoundTrip, NegativeZerosSurviveAJavaScriptRewrite) {
+  ReadResult original = parseScene(
+      readText(fs::path(SCENE_TESTDATA_DIR) / "valid" / "all-primitives.sf"), "all-primitives.sf");
+  ASSERT_TRUE(original.ok());
+  Scene scene = original.scene;
+  scene.objects[0].matrix[0][1] = -0.0;
+  scene.lights[0].colour.g = -0.0;
+  scene.camera.matrix[3][0] = -0.0;
+  std::string sf = writeSceneFile(scene);
+  ASSERT_NE(sf.find("-0"), std::string::npos);
+  DiagnosticList diagnostics;
+  std::optional<GltfFiles> files = writeGltf(scene, {}, false, diagnostics);
+  ASSERT_TRUE(files.has_value());
+  nlohmann::json doc = nlohmann::json::parse(files->main);
+  auto asJavaScript = [](auto& self, nlohmann::json& j) -> void {
+    if (j.is_number_float() && j.get<double>() == 0.0) j = 0;
+    if (j.is_structured()) {
+      for (nlohmann::json& e : j) self(self, e);
+    }
+  };
+  asJavaScript(asJavaScript, doc);
+  ReadResult back = parseScene(doc.dump(), "rewritten.gltf");
+  ASSERT_TRUE(back.ok()) << firstError(back.diagnostics);
+  EXPECT_EQ(writeSceneFile(back.scene), sf);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "libscene/formats/gltf/glb.h"
+#include "libscene/formats/gltf/gltf_extras.h"
 #include "libscene/formats/gltf/gltf_light_units.h"
 #include "libscene/formats/gltf/gltf_reference_point.h"
 #include "libscene/text/number.h"
@@ -307,7 +308,7 @@ Json materialJson(const Material& material, ObjectKind kind, std::set<std::strin
   for (MaterialProperty p : kMaterialProperties) {
     sf[lowerCase(materialPropertyName(p))] = materialValue(material, p);
   }
-  out["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+  out["extras"] = gltf::extrasJson(std::move(sf));
   return out;
 }
 
@@ -506,7 +507,7 @@ void addCamera(const Scene& scene, const GltfWriteOptions& options, Json& doc, P
   // A scene without a View, written with the default field of view, reads
   // back without one: the yfov is then the writer's, not the scene's.
   if (defaultView) sf["view"] = false;
-  parts.nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+  parts.nodes[node]["extras"] = gltf::extrasJson(std::move(sf));
 }
 
 void addLights(const Scene& scene, const std::vector<LightPlan>& plans, Json& doc, Parts& parts) {
@@ -523,11 +524,10 @@ void addLights(const Scene& scene, const std::vector<LightPlan>& plans, Json& do
     std::size_t node =
         addRecordNodes(parts.nodes, parts.roots, gltf::lightNodeMatrix(light.matrix), name);
     parts.nodes[node]["extensions"] = {{"KHR_lights_punctual", {{"light", i}}}};
-    parts.nodes[node]["extras"] = {{gltf::kExtrasKey,
-                                    {{"record", "LIGHT"},
-                                     {"colour", vec3Json(light.colour)},
-                                     {"matrix", rowsJson(light.matrix)},
-                                     {"referenceDistance", plans[i].distance}}}};
+    parts.nodes[node]["extras"] = gltf::extrasJson({{"record", "LIGHT"},
+                                                    {"colour", vec3Json(light.colour)},
+                                                    {"matrix", rowsJson(light.matrix)},
+                                                    {"referenceDistance", plans[i].distance}});
   }
   parts.extensions.insert("KHR_lights_punctual");
   doc["extensions"] = {{"KHR_lights_punctual", {{"lights", std::move(lights)}}}};
@@ -574,7 +574,7 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
     Json sf = {{"record", std::string(objectKindName(object.kind))},
                {"matrix", rowsJson(object.matrix)}};
     if (object.transforms) sf["transforms"] = transformsJson(*object.transforms);
-    parts.nodes[node]["extras"] = {{gltf::kExtrasKey, std::move(sf)}};
+    parts.nodes[node]["extras"] = gltf::extrasJson(std::move(sf));
   }
 }
 
