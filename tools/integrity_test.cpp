@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "tools/common/output_location.h"
 #include "tools/common/exit_code.h"
 #include "tools/common/file_io.h"
+#include "tools/common/output_location.h"
 #include "tools/sfcheck/sfcheck.h"
 #include "tools/sfconvert/sfconvert.h"
 #include "tools/sfrender/sfrender.h"
@@ -225,6 +225,65 @@ TEST_F(IntegrityTest, TemporariesAreUniqueRecognisableAndNeverLeftByAnAbandonedW
   ASSERT_TRUE(second.commit(error)) << error;
   EXPECT_EQ(read("out.ppm"), "second");
   EXPECT_EQ(files(), (std::vector<std::string>{"out.ppm"}));
+}
+
+// A name of `bytes` bytes ending in `extension`, made of `character`
+// repeated (and as many 'a' as a whole character leaves over).
+std::string nameOfBytes(std::size_t bytes, const std::string& character,
+                        const std::string& extension) {
+  std::string name;
+  while (name.size() + character.size() + extension.size() <= bytes) name += character;
+  name.append(bytes - name.size() - extension.size(), 'a');
+  return name + extension;
+}
+
+bool isUtf8(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    std::size_t length = c < 0x80         ? 1
+                         : (c >> 5) == 6  ? 2
+                         : (c >> 4) == 14 ? 3
+                         : (c >> 3) == 30 ? 4
+                                          : 0;
+    if (length == 0 || i + length > text.size()) return false;
+    for (std::size_t k = 1; k < length; ++k) {
+      if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return false;
+    }
+    i += length;
+  }
+  return true;
+}
+
+// Every name the file system takes (up to 255 bytes), ASCII or UTF-8 of 2, 3
+// and 4 bytes a character: written, its temporary's name shortened to fit,
+// kept UTF-8, unique and recognisable, with its extension where asked.
+TEST_F(IntegrityTest, NamesUpToTheLongestTheFileSystemTakesAreWritten) {
+  for (const std::string character : {"a", "\u00e9", "\u20ac", "\U0001F600"}) {
+    for (std::size_t bytes = 240; bytes <= 255; ++bytes) {
+      std::string name = nameOfBytes(bytes, character, ".png");
+      SCOPED_TRACE(std::to_string(bytes) + " bytes of " + character);
+      ASSERT_EQ(name.size(), bytes);
+      std::string error;
+      ASSERT_TRUE(writeFileAtomically(path(name), "new", error)) << error;
+      EXPECT_EQ(read(name), "new");
+      StagedFile first, second;
+      ASSERT_TRUE(first.open(path(name), true, error)) << error;
+      ASSERT_TRUE(second.open(path(name), false, error)) << error;
+      std::string a = first.temporaryPath().filename().string();
+      std::string b = second.temporaryPath().filename().string();
+      EXPECT_NE(a, b);
+      EXPECT_LE(a.size(), 255u);
+      EXPECT_LE(b.size(), 255u);
+      EXPECT_TRUE(isUtf8(a) && isUtf8(b)) << a << "\n" << b;
+      EXPECT_EQ(a.substr(a.size() - 4), ".png");
+      EXPECT_EQ(a.substr(0, 2), "." + name.substr(0, 1));
+      EXPECT_NE(b.find(".tmp-"), std::string::npos);
+      ASSERT_TRUE(first.write("first", error) && first.commit(error)) << error;
+      EXPECT_EQ(read(name), "first");
+    }
+  }
+  // Each target once, and nothing else: no temporary left.
+  EXPECT_EQ(files().size(), 4u * 16u);
 }
 
 TEST_F(IntegrityTest, FilesThatBelongTogetherAreRenamedOnlyWhenAllAreWritten) {

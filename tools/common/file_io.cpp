@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -165,6 +166,36 @@ std::string folderProblem(const fs::path& folder, int error) {
   }
 }
 
+// The temporary's file name in `folder`: `.NAME.tmp-XXXXXX`, then `extension`
+// where it is kept. A target's name may be as long as the file system allows
+// (NAME_MAX, 255 bytes on most), and its temporary's is 12 bytes longer, and
+// the extension's more where it is kept: where the whole would be too long, NAME is cut short, at
+// the first byte of a character so that the name stays UTF-8 (and the extension too, should it
+// alone leave no room). mkstemp keeps it unique whatever is cut.
+struct TemporaryName {
+  std::string name;
+  std::size_t suffix;  // the bytes after XXXXXX: the extension kept
+};
+TemporaryName temporaryName(const fs::path& folder, const std::string& name,
+                            std::string extension) {
+  long limit = ::pathconf(folder.empty() ? "." : folder.c_str(), _PC_NAME_MAX);
+  std::size_t longest = limit > 0 ? static_cast<std::size_t>(limit) : std::size_t{NAME_MAX};
+  const std::string mark = ".tmp-XXXXXX";
+  auto characterStart = [](const std::string& text, std::size_t at) {
+    while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) {
+      --at;
+    }
+    return at;
+  };
+  std::size_t fixed = 1 + mark.size();
+  if (fixed + extension.size() > longest) {
+    extension.resize(characterStart(extension, longest > fixed ? longest - fixed : 0));
+  }
+  std::size_t room = longest > fixed + extension.size() ? longest - fixed - extension.size() : 0;
+  std::size_t kept = name.size() <= room ? name.size() : characterStart(name, room);
+  return {"." + name.substr(0, kept) + mark + extension, extension.size()};
+}
+
 // Flushes a folder's entries, so that a rename in it survives a crash too.
 // Only a power loss needs this, so a failure is not an error.
 void syncFolder(const fs::path& folder) {
@@ -231,12 +262,12 @@ bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& e
   mode_ =
       fs::exists(file) ? static_cast<unsigned>(file.permissions() & fs::perms::all) : newFileMode();
 
-  std::string name = "." + target_.filename().string() + ".tmp-XXXXXX";
   std::string extension = keepExtension ? target_.extension().string() : std::string();
-  std::string pattern = (target_.parent_path() / (name + extension)).string();
+  TemporaryName name = temporaryName(target_.parent_path(), target_.filename().string(), extension);
+  std::string pattern = (target_.parent_path() / name.name).string();
   std::vector<char> buffer(pattern.begin(), pattern.end());
   buffer.push_back('\0');
-  fd_ = ::mkostemps(buffer.data(), static_cast<int>(extension.size()), O_CLOEXEC);
+  fd_ = ::mkostemps(buffer.data(), static_cast<int>(name.suffix), O_CLOEXEC);
   if (fd_ < 0) {
     error = folderProblem(target_.parent_path(), errno);
     return false;

@@ -1,9 +1,10 @@
 // Whole-file reads and writes that never leave a half-written file behind.
 //
 // Every tool writes its outputs the same way: into a temporary file beside
-// the target, named `.NAME.tmp-XXXXXX` (NAME the target's file name, XXXXXX
-// six characters chosen by mkstemp, then NAME's extension again where the
-// writer picks the format by it), flushed to disk, then renamed over the
+// the target, named `.NAME.tmp-XXXXXX` (NAME the target's file name, cut
+// short where the whole would be longer than the file system allows a name
+// to be; XXXXXX six characters chosen by mkstemp; then NAME's extension again
+// where the caller asks for it), flushed to disk, then renamed over the
 // target. rename() replaces a name in one step, so a reader, or a run killed
 // at any moment (even by SIGKILL), finds the old file or the new one, never a
 // part; a killed run leaves at most its temporary. Two runs never share a
