@@ -135,3 +135,11 @@ def test_a_gltf_named_bin_with_its_buffer_is_refused(tmp_path):
     with pytest.raises(ValueError, match="buffer"):
         scenefile.convert(ALL, tmp_path / "scene.bin", format="gltf", external_buffers=True)
     assert entries(tmp_path) == []
+
+
+@pytest.mark.parametrize("length", [241, 250, 255])
+def test_a_long_legal_name_is_written(scene, tmp_path, length):
+    name = "n" * (length - 3) + ".sf"
+    scenefile.write(scene, tmp_path / name)
+    assert scenefile.read(tmp_path / name) == scene
+    assert entries(tmp_path) == [name]
