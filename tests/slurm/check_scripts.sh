@@ -104,8 +104,9 @@ if expect 0 "${s[@]}" -o v.png -v; then
 fi
 # --no-clobber: an existing image is kept, before anything is submitted.
 echo keep >kept.png
-expect 3 "${s[@]}" -o kept.png --no-clobber && [[ ! -s $SBATCH_LOG ]] ||
+if expect 3 "${s[@]}" -o kept.png --no-clobber && [[ -s $SBATCH_LOG ]]; then
   fail "--no-clobber over an existing image was submitted"
+fi
 [[ $(cat kept.png) == keep ]] || fail "--no-clobber: kept.png was replaced"
 
 # A list written with CRLF line ends, a blank line and a comment.
