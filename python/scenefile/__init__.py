@@ -467,9 +467,10 @@ def primitive_mesh(kind: Union[ObjectKind, str], segments: int = 32,
     a PLANE is the square [-plane_half_size, plane_half_size]^2 of y = 0."""
     name = _kind(kind, ObjectKind, "object kind").value
     count = _checks.whole(segments, "segments", _core.MIN_SEGMENTS, _core.MAX_SEGMENTS)
-    # Above 0, and within a float32, the mesh's type.
-    half = _checks.real(plane_half_size, "plane_half_size", 0.0,
-                        float(np.finfo(np.float32).max), excluded=(True, False))
+    # Within a float32, the mesh's type, and not rounded to 0 there.
+    float32 = np.finfo(np.float32)
+    half = _checks.real(plane_half_size, "plane_half_size", float(float32.tiny),
+                        float(float32.max))
     return _core.primitive_mesh(name, count, half)
 
 

@@ -300,7 +300,7 @@ class View:
 
     @property
     def fov(self) -> float:
-        """The vertical field of view in degrees, in (0, 180)."""
+        """The vertical field of view in degrees: validate() takes 0.001 to 179.999."""
         return self._fov
 
     @fov.setter
@@ -309,7 +309,8 @@ class View:
 
     @property
     def aspect_ratio(self) -> Optional[float]:
-        """The image's width over its height, where the file says."""
+        """The image's width over its height, where the file says: validate()
+        takes 1/32768 to 32768."""
         return self._aspect_ratio
 
     @aspect_ratio.setter
