@@ -1,7 +1,7 @@
 #include "tools/common/output_pattern.h"
 
+#include <algorithm>
 #include <filesystem>
-#include <map>
 
 #include "tools/common/printable_text.h"
 #include "tools/common/tool_streams.h"
@@ -12,12 +12,47 @@ namespace {
 
 constexpr const char* kPlaceholders[] = {"{stem}", "{name}", "{dir}"};
 
-std::string placeholderValue(const std::string& placeholder, const std::string& input) {
+// A value that would be a path step of its own, or none, where a file
+// name is meant.
+bool isFileName(const std::string& value) {
+  return !value.empty() && value != "." && value != ".." &&
+         value.find_first_of(std::string("/\0", 2)) == std::string::npos;
+}
+
+bool climbs(const std::filesystem::path& folder) {
+  return std::any_of(folder.begin(), folder.end(), [](const auto& part) { return part == ".."; });
+}
+
+// The value of `placeholder` for `input`, or nothing with why in `error`.
+// `leading`: the placeholder begins the pattern, which has no fixed folder.
+std::optional<std::string> placeholderValue(const std::string& placeholder,
+                                            const std::string& input, bool leading,
+                                            std::string& error) {
+  if (isStandardStream(input)) {
+    error = "-o: standard input has no name to put in " + placeholder +
+            "; name the output without a placeholder";
+    return std::nullopt;
+  }
   std::filesystem::path path(input);
-  if (placeholder == "{stem}") return path.stem().string();
-  if (placeholder == "{name}") return path.filename().string();
-  std::string folder = path.parent_path().string();
-  return folder.empty() ? "." : folder;
+  if (placeholder == "{dir}") {
+    std::filesystem::path folder = path.parent_path();
+    if (!leading && climbs(folder)) {
+      error = "-o: {dir} of '" + printableText(input) + "' is '" + printableText(folder.string()) +
+              "': after the pattern's own folder, {dir} may not hold '..', which could climb out "
+              "of it; start the pattern with {dir} to write beside the input";
+      return std::nullopt;
+    }
+    return folder.empty() ? "." : folder.string();
+  }
+  std::string value = placeholder == "{stem}" ? path.stem().string() : path.filename().string();
+  if (!isFileName(value)) {
+    error = "-o: " + placeholder + " of '" + printableText(input) + "' would be '" +
+            printableText(value) +
+            "', which is no file name (a placeholder never expands to nothing, '.' or '..'); "
+            "rename the input or use another placeholder";
+    return std::nullopt;
+  }
+  return value;
 }
 
 }  // namespace
@@ -46,15 +81,28 @@ std::optional<std::string> expandOutputPattern(const std::string& pattern, const
           "-o: '" + printableText(placeholder) + "' is no placeholder; use {stem}, {name} or {dir}";
       return std::nullopt;
     }
-    out += pattern.substr(at, open - at) + placeholderValue(placeholder, input);
+    std::optional<std::string> value = placeholderValue(placeholder, input, open == 0, error);
+    if (!value) return std::nullopt;
+    out += pattern.substr(at, open - at) + *value;
     at = close + 1;
   }
   return out + pattern.substr(std::min(at, pattern.size()));
 }
 
+std::optional<std::string> batchInputsRefusal(const std::vector<std::string>& inputs) {
+  if (inputs.size() > 1 && std::any_of(inputs.begin(), inputs.end(), isStandardStream)) {
+    return "standard input (-) cannot be one of several inputs";
+  }
+  return std::nullopt;
+}
+
 std::optional<std::vector<std::string>> batchOutputs(const std::string& pattern,
                                                      const std::vector<std::string>& inputs,
                                                      std::string& error) {
+  if (std::optional<std::string> refusal = batchInputsRefusal(inputs)) {
+    error = *refusal;
+    return std::nullopt;
+  }
   if (!inputs.empty() && !expandOutputPattern(pattern, inputs.front(), error)) return std::nullopt;
   if (inputs.size() > 1 && !hasPlaceholder(pattern)) {
     error = "-o '" + printableText(pattern) + "' names one file for " +
@@ -62,20 +110,9 @@ std::optional<std::vector<std::string>> batchOutputs(const std::string& pattern,
     return std::nullopt;
   }
   std::vector<std::string> outputs;
-  std::map<std::string, std::string> inputOf;
   for (const std::string& input : inputs) {
-    if (inputs.size() > 1 && isStandardStream(input)) {
-      error = "standard input (-) cannot be one of several inputs";
-      return std::nullopt;
-    }
     std::optional<std::string> output = expandOutputPattern(pattern, input, error);
     if (!output) return std::nullopt;
-    auto [earlier, added] = inputOf.emplace(*output, input);
-    if (!added) {
-      error = "'" + printableText(earlier->second) + "' and '" + printableText(input) +
-              "' would both write '" + printableText(*output) + "'; use {dir} or {name} in -o";
-      return std::nullopt;
-    }
     outputs.push_back(*output);
   }
   return outputs;

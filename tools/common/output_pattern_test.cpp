@@ -24,12 +24,57 @@ TEST(OutputPattern, RefusesWhatCannotMakeOneFileAnInput) {
             "'out/{stem}.png'");
   EXPECT_FALSE(batchOutputs("{stem}.png", {"a.sf", "-"}, error));
   EXPECT_EQ(error, "standard input (-) cannot be one of several inputs");
-  EXPECT_FALSE(batchOutputs("{stem}.png", {"x/a.sf", "y/a.sf"}, error));
-  EXPECT_EQ(error, "'x/a.sf' and 'y/a.sf' would both write 'a.png'; use {dir} or {name} in -o");
+  EXPECT_FALSE(batchOutputs("{stem}.png", {"-", "-"}, error));
+  EXPECT_EQ(error, "standard input (-) cannot be one of several inputs");
+  EXPECT_EQ(batchInputsRefusal({"a.sf", "b.sf", "-"}),
+            "standard input (-) cannot be one of several inputs");
+  EXPECT_FALSE(batchInputsRefusal({"-"}));
+  // Two inputs onto one output are output_plan.h's to find.
+  EXPECT_EQ(batchOutputs("{stem}.png", {"x/a.sf", "y/a.sf"}, error),
+            (std::vector<std::string>{"a.png", "a.png"}));
   auto outputs = batchOutputs("{dir}/{stem}.png", {"x/a.sf", "y/a.sf"}, error);
   ASSERT_TRUE(outputs);
   EXPECT_EQ(*outputs, (std::vector<std::string>{"x/a.png", "y/a.png"}));
   EXPECT_EQ(batchOutputs("one.png", {"a.sf"}, error), std::vector<std::string>{"one.png"});
+}
+
+TEST(OutputPattern, NoPlaceholderBecomesAPathStep) {
+  std::string error;
+  for (const char* input : {"...sf", "x/...sf", "..sf", "...", "x/..", "x/.", "x/", "."}) {
+    EXPECT_FALSE(expandOutputPattern("out/sub/{stem}/x.ppm", input, error)) << input;
+    EXPECT_NE(error.find("which is no file name"), std::string::npos) << error;
+  }
+  for (const char* input : {"x/..", "x/.", "x/", ".", ".."}) {
+    EXPECT_FALSE(expandOutputPattern("out/{name}.sf", input, error)) << input;
+  }
+  EXPECT_EQ(error,
+            "-o: {name} of '..' would be '..', which is no file name (a placeholder never expands "
+            "to nothing, '.' or '..'); rename the input or use another placeholder");
+  // Dots that are names.
+  EXPECT_EQ(expandOutputPattern("out/{name}.sf", "...", error), "out/....sf");
+  EXPECT_EQ(expandOutputPattern("out/{stem}.sf", ".sf", error), "out/.sf.sf");
+  EXPECT_EQ(expandOutputPattern("out/{stem}.sf", "a..sf", error), "out/a..sf");
+  EXPECT_EQ(expandOutputPattern("out/{stem}.sf", "new\nline.sf", error), "out/new\nline.sf");
+  // {dir} climbs only where it begins the pattern.
+  EXPECT_EQ(expandOutputPattern("{dir}/{stem}.png", "../x/a.sf", error), "../x/a.png");
+  EXPECT_EQ(expandOutputPattern("out/{dir}/{stem}.png", "/abs/a.sf", error), "out//abs/a.png");
+  for (const char* input : {"../a.sf", "x/../a.sf", "x/../../a.sf", "../../a.sf"}) {
+    EXPECT_FALSE(expandOutputPattern("out/{dir}/{stem}.png", input, error)) << input;
+    EXPECT_FALSE(expandOutputPattern("x{dir}/{stem}.png", input, error)) << input;
+  }
+  EXPECT_EQ(error,
+            "-o: {dir} of '../../a.sf' is '../..': after the pattern's own folder, {dir} may not "
+            "hold '..', which could climb out of it; start the pattern with {dir} to write beside "
+            "the input");
+}
+
+TEST(OutputPattern, StandardInputHasNoName) {
+  std::string error;
+  for (const char* pattern : {"out/{stem}.png", "{name}.png", "{dir}/x.png"}) {
+    EXPECT_FALSE(expandOutputPattern(pattern, "-", error)) << pattern;
+    EXPECT_NE(error.find("standard input has no name"), std::string::npos) << error;
+  }
+  EXPECT_EQ(expandOutputPattern("out/x.png", "-", error), "out/x.png");
 }
 
 TEST(OutputPattern, SumsUp) {

@@ -13,6 +13,7 @@
 #include "tools/common/input_limits.h"
 #include "tools/common/output_location.h"
 #include "tools/common/output_pattern.h"
+#include "tools/common/output_plan.h"
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
@@ -39,6 +40,35 @@ std::string extensionList() {
 // the pipe or terminal behind it, which an atomic write cannot replace.
 bool namesStandardOutput(const std::string& path) {
   return path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1";
+}
+
+// The format `output` is written in: --to's, else its extension's.
+std::optional<scene::Format> outputFormat(const SfconvertOptions& o, const std::string& output) {
+  if (!o.to.empty()) return scene::findFormatByName(o.to)->format;
+  if (isStandardStream(output)) return std::nullopt;
+  const scene::FormatInfo* row = scene::findFormatByExtension(output);
+  return row ? std::optional<scene::Format>(row->format) : std::nullopt;
+}
+
+// The buffer of the .gltf `output` with --external-buffers: beside the file
+// the output is written as and named after it (when the output is a link,
+// the file at its end: file_io.h writes through links), so that the .gltf
+// actually written finds its buffer.
+std::filesystem::path bufferPathOf(const std::string& output) {
+  std::error_code ec;
+  std::filesystem::path gltfFile = output;
+  if (std::filesystem::is_symlink(gltfFile, ec)) {
+    gltfFile = scene::followLinks(gltfFile).value_or(gltfFile);
+  }
+  return gltfFile.parent_path() / (gltfFile.stem().string() + ".bin");
+}
+
+// Whether `output`, written from `input`, would be the input file.
+bool isInputFile(const std::string& input, const std::string& output) {
+  OutputPlan plan;
+  plan.addInput(input);
+  plan.addOutput(output, input);
+  return plan.firstClash().has_value();
 }
 
 // A conversion's plan, worked out from the command line before anything is
@@ -94,17 +124,7 @@ void Converter::print(const scene::DiagnosticList& list) const {
 // command line that cannot work.
 std::optional<int> Converter::plan() {
   plan_.toStdout = isStandardStream(o_.output);
-  if (o_.fov && !(*o_.fov > 0.0 && *o_.fov < 180.0)) {
-    output_.error("--fov must lie between 0 and 180 degrees, both excluded");
-    return toInt(ExitCode::Usage);
-  }
-  std::optional<scene::Format> format;
-  if (!o_.to.empty()) {
-    format = scene::findFormatByName(o_.to)->format;
-  } else if (!plan_.toStdout) {
-    if (const scene::FormatInfo* row = scene::findFormatByExtension(o_.output))
-      format = row->format;
-  }
+  std::optional<scene::Format> format = outputFormat(o_, o_.output);
   if (!format) {
     output_.error("cannot tell the output format of '" + printableText(o_.output) + "'",
                   "use " + extensionList() + ", or --to " + scene::formatNames());
@@ -117,7 +137,7 @@ std::optional<int> Converter::plan() {
                   "redirect it to a file or a pipe (> out.glb), or name the output file");
     return toInt(ExitCode::Usage);
   }
-  if (!plan_.toStdout && isSameFile(o_.input, o_.output)) {
+  if (!plan_.toStdout && isInputFile(o_.input, o_.output)) {
     output_.error("the output '" + printableText(o_.output) +
                   "' is the input file; sfconvert never writes over its input");
     return toInt(ExitCode::InvalidInput);
@@ -134,28 +154,24 @@ std::optional<int> Converter::plan() {
   return std::nullopt;
 }
 
-// The buffer lies beside the .gltf that names it and takes its name: when
-// the output is a link, the file at its end (file_io.h writes through
-// links), so that the .gltf actually written finds its buffer.
+// The buffer lies beside the .gltf that names it (bufferPathOf).
 std::optional<int> Converter::planBuffer() {
   if (!o_.externalBuffers) return std::nullopt;
   if (plan_.format != scene::Format::Gltf || plan_.toStdout) {
     output_.error("--external-buffers needs a .gltf output file");
     return toInt(ExitCode::Usage);
   }
-  std::error_code ec;
-  std::filesystem::path gltfFile = o_.output;
-  if (std::filesystem::is_symlink(gltfFile, ec)) {
-    gltfFile = scene::followLinks(gltfFile).value_or(gltfFile);
-  }
-  plan_.bufferFile = gltfFile.stem().string() + ".bin";
-  plan_.bufferPath = gltfFile.parent_path() / plan_.bufferFile;
-  if (isSameFile(o_.input, plan_.bufferPath)) {
+  plan_.bufferPath = bufferPathOf(o_.output);
+  plan_.bufferFile = plan_.bufferPath.filename().string();
+  if (isInputFile(o_.input, plan_.bufferPath.string())) {
     output_.error("the buffer file '" + printableText(plan_.bufferPath.string()) +
                   "' is the input file; sfconvert never writes over its input");
     return toInt(ExitCode::InvalidInput);
   }
-  if (gltfFile.filename() == plan_.bufferFile) {
+  OutputPlan outputs;
+  outputs.addOutput(o_.output, o_.input);
+  outputs.addOutput(plan_.bufferPath.string(), o_.input);
+  if (outputs.firstClash()) {
     output_.error("the buffer file '" + printableText(plan_.bufferPath.string()) +
                   "' is the output itself; name the output NAME.gltf");
     return toInt(ExitCode::Usage);
@@ -270,6 +286,13 @@ int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene&
   std::string wrote = "wrote " + printableText(o_.output) + " (" + what + ")";
   if (!converted.sidecar.empty()) wrote += " and " + printableText(plan_.bufferPath.string());
   output_.info(wrote);
+  std::string outputFile = std::filesystem::path(o_.output).stem().string() + ".ppm";
+  if (plan_.format == scene::Format::InstructionFile && !scene.outputFile &&
+      outputFile != std::filesystem::path(o_.output).stem().string() + ".ppm") {
+    output_.info("OUTPUT_FILE is " + outputFile +
+                 ": an instruction file holds no blank, control character or character that "
+                 "is not ASCII in a name");
+  }
   return toInt(ExitCode::Success);
 }
 
@@ -315,6 +338,25 @@ int convert(int argc, const char* const* argv, const ToolStreams& streams, Stage
       batchOutputs(options.outputPattern, options.files, error);
   if (!outputs) {
     output.error(error);
+    return toInt(ExitCode::Usage);
+  }
+  // Every file the batch writes, buffers included, checked together (one
+  // input is checked as `sfconvert IN OUT` is, by its conversion).
+  OutputPlan plan;
+  for (const std::string& input : options.files) plan.addInput(input);
+  for (std::size_t i = 0; i < outputs->size(); ++i) {
+    const std::string& out = (*outputs)[i];
+    plan.addOutput(out, options.files[i]);
+    if (options.externalBuffers && outputFormat(options, out) == scene::Format::Gltf) {
+      plan.addOutput(bufferPathOf(out).string(), options.files[i], "its buffer");
+    }
+  }
+  std::optional<OutputClash> clash = options.files.size() > 1 ? plan.firstClash() : std::nullopt;
+  if (clash) {
+    output.error(plan.describe(*clash) + "; a batch writes each file once, and never over an input",
+                 clash->overInput ? "write the outputs to a folder of their own, such as -o "
+                                    "'out/{stem}.sf'"
+                                  : "use {dir} or {name} in -o");
     return toInt(ExitCode::Usage);
   }
   int converted = 0, status = toInt(ExitCode::Success);

@@ -27,11 +27,13 @@
 #include "tools/common/output_file_format.h"
 #include "tools/common/output_location.h"
 #include "tools/common/output_pattern.h"
+#include "tools/common/output_plan.h"
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
 #include "tools/sfrender/image_file.h"
 #include "tools/sfrender/image_region.h"
+#include "tools/sfrender/image_target.h"
 #include "tools/sfrender/region_merge.h"
 #include "tools/sfrender/thread_probe.h"
 
@@ -181,9 +183,17 @@ class Renderer {
   // `sharedGpu`, where given, is the batch's GPU device: opened by the first
   // scene that renders on the GPU and used by the rest, so that a batch
   // starts the device once and loads the driver once (render::GpuDevice).
+  // `planned`, where given, is the image a batch without -o read ahead for
+  // this scene (image_target.h), which its outputs were checked by.
   Renderer(SfrenderOptions& o, ToolOutput& output, const AvailableMemoryProbe& memory, Stage& stage,
-           std::unique_ptr<render::GpuDevice>* sharedGpu = nullptr)
-      : o_(o), output_(output), memory_(memory), stage_(stage), sharedGpu_(sharedGpu) {}
+           std::unique_ptr<render::GpuDevice>* sharedGpu = nullptr,
+           const std::optional<fs::path>* planned = nullptr)
+      : o_(o),
+        output_(output),
+        memory_(memory),
+        stage_(stage),
+        sharedGpu_(sharedGpu),
+        planned_(planned) {}
 
   int run();
 
@@ -200,6 +210,7 @@ class Renderer {
   const AvailableMemoryProbe& memory_;
   Stage& stage_;
   std::unique_ptr<render::GpuDevice>* sharedGpu_;
+  const std::optional<fs::path>* planned_;
   render::RenderSettings settings_;
   SceneAndTarget job_;
 };
@@ -247,14 +258,10 @@ void Renderer::chooseTarget() {
     job_.toStdout = true;
   } else if (!o_.output.empty()) {
     job_.target = o_.output;
-  } else if (o_.input.empty()) {
-    job_.target = *job_.scene.outputFile;
-  } else if (job_.scene.outputFile) {
-    fs::path folder = isStandardStream(o_.input) ? fs::path() : fs::path(o_.input).parent_path();
-    job_.target = folder / *job_.scene.outputFile;
-    job_.fromOutputFile = true;
   } else {
-    job_.target = fs::path(o_.input).stem().string() + ".ppm";
+    ImageTarget target = defaultImageTarget(o_.input, job_.scene.outputFile);
+    job_.target = target.path;
+    job_.fromOutputFile = target.fromOutputFile;
   }
 }
 
@@ -277,7 +284,10 @@ std::optional<int> Renderer::targetRefusal() {
   const fs::path& target = job_.target;
   // Before the extension's check, so that an OUTPUT_FILE naming its own
   // instruction file is told so, not that .txt is no image format.
-  if (!o_.input.empty() && isSameFile(o_.input, target)) {
+  OutputPlan plan;
+  plan.addInput(o_.input);
+  plan.addOutput(target.string(), o_.input);
+  if (!o_.input.empty() && plan.firstClash()) {
     output_.error("the output '" + printableText(target.string()) +
                   "' is the input file; sfrender never writes over its input");
     return toInt(ExitCode::InvalidInput);
@@ -288,6 +298,13 @@ std::optional<int> Renderer::targetRefusal() {
     checkOutputFileFormat(job_.scene, scene::Severity::Error, diagnostics);
     DiagnosticPrinter(output_.err(), output_.diagnosticStyle(DiagnosticFormat::Short))
         .print(diagnostics);
+    return toInt(ExitCode::InvalidInput);
+  }
+  if (planned_ && *planned_ != target) {
+    // The file changed between the batch's look ahead and its render.
+    output_.error("'" + printableText(o_.input) + "' changed since the batch began: its image " +
+                      "would now go to '" + printableText(target.string()) + "'",
+                  "run the batch again");
     return toInt(ExitCode::InvalidInput);
   }
   if (std::optional<std::string> refusal = imageRefusal(target, o_.image)) {
@@ -495,6 +512,15 @@ int mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& stage) {
     output.error(printableText(*refusal));
     return toInt(ExitCode::Usage);
   }
+  OutputPlan plan;
+  for (const std::string& input : o.inputs) plan.addInput(input);
+  plan.addOutput(o.output, {});
+  if (std::optional<OutputClash> clash = plan.firstClash()) {
+    output.error("the output '" + printableText(o.output) + "' is the input file '" +
+                 printableText(plan.input(clash->other)) +
+                 "'; sfrender never writes over its input");
+    return toInt(ExitCode::InvalidInput);
+  }
   if (o.noClobber && pathExists(o.output)) {
     output.fileError(o.output, kNoClobberMessage);
     return toInt(ExitCode::IoError);
@@ -502,7 +528,7 @@ int mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& stage) {
   stage.set("merging " + std::to_string(o.inputs.size()) + " regions");
   std::vector<fs::path> files(o.inputs.begin(), o.inputs.end());
   std::string error;
-  std::optional<render::Image> image = mergeImageRegions(files, error);
+  std::optional<render::Image> image = mergeImageRegions(files, o.limits.maxPixels, error);
   if (!image) {
     output.error(printableText(error));
     return toInt(error.rfind("cannot read", 0) == 0 ? ExitCode::IoError : ExitCode::InvalidInput);
@@ -518,27 +544,62 @@ int mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& stage) {
   return toInt(ExitCode::Success);
 }
 
+// The image of each scene of a batch: -o's pattern expanded, or without
+// -o each scene's own (read ahead), checked together before the first
+// render (output_plan.h). Nothing, with the error told, when the batch
+// cannot go ahead: a usage error.
+std::optional<std::vector<std::optional<fs::path>>> batchTargets(const SfrenderOptions& o,
+                                                                 ToolOutput& output) {
+  std::string error;
+  std::vector<std::optional<fs::path>> targets;
+  if (!o.output.empty()) {
+    std::optional<std::vector<std::string>> expanded = batchOutputs(o.output, o.inputs, error);
+    if (!expanded) {
+      output.error(error);
+      return std::nullopt;
+    }
+    targets.assign(expanded->begin(), expanded->end());
+  } else if (std::optional<std::string> refusal = batchInputsRefusal(o.inputs)) {
+    output.error(*refusal);
+    return std::nullopt;
+  } else {
+    scene::ReadOptions read = o.read;
+    read.threads = static_cast<unsigned>(renderThreadCount(o.settings.threads));
+    targets = readAheadImageTargets(o.inputs, read);
+  }
+  OutputPlan plan;
+  for (const std::string& input : o.inputs) plan.addInput(input);
+  for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+    if (targets[i]) plan.addOutput(targets[i]->string(), o.inputs[i]);
+  }
+  if (std::optional<OutputClash> clash = plan.firstClash()) {
+    output.error(
+        plan.describe(*clash) + "; a batch writes each image once, and never over an input",
+        clash->overInput   ? "write the images to a folder of their own, such as -o "
+                             "'out/{stem}.png'"
+        : o.output.empty() ? "name the images with -o, such as -o '{dir}/{stem}.png'"
+                           : "use {dir} or {name} in -o");
+    return std::nullopt;
+  }
+  return targets;
+}
+
 // Several scenes: each rendered as if alone, the batch going on past one
 // that fails, then the summary; the status is the first failure's.
 int renderBatch(const SfrenderOptions& o, ToolOutput& output,
                 const AvailableMemoryProbe& availableMemory, Stage& stage) {
-  std::vector<std::string> outputs(o.inputs.size());
-  if (!o.output.empty()) {
-    std::string error;
-    std::optional<std::vector<std::string>> expanded = batchOutputs(o.output, o.inputs, error);
-    if (!expanded) {
-      output.error(error);
-      return toInt(ExitCode::Usage);
-    }
-    outputs = *expanded;
-  }
+  std::optional<std::vector<std::optional<fs::path>>> targets = batchTargets(o, output);
+  if (!targets) return toInt(ExitCode::Usage);
   int rendered = 0, status = toInt(ExitCode::Success);
   std::unique_ptr<render::GpuDevice> gpu;
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
     SfrenderOptions one = o;
     one.input = o.inputs[i];
-    one.output = outputs[i];
-    int result = Renderer(one, output, availableMemory, stage, &gpu).run();
+    // With -o each image is named; without, each scene's own is checked
+    // against what was read ahead.
+    if (!o.output.empty()) one.output = (*targets)[i]->string();
+    const std::optional<fs::path>* planned = o.output.empty() ? &(*targets)[i] : nullptr;
+    int result = Renderer(one, output, availableMemory, stage, &gpu, planned).run();
     if (result == toInt(ExitCode::Success)) {
       ++rendered;
     } else if (status == toInt(ExitCode::Success)) {
