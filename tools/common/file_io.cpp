@@ -386,6 +386,16 @@ bool checkCanWrite(const fs::path& target, bool keepExtension, std::uint64_t byt
   return true;  // the probe's temporary goes with it
 }
 
+std::optional<std::string> regularFileProblem(const fs::path& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) {
+    return errno == ELOOP ? std::string(kLinkLoop) : std::string(std::strerror(errno));
+  }
+  if (S_ISDIR(info.st_mode)) return "it is a directory";
+  if (!S_ISREG(info.st_mode)) return "it is " + fileKind(info.st_mode) + ", not a regular file";
+  return std::nullopt;
+}
+
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
   std::error_code ec;
   return std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec) &&

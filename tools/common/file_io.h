@@ -111,6 +111,13 @@ inline constexpr const char* kNoClobberMessage = "the file exists, and --no-clob
 bool checkCanWrite(const std::filesystem::path& target, bool keepExtension, std::uint64_t bytes,
                    std::string& error);
 
+// Why `path` cannot be read as a file: it does not exist, or it (the end of
+// its links) is a folder, a device, a pipe or a socket, which could never
+// end (/dev/zero) or block (a pipe) a reader; nothing when it is a regular
+// file. The rule of every file a tool reads by a name it was given, as the
+// glTF reader's for a buffer's file.
+std::optional<std::string> regularFileProblem(const std::filesystem::path& path);
+
 // True when both paths name one existing file (through links too).
 bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 

@@ -288,6 +288,57 @@ bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const 
   return true;
 }
 
+// Why a region read back cannot be merged within `maxPixels`, as a sentence
+// after the file's name, or nothing. In 64-bit arithmetic: a window's
+// corner plus its size may pass the largest int.
+std::optional<std::string> regionRefusal(const SfrenderImageRegion& r, std::int64_t maxPixels) {
+  if (r.channels < 3 || r.channels > 4) {
+    return " holds " + std::to_string(r.channels) +
+           " channels; regions to merge hold 3 (RGB) or 4 (RGBA), as sfrender writes them";
+  }
+  auto window = [](std::int64_t x, std::int64_t y, std::int64_t width, std::int64_t height) {
+    return std::to_string(width) + "x" + std::to_string(height) + " at " + std::to_string(x) + "," +
+           std::to_string(y);
+  };
+  if (r.width <= 0 || r.height <= 0 || r.fullWidth <= 0 || r.fullHeight <= 0) {
+    return " has an empty window (pixels " + window(r.x, r.y, r.width, r.height) + ", image " +
+           window(r.fullX, r.fullY, r.fullWidth, r.fullHeight) + ")";
+  }
+  std::int64_t pixels = std::int64_t{r.fullWidth} * r.fullHeight;
+  if (pixels > maxPixels) {
+    return " is a region of a " + std::to_string(r.fullWidth) + "x" + std::to_string(r.fullHeight) +
+           " image, " + std::to_string(pixels) + " pixels, more than the limit of " +
+           std::to_string(maxPixels) + "; raise it with --max-pixels";
+  }
+  if (r.x < r.fullX || r.y < r.fullY ||
+      std::int64_t{r.x} + r.width > std::int64_t{r.fullX} + r.fullWidth ||
+      std::int64_t{r.y} + r.height > std::int64_t{r.fullY} + r.fullHeight) {
+    return "'s pixels (" + window(r.x, r.y, r.width, r.height) + ") reach outside its image (" +
+           window(r.fullX, r.fullY, r.fullWidth, r.fullHeight) + ")";
+  }
+  return std::nullopt;
+}
+
+// The first value of `file` that is not finite, with its pixel in the
+// display window and its channel, or nothing.
+std::optional<std::string> nonFiniteValue(const ImageRegionFile& file) {
+  for (std::size_t i = 0; i < file.rgb.size(); ++i) {
+    float v = file.rgb[i];
+    if (std::isfinite(v)) continue;
+    const SfrenderImageRegion& r = file.region;
+    std::size_t pixel = i / 3;
+    std::int64_t x = std::int64_t{r.x} - r.fullX + static_cast<std::int64_t>(pixel % r.width);
+    std::int64_t y = std::int64_t{r.y} - r.fullY + static_cast<std::int64_t>(pixel / r.width);
+    std::string channel(1, "RGB"[i % 3]);
+    return std::string(std::isnan(v) ? "nan"
+                       : v > 0       ? "inf"
+                                     : "-inf") +
+           " at pixel " + std::to_string(x) + "," + std::to_string(y) + " (its " + channel +
+           " channel)";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::vector<ImageFormat> writableImageFormats() {
@@ -414,23 +465,40 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
          file.commit(error, replace);
 }
 
-bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file, std::string& error) {
+bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file,
+                     std::int64_t maxPixels, std::string& error) {
   std::optional<OiioModule> oiio = loadOiio(error);
   if (!oiio) return false;
+  return readImageRegionWith(oiio->read, path, file, maxPixels, error);
+}
+
+bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& path,
+                         ImageRegionFile& file, std::int64_t maxPixels, std::string& error) {
+  std::string name = "'" + path.string() + "'";
+  // Before OpenImageIO opens it: /dev/zero would be read for ever, a pipe
+  // block.
+  if (std::optional<std::string> problem = regularFileProblem(path)) {
+    error = "cannot read " + name + ": " + *problem;
+    return false;
+  }
   char message[512] = "";
-  if (!oiio->read(path.c_str(), &file.region, nullptr, 0, message, sizeof message)) {
-    error = message;
+  if (!read(path.c_str(), &file.region, nullptr, 0, message, sizeof message)) {
+    error = "cannot read " + name + ": " + message;
+    return false;
+  }
+  if (std::optional<std::string> refusal = regionRefusal(file.region, maxPixels)) {
+    error = name + *refusal;
     return false;
   }
   const SfrenderImageRegion& r = file.region;
-  if (r.width <= 0 || r.height <= 0 || r.channels < 3) {
-    error = "not an RGB image";
+  file.rgb.assign(std::size_t{3} * static_cast<std::size_t>(r.width) * r.height, 0.0f);
+  if (!read(path.c_str(), &file.region, file.rgb.data(), file.rgb.size(), message,
+            sizeof message)) {
+    error = "cannot read " + name + ": " + message;
     return false;
   }
-  file.rgb.assign(std::size_t{3} * static_cast<std::size_t>(r.width) * r.height, 0.0f);
-  if (!oiio->read(path.c_str(), &file.region, file.rgb.data(), file.rgb.size(), message,
-                  sizeof message)) {
-    error = message;
+  if (std::optional<std::string> value = nonFiniteValue(file)) {
+    error = name + " holds " + *value + "; a render writes finite values only";
     return false;
   }
   return true;

@@ -75,9 +75,21 @@ struct ImageRegionFile {
   std::vector<float> rgb;
 };
 
-// Reads the image at `path` through OpenImageIO's module; false with a
-// message in `error` when it cannot.
-bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file, std::string& error);
+// Reads the image at `path` through OpenImageIO's module as a region to
+// merge, bounded as a render is: only a regular file is opened; its windows
+// and channels are checked, in arithmetic that cannot overflow, before a
+// pixel is allocated (3 or 4 channels, the data window inside the display
+// window, which holds at most `maxPixels` pixels); and every value read must
+// be finite, as every value a render writes is. False with the message in
+// `error`: "cannot read 'PATH': ..." when the file could not be read, "'PATH'
+// ..." when it holds what cannot be merged.
+bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file,
+                     std::int64_t maxPixels, std::string& error);
+
+// The same through `read`, the module's reader (oiio_module.h), for a
+// program that links the module's code in (the fuzz target).
+bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& path,
+                         ImageRegionFile& file, std::int64_t maxPixels, std::string& error);
 
 // The linear value of a display value: the sRGB decoding (IEC 61966-2-1),
 // extended past [0, 1] as in scRGB (IEC 61966-2-2) and extended sRGB: the

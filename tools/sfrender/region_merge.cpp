@@ -89,7 +89,7 @@ float displayFromLinear(float linear) {
 }
 
 std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
-                                               std::string& error) {
+                                               std::int64_t maxPixels, std::string& error) {
   if (files.empty()) {
     error = "no regions to merge";
     return std::nullopt;
@@ -98,13 +98,11 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
   std::vector<float> linear;
   std::vector<unsigned char> filled;
   SfrenderImageRegion display{};
-  for (const std::filesystem::path& path : files) {
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::filesystem::path& path = files[i];
     std::string name = "'" + path.string() + "'";
     ImageRegionFile file;
-    if (!readImageRegion(path, file, error)) {
-      error = "cannot read " + name + ": " + error;
-      return std::nullopt;
-    }
+    if (!readImageRegion(path, file, maxPixels, error)) return std::nullopt;
     const SfrenderImageRegion& r = file.region;
     if (!r.floating || r.bits != 32) {
       error = name + " holds " + std::to_string(r.bits) + "-bit " +
@@ -113,7 +111,9 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
               "(render them with -o NAME.exr and no --bits)";
       return std::nullopt;
     }
-    if (path == files.front()) {
+    // By place, not by name: a file named twice is two regions, which
+    // agree where they overlap.
+    if (i == 0) {
       display = r;
       whole.width = r.fullWidth;
       whole.height = r.fullHeight;
@@ -126,13 +126,6 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
           name + " is a region of a " + windowText(r.fullX, r.fullY, r.fullWidth, r.fullHeight) +
           " image, '" + files.front().string() + "' of a " +
           windowText(display.fullX, display.fullY, display.fullWidth, display.fullHeight) + " one";
-      return std::nullopt;
-    }
-    if (r.x < r.fullX || r.y < r.fullY || r.x + r.width > r.fullX + r.fullWidth ||
-        r.y + r.height > r.fullY + r.fullHeight) {
-      error = name + "'s pixels (" + windowText(r.x, r.y, r.width, r.height) +
-              ") reach outside its image (" +
-              windowText(r.fullX, r.fullY, r.fullWidth, r.fullHeight) + ")";
       return std::nullopt;
     }
     if (!placeRegion(file, name, whole, linear, filled, error)) return std::nullopt;

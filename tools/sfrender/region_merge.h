@@ -4,6 +4,7 @@
 // pixels that one render of it gives (docs/SCALING.md).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -26,12 +27,14 @@ namespace tools {
 // those two floats (docs/SCALING.md, "Exactness").
 float displayFromLinear(float linear);
 
-// The whole image from its regions, read from `files`: every file must have
-// the same display window, hold 32-bit floating-point RGB (the values
-// exactly as rendered), and together they must cover the display window;
-// where two overlap, they must agree. Nothing, with why in `error`, when
-// they do not.
+// The whole image from its regions, read from `files` (readImageRegion,
+// image_file.h: regular files only, the display window at most `maxPixels`,
+// --max-pixels, as for a render): every file must have the same display
+// window, hold 32-bit floating-point RGB (the values exactly as rendered),
+// and together they must cover the display window; where two overlap (a file
+// named twice too), they must agree. Nothing, with why in `error`, when they
+// do not.
 std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
-                                               std::string& error);
+                                               std::int64_t maxPixels, std::string& error);
 
 }  // namespace tools

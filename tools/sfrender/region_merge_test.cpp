@@ -1,20 +1,28 @@
 #include "tools/sfrender/region_merge.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 
+#include "tools/common/file_io.h"
 #include "tools/sfrender/image_file.h"
 
 namespace tools {
 namespace {
 
 namespace fs = std::filesystem;
+
+// sfrender's default --max-pixels.
+constexpr std::int64_t kLimit = std::int64_t{8192} * 8192;
 
 // The smallest float whose level (quantize) is `level`.
 template <typename Quantize>
@@ -121,15 +129,15 @@ TEST_F(MergeRegions, GivesTheWholeImageInEveryFormat) {
                                  write(rows(whole, 0, 2), "a.exr"),
                                  write(rows(whole, 2, 3), "b.exr")};
   std::string error;
-  std::optional<render::Image> merged = mergeImageRegions(parts, error);
+  std::optional<render::Image> merged = mergeImageRegions(parts, kLimit, error);
   ASSERT_TRUE(merged) << error;
   ASSERT_EQ(merged->width, 7);
   ASSERT_EQ(merged->height, 5);
   EXPECT_EQ(ppmImageBytes(*merged), ppmImageBytes(whole));
   EXPECT_EQ(ppmImageBytes(*merged, {16, false}), ppmImageBytes(whole, {16, false}));
   ImageRegionFile once, again;
-  ASSERT_TRUE(readImageRegion(write(whole, "whole.exr"), once, error)) << error;
-  ASSERT_TRUE(readImageRegion(write(*merged, "merged.exr"), again, error)) << error;
+  ASSERT_TRUE(readImageRegion(write(whole, "whole.exr"), once, kLimit, error)) << error;
+  ASSERT_TRUE(readImageRegion(write(*merged, "merged.exr"), again, kLimit, error)) << error;
   EXPECT_EQ(once.rgb, again.rgb);
   EXPECT_EQ(again.region.width, 7);
   EXPECT_EQ(again.region.fullHeight, 5);
@@ -138,7 +146,8 @@ TEST_F(MergeRegions, GivesTheWholeImageInEveryFormat) {
 TEST_F(MergeRegions, WritesTheDataAndDisplayWindows) {
   ImageRegionFile file;
   std::string error;
-  ASSERT_TRUE(readImageRegion(write(rows(gradient(7, 5), 2, 4), "r.exr"), file, error)) << error;
+  ASSERT_TRUE(readImageRegion(write(rows(gradient(7, 5), 2, 4), "r.exr"), file, kLimit, error))
+      << error;
   EXPECT_EQ(file.region.x, 0);
   EXPECT_EQ(file.region.y, 2);
   EXPECT_EQ(file.region.width, 7);
@@ -151,15 +160,136 @@ TEST_F(MergeRegions, RefusesAGapAMismatchAndHalves) {
   render::Image whole = gradient(7, 5);
   std::string error;
   EXPECT_FALSE(mergeImageRegions(
-      {write(rows(whole, 0, 2), "a.exr"), write(rows(whole, 3, 5), "c.exr")}, error));
+      {write(rows(whole, 0, 2), "a.exr"), write(rows(whole, 3, 5), "c.exr")}, kLimit, error));
   EXPECT_EQ(error, "no region holds pixel 0,2 of the 7x5 image");
-  EXPECT_FALSE(
-      mergeImageRegions({folder_ / "a.exr", write(rows(gradient(7, 6), 2, 6), "d.exr")}, error));
+  EXPECT_FALSE(mergeImageRegions({folder_ / "a.exr", write(rows(gradient(7, 6), 2, 6), "d.exr")},
+                                 kLimit, error));
   EXPECT_NE(error.find("is a region of a 7x6 at 0,0 image"), std::string::npos) << error;
   std::string halfName = "h.exr";
   ASSERT_TRUE(writeImageFile(rows(whole, 2, 5), folder_ / halfName, error, {16, false}));
-  EXPECT_FALSE(mergeImageRegions({folder_ / "a.exr", folder_ / halfName}, error));
+  EXPECT_FALSE(mergeImageRegions({folder_ / "a.exr", folder_ / halfName}, kLimit, error));
   EXPECT_NE(error.find("holds 16-bit floating-point values"), std::string::npos) << error;
+}
+
+// A float EXR with the windows and values given, as a hostile program
+// would write it: OpenImageIO directly.
+fs::path writeExr(const fs::path& path, OIIO::ImageSpec spec, const std::vector<float>& values) {
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path.string());
+  EXPECT_TRUE(out && out->open(path.string(), spec));
+  EXPECT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, values.data()));
+  EXPECT_TRUE(out->close());
+  return path;
+}
+
+OIIO::ImageSpec windows(int x, int y, int width, int height, int fullWidth, int fullHeight,
+                        int channels = 3) {
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+  spec.x = x;
+  spec.y = y;
+  spec.full_width = fullWidth;
+  spec.full_height = fullHeight;
+  return spec;
+}
+
+// Sets an EXR header's box2i attribute `name` (dataWindow, displayWindow):
+// the windows no writer would write, as a hostile file holds them.
+fs::path withBox(const fs::path& path, const std::string& name, std::int32_t xMin,
+                 std::int32_t yMin, std::int32_t xMax, std::int32_t yMax) {
+  std::string error;
+  std::string bytes = readWholeFile(path, error).value_or("");
+  std::string key = name + std::string(1, '\0') + "box2i" + std::string(1, '\0');
+  std::size_t at = bytes.find(key);
+  EXPECT_NE(at, std::string::npos) << name;
+  std::int32_t box[4] = {xMin, yMin, xMax, yMax};  // little-endian, as EXR's
+  std::memcpy(&bytes[at + key.size() + 4], box, sizeof box);
+  EXPECT_TRUE(writeFileAtomically(path, bytes, error)) << error;
+  return path;
+}
+
+// A tile's display window is the image the merge allocates: bounded by the
+// limit of a render's pixels, checked before any allocation, and so are the
+// data window and the channels.
+TEST_F(MergeRegions, BoundsWhatATileAsksForBeforeAllocating) {
+  std::string error;
+  render::Image one = gradient(1, 1);
+  fs::path huge = withBox(write(one, "huge.exr"), "displayWindow", -(1 << 29), 0, (1 << 29) - 1, 0);
+  EXPECT_FALSE(mergeImageRegions({huge}, kLimit, error));
+  EXPECT_EQ(error, "'" + huge.string() +
+                       "' is a region of a 1073741824x1 image, 1073741824 pixels, more than the "
+                       "limit of 67108864; raise it with --max-pixels");
+  fs::path wide =
+      withBox(write(one, "wide.exr"), "displayWindow", 0, 0, (1 << 16) - 1, (1 << 14) - 1);
+  EXPECT_FALSE(mergeImageRegions({wide}, kLimit, error));
+  EXPECT_NE(error.find("more than the limit"), std::string::npos) << error;
+  // The same limit as a render's, raised by the same flag.
+  render::Image whole = gradient(7, 5);
+  fs::path a = write(rows(whole, 0, 5), "a.exr");
+  EXPECT_FALSE(mergeImageRegions({a}, 34, error));
+  EXPECT_NE(error.find("7x5 image, 35 pixels, more than the limit of 34"), std::string::npos);
+  EXPECT_TRUE(mergeImageRegions({a}, 35, error)) << error;
+  // Data windows past the display window (OpenEXR itself refuses windows
+  // near the edges of an int).
+  fs::path outside = withBox(write(one, "outside.exr"), "dataWindow", 1000, 0, 1000, 0);
+  EXPECT_FALSE(mergeImageRegions({outside}, kLimit, error));
+  EXPECT_NE(error.find("reach outside its image"), std::string::npos) << error;
+  fs::path below = withBox(write(one, "below.exr"), "dataWindow", 0, -5, 0, -5);
+  EXPECT_FALSE(mergeImageRegions({below}, kLimit, error));
+  EXPECT_NE(error.find("reach outside its image"), std::string::npos) << error;
+  fs::path five =
+      writeExr(folder_ / "five.exr", windows(0, 0, 2, 1, 2, 1, 5), std::vector<float>(10, 0.5f));
+  EXPECT_FALSE(mergeImageRegions({five}, kLimit, error));
+  EXPECT_NE(error.find("holds 5 channels"), std::string::npos) << error;
+}
+
+// Only regular files: a device or a pipe is refused before it is opened,
+// at once (reading /dev/zero would never end, a pipe would block).
+TEST_F(MergeRegions, ReadsRegularFilesOnly) {
+  std::string error;
+  EXPECT_FALSE(mergeImageRegions({"/dev/zero"}, kLimit, error));
+  EXPECT_EQ(error, "cannot read '/dev/zero': it is a character device, not a regular file");
+  fs::path pipe = folder_ / "pipe.exr";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  EXPECT_FALSE(mergeImageRegions({pipe}, kLimit, error));
+  EXPECT_EQ(error, "cannot read '" + pipe.string() + "': it is a pipe, not a regular file");
+  EXPECT_FALSE(mergeImageRegions({folder_}, kLimit, error));
+  EXPECT_EQ(error, "cannot read '" + folder_.string() + "': it is a directory");
+}
+
+// A file named twice is two regions that agree: the image, whichever
+// file comes twice and wherever.
+TEST_F(MergeRegions, TakesATileNamedTwice) {
+  render::Image whole = gradient(7, 5);
+  fs::path top = write(rows(whole, 0, 2), "top.exr");
+  fs::path bottom = write(rows(whole, 2, 5), "bottom.exr");
+  std::string error;
+  for (const std::vector<fs::path>& files : std::vector<std::vector<fs::path>>{
+           {top, bottom, top}, {top, top, bottom}, {bottom, top, bottom, bottom}}) {
+    std::optional<render::Image> merged = mergeImageRegions(files, kLimit, error);
+    ASSERT_TRUE(merged) << error;
+    EXPECT_EQ(ppmImageBytes(*merged), ppmImageBytes(whole));
+  }
+}
+
+// No render writes a value that is not finite, so no tile may hold one:
+// refused, naming the file and the pixel.
+TEST_F(MergeRegions, RefusesValuesThatAreNotFinite) {
+  std::string error;
+  render::Image whole = gradient(7, 5);
+  fs::path top = write(rows(whole, 0, 2), "top.exr");
+  const float kNan = std::numeric_limits<float>::quiet_NaN();
+  const float kInf = std::numeric_limits<float>::infinity();
+  struct Case {
+    float value;
+    std::string said;
+  };
+  for (const Case& c : {Case{kNan, "nan"}, Case{kInf, "inf"}, Case{-kInf, "-inf"}}) {
+    std::vector<float> values(7 * 3 * 3, 0.25f);
+    values[3 * (7 * 1 + 4) + 2] = c.value;
+    fs::path bottom = writeExr(folder_ / "bottom.exr", windows(0, 2, 7, 3, 7, 5), values);
+    EXPECT_FALSE(mergeImageRegions({top, bottom}, kLimit, error));
+    EXPECT_EQ(error, "'" + bottom.string() + "' holds " + c.said +
+                         " at pixel 4,3 (its B channel); a render writes finite values only");
+  }
 }
 
 }  // namespace
