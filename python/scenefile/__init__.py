@@ -251,11 +251,19 @@ def _output_paths(target: str, format: str, external_buffers: bool) -> Tuple[str
     gltf_file = os.path.realpath(target) if os.path.islink(target) else target
     name = os.path.splitext(os.path.basename(gltf_file))[0] + ".bin"
     buffer = os.path.join(os.path.dirname(gltf_file), name)
-    if os.path.basename(gltf_file) == name or _core.same_file(os.fsencode(buffer),
-                                                              os.fsencode(target)):
+    if os.path.basename(gltf_file) == name:
         raise ValueError(f"the buffer file {buffer!r} is the output itself; name the output "
                          "NAME.gltf")
     return target, buffer
+
+
+def _output_clash(inputs: Sequence[str], made_from: str, target: str, buffer: str
+                  ) -> Optional[str]:
+    """The tools' check, by file identity, that no output is an input and no
+    two outputs are one file: None, or the clash in their words."""
+    outputs = [(os.fsencode(buffer), os.fsencode(made_from), "its buffer")] if buffer else []
+    outputs.append((os.fsencode(target), os.fsencode(made_from), ""))
+    return _core.output_clash([os.fsencode(path) for path in inputs], outputs)
 
 
 def _output_file(scene: Scene, path: str, format: str, options: Dict[str, Any]) -> Optional[str]:
@@ -324,6 +332,9 @@ def write(scene: Scene, path: PathLike, format: Optional[str] = None, no_loss: b
     checked = _options(dict(options, no_loss=no_loss), _WRITE_OPTIONS, "write")
     fmt = _format_for(target, format)
     _, buffer = _output_paths(target, fmt, checked.get("external_buffers", False))
+    clash = _output_clash([], scene.source or "the scene", target, buffer)
+    if clash is not None:
+        raise ValueError(clash)
     main, sidecar, losses = _converted(scene, target, buffer, fmt, checked)
     # In this order: a .gltf's buffer before the file that names it.
     _write_files([(buffer, sidecar), (target, main)] if buffer else [(target, main)])
@@ -349,11 +360,11 @@ def convert(src: PathLike, dst: PathLike, format: Optional[str] = None,
         read_options["width"], read_options["height"] = checked["width"], checked["height"]
     write_options = {k: v for k, v in checked.items() if k in _WRITE_OPTIONS}
     fmt = _format_for(target, format)
-    for output, what in zip(_output_paths(target, fmt, checked.get("external_buffers", False)),
-                            ("output", "buffer file")):
-        if output and _core.same_file(os.fsencode(source), os.fsencode(output)):
-            raise ValueError(f"the {what} {output!r} is the input file; convert never writes "
-                             "over its input")
+    _, buffer = _output_paths(target, fmt, checked.get("external_buffers", False))
+    clash = _output_clash([source], source, target, buffer)
+    if clash is not None:
+        raise ValueError(f"an output is the input file: {clash}; convert never writes over its "
+                         "input")
     scene = _read(source, None, read_options)
     losses = write(scene, target, fmt, **write_options)
     return scene.diagnostics + losses

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "tools/common/file_io.h"
+#include "tools/common/output_plan.h"
 
 namespace scenefile_python {
 
@@ -13,7 +14,7 @@ std::optional<std::pair<py::bytes, std::string>> writeFiles(const py::list& file
   std::vector<tools::FileToWrite> toWrite;
   for (py::handle item : files) {
     auto pair = py::cast<py::tuple>(item);
-    auto path = py::cast<std::string>(py::bytes(pair[0]));
+    auto path = py::cast<std::string>(pair[0]);
     py::bytes data = pair[1];
     char* buffer = nullptr;
     py::ssize_t size = 0;
@@ -31,8 +32,17 @@ std::optional<std::pair<py::bytes, std::string>> writeFiles(const py::list& file
   return std::make_pair(py::bytes(failed.string()), error);
 }
 
-bool sameFile(const py::bytes& a, const py::bytes& b) {
-  return tools::isSameFile(std::string(a), std::string(b));
+std::optional<std::string> outputClash(const py::list& inputs, const py::list& outputs) {
+  tools::OutputPlan plan;
+  for (py::handle input : inputs) plan.addInput(py::cast<std::string>(input));
+  for (py::handle item : outputs) {
+    auto output = py::cast<py::tuple>(item);
+    plan.addOutput(py::cast<std::string>(output[0]), py::cast<std::string>(output[1]),
+                   py::cast<std::string>(output[2]));
+  }
+  std::optional<tools::OutputClash> clash = plan.firstClash();
+  if (!clash) return std::nullopt;
+  return plan.describe(*clash);
 }
 
 }  // namespace scenefile_python

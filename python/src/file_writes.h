@@ -20,8 +20,11 @@ namespace py = pybind11;
 // written; else (path, reason) of the one that could not be, and none is.
 std::optional<std::pair<py::bytes, std::string>> writeFiles(const py::list& files);
 
-// same_file(a, b): whether both paths name one existing file, through links,
-// hard links and any spelling.
-bool sameFile(const py::bytes& a, const py::bytes& b);
+// output_clash(inputs, outputs): the tools' check that no output is an
+// input and no two outputs are one file, by file identity
+// (tools/common/output_plan.h). `inputs` are bytes paths, `outputs` (bytes
+// path, the input it is made from, its role: "" or "its buffer"). None, or
+// the first clash in the tools' words.
+std::optional<std::string> outputClash(const py::list& inputs, const py::list& outputs);
 
 }  // namespace scenefile_python

@@ -340,7 +340,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("check_output_file_name", &sp::checkOutputFileName, py::arg("name"));
   m.def("check_view", &sp::checkView, py::arg("fov"), py::arg("aspect_ratio"));
   m.def("write_files", &sp::writeFiles, py::arg("files"));
-  m.def("same_file", &sp::sameFile, py::arg("a"), py::arg("b"));
+  m.def("output_clash", &sp::outputClash, py::arg("inputs"), py::arg("outputs"));
   m.def("camera_from_look_at", &sp::cameraFromLookAt, py::arg("location"), py::arg("look_at"));
   m.def("fit_primitive", &sp::fitPrimitive, py::arg("positions"), py::arg("indices"),
         py::arg("tolerance"));

@@ -143,3 +143,12 @@ def test_a_long_legal_name_is_written(scene, tmp_path, length):
     scenefile.write(scene, tmp_path / name)
     assert scenefile.read(tmp_path / name) == scene
     assert entries(tmp_path) == [name]
+
+
+def test_a_buffer_that_is_the_gltf_itself_by_a_link_is_refused(scene, tmp_path):
+    # Neither file is there yet: the tools' identity check knows a file not
+    # there by its folder and name, through the link.
+    os.symlink("out.gltf", tmp_path / "out.bin")
+    with pytest.raises(ValueError, match="its buffer.*same file"):
+        scenefile.write(scene, tmp_path / "out.gltf", external_buffers=True)
+    assert entries(tmp_path) == ["out.bin"]
