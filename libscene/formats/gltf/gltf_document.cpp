@@ -35,6 +35,7 @@ const std::map<std::string, std::set<std::string>> kReadExtensions = {
     {"KHR_materials_transmission", {"transmissionFactor"}},
     {"KHR_materials_specular", {"specularFactor"}},
     {"KHR_materials_emissive_strength", {"emissiveStrength"}},
+    {"EXT_mesh_gpu_instancing", {"attributes"}},
 };
 
 // The keys of our own extras (gltf_writer.cpp) that the reader reads, of
@@ -42,6 +43,7 @@ const std::map<std::string, std::set<std::string>> kReadExtensions = {
 const std::set<std::string> kOwnExtrasKeys = {
     "record",  "colour",   "matrix",    "lookAt",       "transforms",   "view", "ambient",
     "diffuse", "specular", "shininess", "reflectivity", "transparency", "ri",   "referenceDistance",
+    "object",  "objects",
 };
 
 // A JSON pointer's reference token: '~' and '/' escaped (RFC 6901).
@@ -104,6 +106,11 @@ class Checker {
       if (light && light->is_object()) {
         std::string where = at + "/extensions/KHR_lights_punctual";
         required(*light, "light", where, "light", lights);
+      }
+      const Json* instancing = member(n, "extensions", "EXT_mesh_gpu_instancing");
+      if (instancing && instancing->is_object() && instancing->contains("attributes")) {
+        accessorMap((*instancing)["attributes"],
+                    at + "/extensions/EXT_mesh_gpu_instancing/attributes");
       }
     });
     each("meshes", [&](const Json& m, const std::string& at) { mesh(m, at); });
@@ -670,6 +677,7 @@ OwnExtras trimForTinygltf(Json& doc) {
   };
   take("nodes", own.nodes);
   take("materials", own.materials);
+  take("meshes", own.meshes);
   // Depth is bounded (kMaxJsonDepth) before the document is parsed, so
   // this recursion is too.
   auto trim = [](auto& self, Json& j) -> void {

@@ -54,11 +54,12 @@ std::vector<DocumentProblem> checkDocument(const nlohmann::json& doc, bool noLos
 void reportProblems(const std::vector<DocumentProblem>& problems, std::string_view text,
                     std::size_t offset, DiagnosticList& out);
 
-// What of `extras` the reader uses: the `sf` object of each node and each
-// material, as JSON text ("" when there is none).
+// What of `extras` the reader uses: the `sf` object of each node, material
+// and mesh, as JSON text ("" when there is none).
 struct OwnExtras {
   std::vector<std::string> nodes;
   std::vector<std::string> materials;
+  std::vector<std::string> meshes;
 };
 
 // Takes our own extras out of the document, removes every other `extras`

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "libscene/formats/gltf/gltf_mapping.h"
@@ -110,10 +111,12 @@ const Json* sfExtras(const Json& extras) {
   return it != extras.end() && it->is_object() ? &*it : nullptr;
 }
 
-std::optional<RecordExtras> recordExtras(const std::string& extrasText) {
-  Json extras = parseOrNull(extrasText);
-  const Json* sf = sfExtras(extras);
-  if (!sf || !sf->contains("record") || !(*sf)["record"].is_string()) return std::nullopt;
+namespace {
+
+std::optional<RecordExtras> recordOf(const Json* sf) {
+  if (!sf || !sf->is_object() || !sf->contains("record") || !(*sf)["record"].is_string()) {
+    return std::nullopt;
+  }
   RecordExtras out;
   out.record = (*sf)["record"].get<std::string>();
   std::optional<glm::dmat4> m = sf->contains("matrix") ? rows((*sf)["matrix"]) : std::nullopt;
@@ -144,6 +147,30 @@ std::optional<RecordExtras> recordExtras(const std::string& extrasText) {
     out.transforms = transformsFromJson((*sf)["transforms"]);
     // The operations are kept only while they still make the matrix.
     if (out.transforms && composeTransform(*out.transforms) != out.matrix) out.transforms.reset();
+  }
+  if (sf->contains("object")) {
+    const Json& object = (*sf)["object"];
+    if (!object.is_number_unsigned() || object.get<std::uint64_t>() == 0) return std::nullopt;
+    out.object = object.get<std::uint64_t>();
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<RecordExtras> recordExtras(const std::string& extrasText) {
+  Json extras = parseOrNull(extrasText);
+  return recordOf(sfExtras(extras));
+}
+
+std::vector<RecordExtras> meshRecords(const std::string& extrasText) {
+  Json extras = parseOrNull(extrasText);
+  const Json* sf = sfExtras(extras);
+  std::vector<RecordExtras> out;
+  if (!sf || !sf->contains("objects") || !(*sf)["objects"].is_array()) return out;
+  for (const Json& entry : (*sf)["objects"]) {
+    std::optional<RecordExtras> record = recordOf(&entry);
+    if (record && objectKindFromName(record->record)) out.push_back(std::move(*record));
   }
   return out;
 }

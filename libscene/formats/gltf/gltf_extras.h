@@ -46,17 +46,28 @@ struct RecordExtras {
   // LIGHT: the distance at which the writer matched the glTF light to the
   // colour (gltf_light_units.h); files written before it have none.
   std::optional<double> referenceDistance;
+  // An object's number in the scene (1 for the first), by which the reader
+  // restores the scene's order; files written before it have none.
+  std::optional<std::size_t> object;
 };
 
 // The record of a node's extras (JSON text), when they hold a whole one;
 // `transforms` only while they still compose to the matrix.
 std::optional<RecordExtras> recordExtras(const std::string& extrasText);
+// The objects that a mesh's extras describe (`objects`): every object the
+// writer drew with the mesh, so that they are found again when a program
+// has replaced their nodes by instances of the mesh (EXT_mesh_gpu_instancing).
+std::vector<RecordExtras> meshRecords(const std::string& extrasText);
 // The material of a material's extras, when they hold every value.
 std::optional<Material> materialExtras(const std::string& extrasText);
 
 // The extras are believed only while they agree with the glTF values: a
 // difference above this (relative) means the file was edited elsewhere.
 inline constexpr double kExtrasAgreement = 1e-9;
+// An instance (EXT_mesh_gpu_instancing) stands for an object of its mesh's
+// extras when its matrix lies this close (instanceDistance): its
+// translation, rotation and scale are floats, rounded to about 6e-8.
+inline constexpr double kInstanceAgreement = 1e-6;
 
 // The extras (OwnExtras) of object `index`, "" when it has none.
 const std::string& ownExtras(const std::vector<std::string>& extras, int index);

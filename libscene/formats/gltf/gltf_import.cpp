@@ -1,5 +1,6 @@
 #include "libscene/formats/gltf/gltf_import.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/matrix.hpp>
@@ -67,6 +68,27 @@ void Importer::run() {
   walk(roots);
   if (c_.out.hasErrors()) return;
   camerasAndLights_.finish();
+  restoreObjectOrder();
+}
+
+// Objects read from our own extras carry their number in the scene: when
+// every object has one, and no two the same, they go back into that order,
+// which a program that moved nodes (instancing gathers a mesh's nodes into
+// one) has changed.
+void Importer::restoreObjectOrder() {
+  std::vector<Object>& objects = c_.scene.objects;
+  if (numbers_.size() != objects.size()) return;
+  std::vector<std::size_t> order(objects.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [this](std::size_t a, std::size_t b) { return numbers_[a] < numbers_[b]; });
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    if (numbers_[order[i]] == numbers_[order[i - 1]]) return;
+  }
+  std::vector<Object> sorted;
+  sorted.reserve(objects.size());
+  for (std::size_t i : order) sorted.push_back(std::move(objects[i]));
+  objects = std::move(sorted);
 }
 
 // --- Indices ----------------------------------------------------------------
@@ -186,7 +208,12 @@ void Importer::visit(int index, const glm::dmat4& world) {
   // A node holds at most one light, counted here, and one mesh, whose
   // objects are counted as they are added (roomForOne).
   if (nodeLight(c_.model, index) >= 0 && !roomForOne(index)) return;
-  if (std::optional<RecordExtras> extras = recordExtras(ownExtras(c_.own.nodes, index))) {
+  std::optional<std::vector<glm::dmat4>> instances = meshes_.instanceMatrices(index);
+  if (c_.out.hasErrors()) return;
+  std::optional<RecordExtras> extras = recordExtras(ownExtras(c_.own.nodes, index));
+  // Our writer never instances: a node that does is not the one its
+  // extras describe.
+  if (extras && !instances) {
     if (useExtras(index, world, *extras)) return;
     c_.out.note(DiagnosticCode::GltfExtrasStale, {},
                 nodeLabel(c_.model, index) + " no longer matches the " + extras->record +
@@ -196,7 +223,55 @@ void Importer::visit(int index, const glm::dmat4& world) {
   if (node.camera >= 0) camerasAndLights_.addCamera(index, world);
   int light = nodeLight(c_.model, index);
   if (light >= 0) camerasAndLights_.addLight(index, light, world);
-  if (node.mesh >= 0) addMeshObjects(index, world);
+  if (node.mesh < 0) return;
+  if (!instances) {
+    addMeshObjects(index, world);
+    return;
+  }
+  for (std::size_t i = 0; i < instances->size() && !c_.out.hasErrors() && !stopped_; ++i) {
+    addInstance(index, i, world * (*instances)[i]);
+  }
+}
+
+// One instance of a mesh (EXT_mesh_gpu_instancing), which stands where one
+// of the objects its extras describe stood, when the mesh is still their
+// kind's: then that object, exactly; else the mesh fitted like any other.
+void Importer::addInstance(int index, std::size_t instance, const glm::dmat4& world) {
+  int mesh = c_.model.nodes[index].mesh;
+  auto [cached, fresh] = meshRecords_.emplace(mesh, std::vector<RecordExtras>{});
+  if (fresh) cached->second = meshRecords(ownExtras(c_.own.meshes, mesh));
+  std::vector<RecordExtras>& records = cached->second;
+  auto best = records.end();
+  double nearest = kInstanceAgreement;
+  for (auto it = records.begin(); it != records.end(); ++it) {
+    double d = instanceDistance(withinFloatRange(it->matrix), world);
+    if (d <= nearest) {
+      nearest = d;
+      best = it;
+    }
+  }
+  if (best != records.end() && c_.model.meshes[mesh].primitives.size() == 1 &&
+      meshes_.holdsWrittenMesh(mesh, *objectKindFromName(best->record))) {
+    Object object;
+    object.kind = *objectKindFromName(best->record);
+    object.matrix = best->matrix;
+    object.transforms = best->transforms;
+    object.material =
+        materials_.material(c_.model.meshes[mesh].primitives[0].material, object.kind);
+    if (!roomForOne(index)) return;
+    c_.scene.objects.push_back(std::move(object));
+    if (best->object) numbers_.push_back(*best->object);
+    // Each object stands once.
+    records.erase(best);
+    return;
+  }
+  if (!records.empty()) {
+    c_.out.note(DiagnosticCode::GltfExtrasStale, {},
+                nodeLabel(c_.model, index) + " instance " + std::to_string(instance) +
+                    " matches none of the objects that its mesh's extras describe (the file was "
+                    "edited elsewhere): the instance is read as it is");
+  }
+  addMeshObjects(index, world);
 }
 
 // --- Records ----------------------------------------------------------------
@@ -218,7 +293,10 @@ bool Importer::useExtras(int index, const glm::dmat4& world, const RecordExtras&
   object.matrix = extras.matrix;
   object.transforms = extras.transforms;
   object.material = materials_.material(c_.model.meshes[node.mesh].primitives[0].material, kind);
-  if (roomForOne(index)) c_.scene.objects.push_back(std::move(object));
+  if (roomForOne(index)) {
+    c_.scene.objects.push_back(std::move(object));
+    if (extras.object) numbers_.push_back(*extras.object);
+  }
   return true;
 }
 

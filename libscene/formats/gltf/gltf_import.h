@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <glm/mat4x4.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,9 @@ class Importer {
   void visit(int node, const glm::dmat4& world);
   bool useExtras(int node, const glm::dmat4& world, const RecordExtras& extras);
   void addMeshObjects(int node, const glm::dmat4& world);
+  void addInstance(int node, std::size_t instance, const glm::dmat4& world);
   bool roomForOne(int node);
+  void restoreObjectOrder();
 
   ImportContext c_;
   CamerasAndLights camerasAndLights_;
@@ -47,6 +50,11 @@ class Importer {
   MeshReader meshes_;
   std::size_t maxObjects_;
   bool stopped_ = false;  // past maxObjects: the walk ends
+  // The number (RecordExtras::object) of each object read so far, while
+  // every one of them has one.
+  std::vector<std::size_t> numbers_;
+  // The objects of each instanced mesh's extras not yet found (meshRecords).
+  std::map<int, std::vector<RecordExtras>> meshRecords_;
 };
 
 }  // namespace scene::gltf

@@ -149,4 +149,25 @@ double matrixDistance(const glm::dmat4& a, const glm::dmat4& b) {
   return std::isfinite(distance) ? distance / largest : distance;
 }
 
+double instanceDistance(const glm::dmat4& a, const glm::dmat4& b) {
+  double whole = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 3; ++r) whole = std::max(whole, std::abs(a[c][r]));
+  }
+  double distance = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    double largest = 0.0;
+    double d = 0.0;
+    for (int r = 0; r < 3; ++r) {
+      largest = std::max(largest, std::abs(a[c][r]));
+      d = std::max(d, std::abs(a[c][r] - b[c][r]));
+    }
+    if (c == 3) largest = whole;
+    if (std::isnan(d) || (d > 0.0 && !(largest > 0.0)))
+      return std::numeric_limits<double>::infinity();
+    if (d > 0.0) distance = std::max(distance, d / largest);
+  }
+  return distance;
+}
+
 }  // namespace scene::gltf

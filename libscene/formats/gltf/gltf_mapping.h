@@ -84,4 +84,11 @@ std::vector<glm::dmat4> nodeChain(const glm::dmat4& m);
 // extras say.
 double matrixDistance(const glm::dmat4& a, const glm::dmat4& b);
 
+// The largest |a - b| of each axis column relative to that column's largest
+// entry in a, and of the translation relative to the largest entry of a:
+// how far an instance (EXT_mesh_gpu_instancing, whose translation, rotation
+// and scale are floats) lies from the object it stands for, each axis held
+// to its own rounding however the axes' lengths differ.
+double instanceDistance(const glm::dmat4& a, const glm::dmat4& b);
+
 }  // namespace scene::gltf

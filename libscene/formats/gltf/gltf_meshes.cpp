@@ -5,9 +5,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <glm/gtc/quaternion.hpp>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <set>
 
+#include "libscene/formats/gltf/gltf_document.h"
 #include "libscene/formats/gltf/gltf_extras.h"
 #include "libscene/text/number.h"
 
@@ -343,6 +346,78 @@ bool MeshReader::holdsWrittenMesh(int mesh, ObjectKind kind) {
   std::optional<Triangles> t = primitiveTriangles(mesh, 0);
   cached->second = t && isWrittenMesh(kind, t->positions, t->indices);
   return cached->second;
+}
+
+std::optional<std::vector<glm::dmat4>> MeshReader::instanceMatrices(int node) {
+  nlohmann::json ext = parseOrNull(c_.model.nodes[node].extensions_json_string);
+  if (!ext.is_object() || !ext.contains("EXT_mesh_gpu_instancing")) return std::nullopt;
+  const nlohmann::json& instancing = ext["EXT_mesh_gpu_instancing"];
+  std::vector<glm::dmat4> matrices;
+  if (!instancing.is_object() || !instancing.contains("attributes") ||
+      !instancing["attributes"].is_object()) {
+    return matrices;
+  }
+  std::string label = nodeLabel(c_.model, node) + " EXT_mesh_gpu_instancing";
+  // Each attribute's values, three or four to an instance.
+  std::map<std::string, std::vector<double>> values;
+  const std::pair<const char*, int> kinds[] = {{"TRANSLATION", TINYGLTF_TYPE_VEC3},
+                                               {"ROTATION", TINYGLTF_TYPE_VEC4},
+                                               {"SCALE", TINYGLTF_TYPE_VEC3}};
+  std::optional<std::size_t> count;
+  for (const auto& [name, type] : kinds) {
+    auto it = instancing["attributes"].find(name);
+    if (it == instancing["attributes"].end()) continue;
+    int index = it->get<int>();  // checked in the document (gltf_document.h)
+    const tinygltf::Accessor& a = c_.model.accessors[index];
+    if (a.type != type || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.normalized) {
+      c_.out.report(c_.loss, DiagnosticCode::GltfIgnored, {},
+                    label + ": accessor " + std::to_string(index) + " (" + name +
+                        ") is not of floats, which are read; the instances are skipped");
+      return matrices;
+    }
+    if (count && a.count != *count) {
+      c_.out.error(DiagnosticCode::GltfBadAccessor, {},
+                   label + ": the attributes hold different numbers of instances");
+      return matrices;
+    }
+    count = a.count;
+    bool skipped = false;
+    std::size_t read = 0;
+    std::optional<std::vector<double>> v =
+        readAccessor(index, type, {TINYGLTF_COMPONENT_TYPE_FLOAT}, name,
+                     std::numeric_limits<std::size_t>::max(), read, skipped);
+    if (!v) return matrices;
+    values[name] = std::move(*v);
+  }
+  for (std::size_t i = 0; count && i < *count; ++i) {
+    glm::dmat4 m(1.0);
+    if (values.count("ROTATION")) {
+      const double* q = &values["ROTATION"][4 * i];
+      glm::dquat r(q[3], q[0], q[1], q[2]);
+      double length = glm::length(r);
+      if (!(std::abs(length - 1.0) <= kUnitQuaternionTolerance)) {
+        c_.out.error(DiagnosticCode::GltfInvalid, {},
+                     label + ": the rotation of instance " + std::to_string(i) +
+                         " is not a unit quaternion (length " + formatNumber(length) + ")");
+        return std::vector<glm::dmat4>{};
+      }
+      m = glm::dmat4(glm::mat3_cast(r / length));
+    }
+    if (values.count("SCALE")) {
+      for (int c = 0; c < 3; ++c) m[c] *= values["SCALE"][3 * i + c];
+    }
+    if (values.count("TRANSLATION")) {
+      const double* t = &values["TRANSLATION"][3 * i];
+      m[3] = glm::dvec4(t[0], t[1], t[2], 1.0);
+    }
+    if (!finite(m)) {
+      c_.out.error(DiagnosticCode::ValueNotFinite, {},
+                   label + ": instance " + std::to_string(i) + " holds a value that is not finite");
+      return std::vector<glm::dmat4>{};
+    }
+    matrices.push_back(m);
+  }
+  return matrices;
 }
 
 }  // namespace scene::gltf

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <glm/mat4x4.hpp>
 #include <initializer_list>
 #include <map>
 #include <optional>
@@ -43,6 +44,13 @@ class MeshReader {
   // the mesh is still their kind's. Cached by accessors, which the writer
   // shares among a kind's meshes.
   bool holdsWrittenMesh(int mesh, ObjectKind kind);
+
+  // The instances of node `node`'s EXT_mesh_gpu_instancing (`attributes`,
+  // its JSON): each one's TRANSLATION * ROTATION * SCALE, read from float
+  // accessors of one count. Nothing when the node has none; an empty list
+  // with a diagnostic when they cannot be read (a loss for a valid file
+  // whose accessors are not floats, an error for an invalid one).
+  std::optional<std::vector<glm::dmat4>> instanceMatrices(int node);
 
  private:
   // The triangles of one primitive, as indices into its POSITION data.

@@ -28,9 +28,9 @@ namespace fs = std::filesystem;
 // Extensions whose absence from our reading changes nothing a scene file
 // can hold; a file that requires any other cannot be read right.
 const std::set<std::string> kReadableRequired = {
-    "KHR_lights_punctual",    "KHR_materials_ior",     "KHR_materials_transmission",
-    "KHR_materials_specular", "KHR_texture_transform", "KHR_materials_emissive_strength",
-    "KHR_materials_unlit",
+    "KHR_lights_punctual",    "KHR_materials_ior",       "KHR_materials_transmission",
+    "KHR_materials_specular", "KHR_texture_transform",   "KHR_materials_emissive_strength",
+    "KHR_materials_unlit",    "EXT_mesh_gpu_instancing",
 };
 
 // ---------------------------------------------------------------------------

@@ -540,6 +540,7 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
   std::map<ObjectKind, MeshAccessors> kindAccessors;
   std::map<std::vector<std::uint64_t>, std::size_t> materialIndex;
   std::map<std::pair<ObjectKind, std::size_t>, std::size_t> meshIndex;
+  std::map<std::size_t, Json> meshObjects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     auto accessors = kindAccessors.find(object.kind);
@@ -572,9 +573,17 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
     std::size_t node = addRecordNodes(parts.nodes, parts.roots, object.matrix, name);
     parts.nodes[node]["mesh"] = mesh->second;
     Json sf = {{"record", std::string(objectKindName(object.kind))},
-               {"matrix", rowsJson(object.matrix)}};
+               {"matrix", rowsJson(object.matrix)},
+               {"object", i + 1}};
     if (object.transforms) sf["transforms"] = transformsJson(*object.transforms);
+    meshObjects[mesh->second].push_back(sf);
     parts.nodes[node]["extras"] = gltf::extrasJson(std::move(sf));
+  }
+  // Each mesh names its objects too: a program that replaces their nodes by
+  // instances of the mesh (glTF-Transform's `instance`) drops the nodes'
+  // extras, and keeps the mesh's.
+  for (auto& [mesh, objects] : meshObjects) {
+    parts.meshes[mesh]["extras"] = gltf::extrasJson({{"objects", std::move(objects)}});
   }
 }
 
