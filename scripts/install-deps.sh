@@ -72,11 +72,12 @@ for p in "${packages[@]}"; do
   fi
 done
 
-# The validator itself, pinned by tests/gltf/package-lock.json.
+# The validator and glTF-Transform, pinned by tests/gltf/package-lock.json.
 install_validator() {
   local folder
   folder="$(cd "$(dirname "$0")/.." && pwd)/tests/gltf"
-  if [ ! -d "$folder/node_modules/gltf-validator" ]; then
+  if [ ! -d "$folder/node_modules/gltf-validator" ] ||
+     [ ! -d "$folder/node_modules/@gltf-transform/functions" ]; then
     echo "install-deps: npm ci in tests/gltf" >&2
     (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
   fi
