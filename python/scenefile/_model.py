@@ -589,13 +589,21 @@ def _material(value: Any) -> Material:
     return value
 
 
+def _place(line: Any, column: Any, length: Any) -> Tuple[int, int, int]:
+    """A place in a file: line, column and length, whole numbers from 0 (0: unknown)."""
+    most = (1 << 63) - 1
+    return (_checks.whole(line, "line", 0, most), _checks.whole(column, "column", 0, most),
+            _checks.whole(length, "length", 0, most))
+
+
 class Note:
     """A secondary place that explains a diagnostic ("block opened here")."""
 
     __slots__ = ("line", "column", "length", "message")
 
     def __init__(self, line: int, column: int, length: int, message: str) -> None:
-        self.line, self.column, self.length, self.message = line, column, length, message
+        self.line, self.column, self.length = _place(line, column, length)
+        self.message = message
 
     def __repr__(self) -> str:
         return f"Note(line={self.line}, column={self.column}, message={self.message!r})"
@@ -607,7 +615,7 @@ class FixIt:
     __slots__ = ("line", "column", "length", "replacement")
 
     def __init__(self, line: int, column: int, length: int, replacement: str) -> None:
-        self.line, self.column, self.length = line, column, length
+        self.line, self.column, self.length = _place(line, column, length)
         self.replacement = replacement
 
     def __repr__(self) -> str:
@@ -629,8 +637,8 @@ class Diagnostic:
                  column: int, message: str, hint: str = "", length: int = 0,
                  notes: Sequence[Note] = (), fix_it: Optional[FixIt] = None) -> None:
         self.severity = Severity(severity)
-        self.code, self.file, self.line, self.column = code, file, line, column
-        self.length, self.message, self.hint = length, message, hint
+        self.line, self.column, self.length = _place(line, column, length)
+        self.code, self.file, self.message, self.hint = code, file, message, hint
         self.notes: List[Note] = list(notes)
         self.fix_it = fix_it
 

@@ -186,3 +186,15 @@ def test_every_numeric_parameter_is_checked(scene, function, parameter, value, e
         error = TypeError  # not a whole number, whatever its value
     with pytest.raises(error, match=parameter):
         getattr(scenefile, function)(*args, **dict(kwargs, **{parameter: value}))
+
+
+@pytest.mark.parametrize("make, name, error", [
+    (lambda: scenefile.Note("1", 0, 0, "m"), "line", TypeError),
+    (lambda: scenefile.Note(1, -1, 0, "m"), "column", ValueError),
+    (lambda: scenefile.FixIt(1, 1, 2.5, "x"), "length", TypeError),
+    (lambda: scenefile.Diagnostic("error", "c", "f", 1, True, "m"), "column", TypeError),
+    (lambda: scenefile.Diagnostic("error", "c", "f", -3, 1, "m"), "line", ValueError),
+])
+def test_a_place_in_a_file_is_whole_numbers_from_0(make, name, error):
+    with pytest.raises(error, match=name):
+        make()
