@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
+#include <cstring>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tools/common/option_checks.h"
@@ -39,14 +43,15 @@ MadeApp madeWith(std::unique_ptr<CLI::App> (*make)(Options&)) {
 struct ToolCommandLine {
   std::string name;
   std::function<MadeApp()> make;
+  std::vector<std::string> arguments;  // what it needs besides options
 };
 
 std::vector<ToolCommandLine> allTools() {
   return {
-      {"sfcheck", [] { return madeWith(&makeSfcheckCommandLine); }},
-      {"sfconvert", [] { return madeWith(&makeSfconvertCommandLine); }},
-      {"sfrender", [] { return madeWith(&makeSfrenderCommandLine); }},
-      {"sfbuild", [] { return madeWith(&sfbuild::makeSfbuildCommandLine); }},
+      {"sfcheck", [] { return madeWith(&makeSfcheckCommandLine); }, {"a.sf"}},
+      {"sfconvert", [] { return madeWith(&makeSfconvertCommandLine); }, {"a.sf", "b.sf"}},
+      {"sfrender", [] { return madeWith(&makeSfrenderCommandLine); }, {}},
+      {"sfbuild", [] { return madeWith(&sfbuild::makeSfbuildCommandLine); }, {}},
   };
 }
 
@@ -207,19 +212,222 @@ TEST(CommandLine, HelpShowsEveryOptionAndItsDefault) {
   EXPECT_NE(help.find("Exit status:"), std::string::npos);
 }
 
+// What a check says of `text`, and the text it hands on to CLI11.
+std::pair<std::string, std::string> checked(const CLI::Validator& check, std::string text) {
+  std::string message = check(text);
+  return {message, text};
+}
+
 TEST(OptionChecks, NumbersAreReadWhole) {
-  std::string value = "12abc";
-  EXPECT_EQ(wholeNumberIn(0, 100)(value), "'12abc' is not a number");
-  value = "+5";
-  EXPECT_EQ(wholeNumberIn(0, 100)(value), "");
-  value = "1e3";
-  EXPECT_EQ(wholeNumberIn(0, 100)(value), "'1e3' is not a whole number written in digits");
-  value = "99999999999999999999";
-  EXPECT_EQ(wholeNumberIn(0, 100)(value), "'99999999999999999999' is too large");
-  value = "nan";
-  EXPECT_EQ(numberIn(0, 1)(value), "'nan' is not a number");
-  value = ".5";
-  EXPECT_EQ(numberIn(0, 1)(value), "");
+  using Said = std::pair<std::string, std::string>;
+  CLI::Validator whole = wholeNumberIn(0, 100);
+  EXPECT_EQ(checked(whole, "12abc").first, "'12abc' is not a number");
+  EXPECT_EQ(checked(whole, "").first, "'' is not a number");
+  EXPECT_EQ(checked(whole, "+5"), Said("", "5"));
+  EXPECT_EQ(checked(whole, "1e3").first, "'1e3' is not a whole number written in digits");
+  EXPECT_EQ(checked(whole, "1.5").first, "'1.5' is not a whole number");
+  EXPECT_EQ(checked(whole, "99999999999999999999").first,
+            "99999999999999999999 is not between 0 and 100");
+  EXPECT_EQ(checked(whole, "inf").first, "'inf' is not a finite number");
+  // Decimal whatever the leading zeros: no octal, no hexadecimal.
+  EXPECT_EQ(checked(whole, "010"), Said("", "10"));
+  EXPECT_EQ(checked(whole, "0x10").first, "'0x10' is not a number");
+  CLI::Validator unit = numberIn(0, 1);
+  EXPECT_EQ(checked(unit, "nan").first, "'nan' is not a finite number");
+  EXPECT_EQ(checked(unit, "-inf").first, "'-inf' is not a finite number");
+  EXPECT_EQ(checked(unit, ".5"), Said("", "0x1p-1"));
+  EXPECT_EQ(checked(unit, " .5").first, "' .5' is not a number");
+  EXPECT_EQ(checked(unit, "1e400").first, "1e400 is not between 0 and 1");
+  EXPECT_EQ(checked(numberIn(-1, 1), "-1e-400").first,
+            "'-1e-400' is too small for a 64-bit double: it would round to 0");
+  EXPECT_EQ(checked(numberIn(1, 2), "1e-400").first, "1e-400 is not between 1 and 2");
+  EXPECT_EQ(checked(numberIn(0, std::numeric_limits<double>::infinity()), "2e308").first,
+            "'2e308' is too large for a 64-bit double");
+  // A subnormal is the number it is, and reaches CLI11 exactly.
+  EXPECT_EQ(checked(numberAbove(0, 1), "4.9e-324"), Said("", "0x0.0000000000001p-1022"));
+  EXPECT_EQ(checked(numberAbove(0, 1), "0").first, "0 is not above 0 and at most 1");
+  EXPECT_EQ(checked(numberAbove(0, 1), "-0").first, "-0 is not above 0 and at most 1");
+  EXPECT_EQ(checked(numberIn(0, 1), "-0"), Said("", "-0x0p+0"));
+}
+
+TEST(OptionChecks, SizesAreReadWithTheirUnitAndWithinAnInt64) {
+  using Said = std::pair<std::string, std::string>;
+  CLI::Validator size = sizeInBytes();
+  EXPECT_EQ(checked(size, "512MiB"), Said("", "536870912"));
+  EXPECT_EQ(checked(size, "2GB"), Said("", "2000000000"));
+  EXPECT_EQ(checked(size, "64k"), Said("", "64000"));
+  EXPECT_EQ(checked(size, "010"), Said("", "10"));
+  EXPECT_EQ(checked(size, "7EiB"), Said("", "8070450532247928832"));
+  EXPECT_EQ(checked(size, "8EiB").first, "8EiB is not between 0 and 9223372036854775807 bytes");
+  EXPECT_EQ(checked(size, "99999999999999999999").first,
+            "99999999999999999999 is not between 0 and 9223372036854775807 bytes");
+  EXPECT_EQ(checked(size, "").first, "'' is not a number of bytes");
+  EXPECT_EQ(checked(size, "-5").first, "'-5' is not a number of bytes");
+  EXPECT_EQ(checked(size, "5 parsecs").first,
+            "'5 parsecs' has no unit of size that is known (use KiB, MiB, GiB, kB, MB or GB)");
+}
+
+// The options of a tool that take a value, and the numeric ones among them.
+std::vector<std::string> valueOptions(const ToolCommandLine& tool, bool numericOnly) {
+  std::vector<std::string> names;
+  auto probe = tool.make();
+  for (const CLI::Option* option : probe->get_options()) {
+    std::string type = option->get_type_name();
+    type = type.substr(0, type.find(':'));
+    bool numeric = type == "INT" || type == "UINT" || type == "FLOAT";
+    if (option->get_positional() || option->get_expected_max() == 0 ||
+        option->get_lnames().empty() || (numericOnly && !numeric)) {
+      continue;
+    }
+    names.push_back("--" + option->get_lnames().front());
+  }
+  return names;
+}
+
+// The number `text` is, read as the tools promise to read it: decimal,
+// whole, correctly rounded; nothing where it is none.
+std::optional<double> reference(std::string text, bool whole) {
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.erase(0, 1);
+  const char* end = text.data() + text.size();
+  if (whole) {
+    std::int64_t n = 0;
+    auto [stop, ec] = std::from_chars(text.data(), end, n);
+    if (ec != std::errc() || stop != end || text.empty()) return std::nullopt;
+    return static_cast<double>(n);
+  }
+  double d = 0;
+  auto [stop, ec] = std::from_chars(text.data(), end, d);
+  if (ec != std::errc() || stop != end || text.empty()) return std::nullopt;
+  return d;
+}
+
+// Every numeric option of every tool, given words, the edges of a double
+// and numbers CLI11 alone would read otherwise (octal 010, a subnormal that
+// strtod calls out of range): a usage error that names the option and the
+// value, or exactly the number the text is. Never an exception.
+TEST(CommandLine, EveryNumericOptionOfEveryToolReadsANumberOneWay) {
+  const std::string values[] = {"",
+                                "abc",
+                                "nan",
+                                "-nan",
+                                "inf",
+                                "-infinity",
+                                "1e400",
+                                "-1e400",
+                                "1e-400",
+                                "0x10",
+                                " 5",
+                                "5 ",
+                                "5x",
+                                "+-5",
+                                "1,5",
+                                "1e-310",
+                                "4.9e-324",
+                                "-4.9e-324",
+                                "010",
+                                "+7",
+                                "-0",
+                                "1.5",
+                                "1e3",
+                                "0",
+                                "1",
+                                "3",
+                                "64",
+                                "100",
+                                "0.001",
+                                "179.999",
+                                "180",
+                                "32768",
+                                "32769",
+                                "99999999999999999999",
+                                "9223372036854775807",
+                                "-9223372036854775809"};
+  int accepted = 0, refused = 0;
+  for (const ToolCommandLine& tool : allTools()) {
+    for (const std::string& name : valueOptions(tool, true)) {
+      for (const std::string& value : values) {
+        for (bool joined : {false, true}) {
+          SCOPED_TRACE(tool.name + " " + name + (joined ? "=" : " ") + "'" + value + "'");
+          std::vector<std::string> args{tool.name};
+          if (joined) {
+            args.push_back(name + "=" + value);
+          } else {
+            args.insert(args.end(), {name, value});
+          }
+          args.insert(args.end(), tool.arguments.begin(), tool.arguments.end());
+          auto app = tool.make();
+          Outcome r;
+          ASSERT_NO_THROW(r = parse(*app, args));
+          if (r.status) {
+            ++refused;
+            EXPECT_EQ(r.status, ExitCode::Usage);
+            EXPECT_NE(r.err.find(name + ": "), std::string::npos) << r.err;
+            EXPECT_NE(r.err.find(value.empty() ? "''" : value), std::string::npos) << r.err;
+            continue;
+          }
+          ++accepted;
+          const CLI::Option* option = app->get_option(name);
+          bool whole = option->get_type_name().substr(0, 5) != "FLOAT";
+          std::optional<double> want = reference(value, whole);
+          ASSERT_TRUE(want) << "accepted what is no number";
+          double got =
+              whole ? static_cast<double>(option->as<std::int64_t>()) : option->as<double>();
+          EXPECT_EQ(std::memcmp(&got, &*want, sizeof got), 0) << got << " " << *want;
+        }
+      }
+    }
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(refused, 1000);
+}
+
+// `--opt=` with nothing after it is an empty value, refused, not a way to
+// take the next argument as the value; and an option that takes one value,
+// given twice, is a usage error, whichever the option.
+TEST(CommandLine, AnEmptyValueOrAnOptionGivenTwiceIsAUsageErrorForEveryOption) {
+  const std::string candidates[] = {"1",   "3", "64",      "auto", "never", "text",
+                                    "pov", "8", "0,0,1,1", "0/1",  "x.png", "cpu"};
+  int checked = 0;
+  for (const ToolCommandLine& tool : allTools()) {
+    for (const std::string& name : valueOptions(tool, false)) {
+      SCOPED_TRACE(tool.name + " " + name);
+      std::vector<std::string> tail = tool.arguments;
+      for (std::vector<std::string> args : {std::vector<std::string>{tool.name, name + "=", "5"},
+                                            std::vector<std::string>{tool.name, name, ""}}) {
+        args.insert(args.end(), tail.begin(), tail.end());
+        auto app = tool.make();
+        Outcome r = parse(*app, args);
+        EXPECT_EQ(r.status, ExitCode::Usage);
+        EXPECT_TRUE(r.err.find(name + ": '' ") != std::string::npos ||
+                    r.err.find(name + ": the value is empty") != std::string::npos)
+            << r.err;
+      }
+      // A value the option takes, found among a few.
+      std::optional<std::string> good;
+      for (const std::string& value : candidates) {
+        std::vector<std::string> args{tool.name, name, value};
+        args.insert(args.end(), tail.begin(), tail.end());
+        auto app = tool.make();
+        if (!parse(*app, args).status) {
+          good = value;
+          break;
+        }
+      }
+      ASSERT_TRUE(good) << "no candidate value";
+      for (int times : {2, 3}) {
+        std::vector<std::string> args{tool.name};
+        for (int i = 0; i < times; ++i) args.insert(args.end(), {name, *good});
+        args.insert(args.end(), tail.begin(), tail.end());
+        auto app = tool.make();
+        Outcome r = parse(*app, args);
+        EXPECT_EQ(r.status, ExitCode::Usage);
+        EXPECT_EQ(firstLine(r.err),
+                  tool.name + ": error: " + name + " given " + (times == 2 ? "twice" : "3 times"));
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 30);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "tools/common/command_line.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <string_view>
@@ -161,6 +162,44 @@ std::string describeRequired(const CLI::App& app, const std::string& message) {
   return "missing " + name;
 }
 
+// The arguments as App::parse takes them, last first, with "--name=" (an
+// option that takes a value, nothing after the '=') made "--name" and an
+// empty value: CLI11 would drop the empty value and take the next argument
+// instead (--width= 5 as --width 5), where the option's checks refuse ''.
+std::vector<std::string> parserArguments(const CLI::App& app, int argc, const char* const* argv) {
+  std::vector<std::string> args;
+  bool onlyArguments = false;  // after "--"
+  for (int i = 1; i < argc; ++i) {
+    std::string word = argv[i];
+    onlyArguments = onlyArguments || word == "--";
+    if (!onlyArguments && word.size() > 3 && word.starts_with("--") && word.back() == '=') {
+      word.pop_back();
+      const CLI::Option* option = app.get_option_no_throw(word);
+      if (option && takesValue(*option)) {
+        args.push_back(word);
+        args.emplace_back();
+        continue;
+      }
+      word += '=';
+    }
+    args.push_back(word);
+  }
+  std::reverse(args.begin(), args.end());
+  return args;
+}
+
+// No option's value may be empty: what a number, a choice or a region check
+// says of '' comes first, and an option with no check of its own (-o "")
+// says this.
+void refuseEmptyValues(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    if (option->get_positional() || !takesValue(*option)) continue;
+    option->check(CLI::Validator(
+        [](std::string& value) { return value.empty() ? "the value is empty" : std::string(); }, "",
+        "not empty"));
+  }
+}
+
 }  // namespace
 
 std::string optionDisplayName(const CLI::Option& option) {
@@ -241,6 +280,13 @@ std::string describeCommandLineError(const CLI::App& app, int argc, const char* 
     return "unexpected argument '" + message.substr(colon + 2) + "'";
   }
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) && !name.empty()) {
+    // CLI11 says "At Most 1 required but received 2" of an option given
+    // twice: a tool that writes files has no "last one wins" to guess at.
+    const CLI::Option* option = app.get_option_no_throw(name);
+    if (option && !takesMany(*option) && option->count() > 1) {
+      return name + " given " +
+             (option->count() == 2 ? "twice" : std::to_string(option->count()) + " times");
+    }
     return name + " needs a value";
   }
   if (const auto* excludes = dynamic_cast<const CLI::ExcludesError*>(&error)) {
@@ -264,8 +310,9 @@ std::string describeCommandLineError(const CLI::App& app, int argc, const char* 
 
 std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, const char* const* argv,
                                          std::ostream& out, std::ostream& err) {
+  refuseEmptyValues(app);
   try {
-    app.parse(argc, argv);
+    app.parse(parserArguments(app, argc, argv));
   } catch (const CLI::CallForHelp&) {
     out << app.help();
     return ExitCode::Success;

@@ -40,21 +40,17 @@ void addReadLimitOptions(CLI::App& app, scene::ReadOptions& options) {
                  "refuse an input larger than this many bytes (suffixes such as 512MiB or 2GB "
                  "work)")
       ->option_text("SIZE")
-      ->transform(CLI::AsSizeValue(true))
-      // A transform added later runs earlier: the words of this one, not
-      // CLI11's, tell of a value that is no size ("-5" would otherwise read
-      // as a huge unsigned number).
       ->transform(sizeInBytes());
   app.add_option("--max-objects", options.maxObjects,
                  "stop reading at the first object or light past this many")
-      ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
+      ->transform(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--max-vertices", options.gltf.maxVertices,
                  "glTF: refuse a file with more mesh vertices than this")
-      ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
+      ->transform(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--max-nodes", options.gltf.maxNodes,
                  "glTF: refuse a file with more nodes and other objects than this (a material "
                  "counts 5, a camera or a light 2)")
-      ->check(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
+      ->transform(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
 }
 
 std::string inputDisplayName(const std::string& file) {

@@ -14,9 +14,9 @@ std::unique_ptr<CLI::App> makeSfbuildCommandLine(SfbuildOptions& o) {
   app->footer(tools::exitStatusHelp() + "\n  5  there is no display to open a window on");
   app->add_option("scene", o.input, "a scene to open (any format sfrender reads)");
   app->add_option("--width", o.width, "window width in pixels")
-      ->check(tools::wholeNumberIn(64, 8192));
+      ->transform(tools::wholeNumberIn(64, 8192));
   app->add_option("--height", o.height, "window height in pixels")
-      ->check(tools::wholeNumberIn(64, 8192));
+      ->transform(tools::wholeNumberIn(64, 8192));
   app->add_flag("--id-view", o.idView, "draw each object in a flat colour of its own (F9 toggles)");
   tools::addReadLimitOptions(*app, o.read);
   return app;

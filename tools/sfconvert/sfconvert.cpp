@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scenefile/convert.h"
+#include "scenefile/validation.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
@@ -247,7 +248,8 @@ scene::ConversionOptions Converter::conversionOptions() const {
     options.pov.height = o_.height;
   } else if (o_.width > 0 || o_.height > 0) {
     // One side given: the other keeps sfrender's 4:3.
-    options.pov.width = o_.width > 0 ? o_.width : std::max(1, o_.height * 4 / 3);
+    options.pov.width =
+        o_.width > 0 ? o_.width : std::clamp(o_.height * 4 / 3, 1, scene::kMaxImageSide);
     options.pov.height = o_.height > 0 ? o_.height : std::max(1, o_.width * 3 / 4);
   }
   options.pov.flat = o_.flat;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "scenefile/format.h"
+#include "scenefile/validation.h"
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
 #include "tools/sfconvert/sfconvert.h"
@@ -24,15 +25,15 @@ void addViewOptions(CLI::App& app, SfconvertOptions& o) {
                  "glTF and POV-Ray: the camera's vertical field of view in degrees, sfrender's "
                  "(default: the input's, else 60)")
       ->option_text("DEGREES")
-      ->check(numberIn(0.0, 180.0));
+      ->transform(numberIn(scene::kMinFovDegrees, scene::kMaxFovDegrees));
   app.add_option("--width", o.width,
                  "glTF and POV-Ray: the image width, for the camera's aspect ratio (POV-Ray "
                  "input: image_width)")
-      ->check(wholeNumberIn(1, 1 << 30));
+      ->transform(wholeNumberIn(1, scene::kMaxImageSide));
   app.add_option("--height", o.height,
                  "glTF and POV-Ray: the image height, for the camera's aspect ratio (POV-Ray "
                  "input: image_height)")
-      ->check(wholeNumberIn(1, 1 << 30));
+      ->transform(wholeNumberIn(1, scene::kMaxImageSide));
 }
 
 void addFormatOptions(CLI::App& app, SfconvertOptions& o) {
@@ -40,7 +41,7 @@ void addFormatOptions(CLI::App& app, SfconvertOptions& o) {
                "glTF: write the buffer to NAME.bin beside NAME.gltf instead of embedding it");
   app.add_option("--tessellation", o.tessellation,
                  "glTF: segments around a sphere or cylinder (the sphere gets half as many rings)")
-      ->check(wholeNumberIn(scene::kMinSegments, scene::kMaxSegments));
+      ->transform(wholeNumberIn(scene::kMinSegments, scene::kMaxSegments));
   app.add_flag("--flat", o.flat,
                "POV-Ray output: every object unlit in a colour of its own (an object-identity "
                "picture)");

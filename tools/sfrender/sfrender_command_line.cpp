@@ -3,6 +3,7 @@
 #include <map>
 #include <string>
 
+#include "scenefile/validation.h"
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
 #include "tools/sfrender/image_file.h"
@@ -19,27 +20,28 @@ constexpr int kSppCeiling = 65536;
 constexpr int kDepthCeiling = 1000;
 
 void addImageOptions(CLI::App& app, SfrenderOptions& o) {
-  // 32768 a side keeps width * height within an int whatever --max-pixels.
+  // A view's range (scene::checkView): kMaxImageSide a side keeps width *
+  // height within an int whatever --max-pixels.
   app.add_option("--width", o.width,
                  "image width in pixels (default: 640, or from the height at the scene's aspect "
                  "ratio)")
-      ->check(wholeNumberIn(1, 32768));
+      ->transform(wholeNumberIn(1, scene::kMaxImageSide));
   app.add_option("--height", o.height,
                  "image height in pixels (default: 480, or from the width at the scene's aspect "
                  "ratio)")
-      ->check(wholeNumberIn(1, 32768));
+      ->transform(wholeNumberIn(1, scene::kMaxImageSide));
   app.add_option("--fov", o.fov,
                  "vertical field of view in degrees (default: the scene's, else 60)")
       ->option_text("DEGREES")
-      ->check(numberIn(0.001, 179.999));
+      ->transform(numberIn(scene::kMinFovDegrees, scene::kMaxFovDegrees));
   // --spp and --depth are held to the --max- flags below, checked after
   // parsing so that the message can name the flag that raises them.
   app.add_option("--spp", o.settings.samplesPerPixel, "samples per pixel, stratified")
-      ->check(wholeNumberIn(1, kSppCeiling));
+      ->transform(wholeNumberIn(1, kSppCeiling));
   app.add_option("--depth", o.settings.maxDepth, "bounces of reflection and refraction")
-      ->check(wholeNumberIn(0, kDepthCeiling));
+      ->transform(wholeNumberIn(0, kDepthCeiling));
   app.add_option("--threads", o.settings.threads, "threads to read and render with (0: every core)")
-      ->check(wholeNumberIn(0, 1024));
+      ->transform(wholeNumberIn(0, 1024));
   app.add_option_function<std::string>(
          "--device",
          [&o](const std::string& device) {
@@ -52,11 +54,11 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
          "where to trace: cpu, gpu (a Vulkan device with double precision; lavapipe counts) or "
          "auto (a real GPU when present and the image has at least a million samples for each "
          "thread of --threads, else the cpu)")
-      ->check(CLI::IsMember({"cpu", "gpu", "auto"}))
+      ->check(oneOf({"cpu", "gpu", "auto"}))
       ->option_text("cpu|gpu|auto")
       ->default_str("cpu");
   app.add_option("--seed", o.settings.seed, "seed of the sample positions")
-      ->check(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
+      ->transform(wholeNumberIn(0, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--adaptive", o.settings.adaptiveThreshold,
                  "adaptive anti-aliasing: every pixel corner is sampled, and a pixel whose "
                  "corners differ by more than THRESHOLD (above 0, at most 1, in any channel; 0.03 "
@@ -67,12 +69,8 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
                  "nothing is refined")
       ->option_text("THRESHOLD")
       ->default_str("")  // 0, uniform sampling, is what leaving it out gives
-      ->check(numberIn(0, 1))
-      ->check(CLI::Validator(
-          [](std::string& value) -> std::string {
-            return std::stod(value) > 0 ? std::string() : value + " is not above 0";
-          },
-          "", "above 0"));
+      // Any threshold above 0 means what it says, a subnormal one too.
+      ->transform(numberAbove(0, 1));
   CLI::Option* region =
       app.add_option("--region", o.region,
                      "render only the pixels from column x0 and row y0 up to, not including, x1 "
@@ -90,11 +88,11 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
 void addLimitOptions(CLI::App& app, SfrenderOptions& o) {
   app.add_option("--max-pixels", o.limits.maxPixels,
                  "refuse an image of more pixels (width x height)")
-      ->check(wholeNumberIn(1, std::int64_t{32768} * 32768));
+      ->transform(wholeNumberIn(1, std::int64_t{scene::kMaxImageSide} * scene::kMaxImageSide));
   app.add_option("--max-spp", o.limits.maxSpp, "refuse more samples per pixel than this")
-      ->check(wholeNumberIn(1, kSppCeiling));
+      ->transform(wholeNumberIn(1, kSppCeiling));
   app.add_option("--max-depth", o.limits.maxDepth, "refuse more bounces than this")
-      ->check(wholeNumberIn(0, kDepthCeiling));
+      ->transform(wholeNumberIn(0, kDepthCeiling));
   addReadLimitOptions(app, o.read);
 }
 
