@@ -4,6 +4,10 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <limits>
 
 #include "scenefile/read.h"
@@ -20,14 +24,20 @@ std::optional<std::string> readStream(std::istream& in, std::string& error,
                                       std::uint64_t maxBytes) {
   std::string text;
   char chunk[1 << 16];
+  int readError = 0;
   while (text.size() <= maxBytes) {
     std::uint64_t room = maxBytes + 1 - text.size();
+    errno = 0;
     in.read(chunk, static_cast<std::streamsize>(std::min<std::uint64_t>(sizeof chunk, room)));
+    readError = errno;
     text.append(chunk, static_cast<std::size_t>(in.gcount()));
     if (!in) break;
   }
-  if (in.bad()) {
-    error = "standard input could not be read";
+  // std::cin takes a read that failed (standard input a folder, EISDIR, or
+  // a failing disk, EIO) for the end of the input: the C stream under it
+  // keeps the error, which an empty input would otherwise hide.
+  if (in.bad() || (&in == &std::cin && std::ferror(stdin))) {
+    error = readError != 0 ? std::strerror(readError) : "the read failed";
     return std::nullopt;
   }
   return text;
