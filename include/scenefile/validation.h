@@ -82,6 +82,12 @@ void checkView(const View& view, SourceSpan where, DiagnosticList& out);
 /// (output-file-name).
 void checkOutputFileName(const std::string& name, SourceSpan where, DiagnosticList& out);
 
+/// The OUTPUT_FILE an instruction file written to `path` gets when its scene
+/// has none: the file's name without its extension, with .ppm, each blank,
+/// control character and character that is not ASCII made '_' ("my
+/// café.txt" gives my_caf_.ppm), so that checkOutputFileName accepts it.
+std::string outputFileNameFor(const std::string& path);
+
 /// Rules about the scene as a whole: a warning when nothing is lit, and the
 /// view's range (checkView).
 void checkSceneLevel(const Scene& scene, DiagnosticList& out);

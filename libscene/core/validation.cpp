@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 #include <string>
@@ -322,6 +323,22 @@ void checkOutputFileName(const std::string& name, SourceSpan where, DiagnosticLi
                          : "OUTPUT_FILE holds a blank, a control character or a byte that is not "
                            "ASCII, which an instruction file cannot hold in a name")
       .hint = "name the image with printable ASCII and no blanks";
+}
+
+std::string outputFileNameFor(const std::string& path) {
+  std::string stem = std::filesystem::path(path).stem().string();
+  std::string name;
+  for (std::size_t i = 0; i < stem.size(); ++i) {
+    auto byte = static_cast<unsigned char>(stem[i]);
+    if (byte > ' ' && byte < 0x7F) {
+      name += stem[i];
+      continue;
+    }
+    // One '_' for a UTF-8 character: its continuation bytes go with it.
+    while (byte >= 0xC0 && i + 1 < stem.size() && (stem[i + 1] & 0xC0) == 0x80) ++i;
+    name += '_';
+  }
+  return name + ".ppm";
 }
 
 DiagnosticList validateScene(const Scene& scene, std::string file) {

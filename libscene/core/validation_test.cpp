@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
+#include <utility>
+
+#include "scenefile/convert.h"
+#include "scenefile/read.h"
 
 namespace scene {
 namespace {
@@ -28,6 +33,42 @@ TEST(Validation, AnOutputFileSetInMemoryMustBeANameAnInstructionFileHolds) {
   }
   s.outputFile.reset();
   EXPECT_TRUE(validateScene(s).empty());
+}
+
+// The OUTPUT_FILE an instruction file gets from its own name reads back,
+// whatever the name; the writer writes none that would not.
+TEST(Validation, AnOutputFileNamedAfterItsFileIsOneTheReaderTakes) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"out.txt", "out.ppm"},          {"dir/my scene.txt", "my_scene.ppm"},
+      {"tab\t.txt", "tab_.ppm"},       {"line\nSTART CAMERA.txt", "line_START_CAMERA.ppm"},
+      {"caf\xC3\xA9.txt", "caf_.ppm"}, {"\xE2\x82\xAC\x7F\xFF.txt", "___.ppm"},
+      {"{stem}.txt", "{stem}.ppm"},
+  };
+  Scene s = litScene();
+  for (const auto& [path, name] : cases) {
+    SCOPED_TRACE(path);
+    EXPECT_EQ(outputFileNameFor(path), name);
+    ConversionOptions options;
+    options.instructions.outputFile = outputFileNameFor(path);
+    DiagnosticList out;
+    std::optional<std::string> text = convertScene(s, Format::InstructionFile, options, out);
+    ASSERT_TRUE(text);
+    ReadResult back = parseSceneAs(Format::InstructionFile, *text, "back.txt");
+    EXPECT_TRUE(back.ok());
+    EXPECT_EQ(back.scene.outputFile, name);
+  }
+  for (std::string bad : {"", "a b.ppm", "tab\t.ppm", "x\nSTART CAMERA", "caf\xC3\xA9.ppm"}) {
+    SCOPED_TRACE(bad);
+    ConversionOptions options;
+    options.instructions.outputFile = bad;
+    DiagnosticList out;
+    EXPECT_FALSE(convertScene(s, Format::InstructionFile, options, out));
+    EXPECT_EQ(out.errorCount(), 1u);
+    Scene named = s;
+    named.outputFile = bad;
+    DiagnosticList refused;
+    EXPECT_FALSE(convertScene(named, Format::InstructionFile, {}, refused));
+  }
 }
 
 }  // namespace

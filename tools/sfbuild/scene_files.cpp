@@ -6,6 +6,7 @@
 #include "scenefile/diagnostic.h"
 #include "scenefile/format.h"
 #include "scenefile/read.h"
+#include "scenefile/validation.h"
 
 namespace sfbuild {
 namespace {
@@ -46,7 +47,12 @@ bool saveSceneAs(BuilderState& state, const std::string& name, const FileSystem&
   // The registry's writer, as sfconvert: what the format cannot hold (a
   // scene file has no materials) is left out, as P always did.
   scene::DiagnosticList losses;
-  std::optional<std::string> text = scene::convertScene(state.scene, format->format, {}, losses);
+  // An instruction file's OUTPUT_FILE, where the scene has none, is named
+  // after the file, as sfconvert names it.
+  scene::ConversionOptions options;
+  options.instructions.outputFile = scene::outputFileNameFor(name);
+  std::optional<std::string> text =
+      scene::convertScene(state.scene, format->format, options, losses);
   if (!text) {
     state.lastSave = "could not save " + name + ": the scene holds a value that is not finite";
     return false;

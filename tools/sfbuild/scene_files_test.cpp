@@ -82,6 +82,16 @@ TEST(SceneFiles, RefusesANameWithoutAFormatAndAnotherFileThatExists) {
   EXPECT_TRUE(saveSceneAs(state, "mine.txt", files.fs())) << state.lastSave;
 }
 
+// An instruction file's OUTPUT_FILE is named after the file, in a form the
+// reader takes back, as sfconvert names it.
+TEST(SceneFiles, AnInstructionFileNamesItsImageAfterItselfInAFormThatReadsBack) {
+  BuilderState state = shinySphere();
+  FakeFiles files;
+  ASSERT_TRUE(saveSceneAs(state, "my scene.txt", files.fs())) << state.lastSave;
+  EXPECT_EQ(files.files["my scene.txt"].substr(0, 25), "OUTPUT_FILE my_scene.ppm\n");
+  EXPECT_TRUE(openSceneFile(state, "my scene.txt", files.fs())) << state.lastSave;
+}
+
 TEST(SceneFiles, OpeningIsAStepOfTheHistory) {
   BuilderState saved = shinySphere();
   FakeFiles files;

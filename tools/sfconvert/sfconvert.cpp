@@ -234,7 +234,7 @@ scene::ConversionOptions Converter::conversionOptions() const {
   options.noLoss = o_.noLoss;
   options.instructions.approximate = o_.approximate;
   if (!plan_.toStdout) {
-    options.instructions.outputFile = std::filesystem::path(o_.output).stem().string() + ".ppm";
+    options.instructions.outputFile = scene::outputFileNameFor(o_.output);
   }
   options.gltf.yfovDegrees = o_.fov;
   options.gltf.width = o_.width;
@@ -288,7 +288,7 @@ int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene&
   std::string wrote = "wrote " + printableText(o_.output) + " (" + what + ")";
   if (!converted.sidecar.empty()) wrote += " and " + printableText(plan_.bufferPath.string());
   output_.info(wrote);
-  std::string outputFile = std::filesystem::path(o_.output).stem().string() + ".ppm";
+  std::string outputFile = scene::outputFileNameFor(o_.output);
   if (plan_.format == scene::Format::InstructionFile && !scene.outputFile &&
       outputFile != std::filesystem::path(o_.output).stem().string() + ".ppm") {
     output_.info("OUTPUT_FILE is " + outputFile +

@@ -5,6 +5,7 @@
 
 #include "libscene/text/number.h"
 #include "scenefile/transform.h"
+#include "scenefile/validation.h"
 
 namespace scene {
 
@@ -73,9 +74,15 @@ std::optional<std::string> writeInstructionFile(const Scene& scene,
   std::size_t errorsBefore = out.errorCount();
   Severity approximationSeverity =
       options.instructions.approximate && !options.noLoss ? Severity::Warning : Severity::Error;
+  // A name the reader would refuse (set in memory, or given as an option)
+  // is not written.
+  const std::string& outputFile =
+      scene.outputFile ? *scene.outputFile : options.instructions.outputFile;
+  checkOutputFileName(outputFile, scene.outputFile ? scene.outputFileSpan : SourceSpan{}, out);
+  if (out.errorCount() > errorsBefore) return std::nullopt;
   std::string text;
   text += "OUTPUT_FILE ";
-  text += scene.outputFile ? *scene.outputFile : options.instructions.outputFile;
+  text += outputFile;
   text += '\n';
 
   // The camera: an instruction camera keeps its LOOK_AT; any other is
