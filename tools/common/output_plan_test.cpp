@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <random>
@@ -261,9 +262,51 @@ bool within(const fs::path& folder, const fs::path& path) {
   return end == base.end();
 }
 
+// What a batch did to the files under `root`, held to the promises: a
+// refusal (exit 2) changed nothing; otherwise no input changed, every file
+// written is one that `allowed` allows and no temporary, and each input done
+// wrote a file of its own (`done`: how many, from the summary). Gives the
+// number of files written, or -1 for a refusal.
+int checkOutcome(const fs::path& root, const std::vector<std::string>& inputs,
+                 const Snapshot& before, const Snapshot& after, int status, const std::string& err,
+                 const std::string& tool, const std::function<bool(const fs::path&)>& allowed) {
+  if (status == 2) {
+    EXPECT_EQ(after, before) << "refused, yet something changed: " << err;
+    return -1;
+  }
+  int written = 0;
+  for (const auto& [path, entry] : after) {
+    auto old = before.find(path);
+    if (old != before.end() && old->second == entry) continue;
+    ++written;
+    EXPECT_EQ(path.find(".tmp-"), std::string::npos) << "a temporary stayed: " << path;
+    EXPECT_TRUE(allowed(root / path)) << "'" << path << "' lies outside; " << err;
+  }
+  for (const auto& [path, entry] : before) {
+    EXPECT_TRUE(after.count(path)) << "'" << path << "' went away";
+  }
+  // Each input untouched: the same file (inode) with the same bytes.
+  for (const std::string& input : inputs) {
+    if (input == "-") continue;
+    std::string key = fs::relative(fs::weakly_canonical(input), fs::canonical(root)).string();
+    if (before.count(key)) {
+      EXPECT_EQ(after.at(key), before.at(key)) << "input '" << input << "' changed";
+    }
+  }
+  // (-q: the summary only when one failed.)
+  std::size_t done = status == 0 ? inputs.size() : 0;
+  if (std::size_t at = err.rfind(tool + ": ");
+      status != 0 && at != std::string::npos && err.find(" of ", at) != std::string::npos) {
+    done = std::stoul(err.substr(at + tool.size() + 2));
+  }
+  EXPECT_EQ(static_cast<std::size_t>(written), done) << err;
+  return written;
+}
+
+// A fixed seed: a failure names the batch, and the same one comes back.
+constexpr unsigned kSeed = 20261206;
+
 TEST(OutputPlanProperty, RandomBatchesKeepEveryPromise) {
-  // A fixed seed: a failure names the batch, and the same one comes back.
-  constexpr unsigned kSeed = 20261206;
   constexpr int kBatches = 250;
   std::mt19937 seeds(kSeed);
   int accepted = 0, refused = 0, files = 0;
@@ -283,45 +326,11 @@ TEST(OutputPlanProperty, RandomBatchesKeepEveryPromise) {
     Snapshot before = snapshot(root);
     std::ostringstream out, err;
     int status = runTool(runSfconvert, args, out, err, kValidScene);
-    Snapshot after = snapshot(root);
-    if (status == 2) {
-      ++refused;
-      EXPECT_EQ(after, before) << "refused, yet something changed: " << err.str();
-      continue;
-    }
-    ++accepted;
-    int written = 0;
-    for (const auto& [path, entry] : after) {
-      auto old = before.find(path);
-      if (old != before.end() && old->second == entry) continue;
-      ++written;
-      EXPECT_TRUE(old == before.end() || entry.second != "(folder)") << path;
-      EXPECT_EQ(path.find(".tmp-"), std::string::npos) << "a temporary stayed: " << path;
-      std::string folder = fixedFolder(pattern);
-      EXPECT_TRUE(within(root / folder, root / path))
-          << "'" << path << "' lies outside '" << folder << "'; " << err.str();
-    }
-    // Each input untouched: the same file (inode) with the same bytes.
-    for (const auto& [path, entry] : before) {
-      EXPECT_TRUE(after.count(path)) << "'" << path << "' went away";
-    }
-    for (const std::string& input : inputs) {
-      if (input == "-") continue;
-      std::string key = fs::relative(fs::weakly_canonical(input), fs::canonical(root)).string();
-      if (before.count(key)) {
-        EXPECT_EQ(after[key], before[key]) << "input '" << input << "' changed";
-      }
-    }
-    // Each conversion that succeeded wrote a file of its own: none twice.
-    // (-q: the summary only when one failed.)
-    std::string summary = err.str();
-    std::size_t converted = status == 0 ? inputs.size() : 0;
-    if (std::size_t at = summary.rfind("sfconvert: ");
-        status != 0 && at != std::string::npos && summary.find(" of ", at) != std::string::npos) {
-      converted = std::stoul(summary.substr(at + 11));
-    }
-    EXPECT_EQ(static_cast<std::size_t>(written), converted) << summary;
-    files += written;
+    fs::path folder = root / fixedFolder(pattern);
+    int written = checkOutcome(root, inputs, before, snapshot(root), status, err.str(), "sfconvert",
+                               [&](const fs::path& path) { return within(folder, path); });
+    written < 0 ? ++refused : ++accepted;
+    files += std::max(written, 0);
   }
   std::cout << "[ property ] " << accepted << " batches accepted, " << refused << " refused, "
             << files << " files written\n";
@@ -329,6 +338,72 @@ TEST(OutputPlanProperty, RandomBatchesKeepEveryPromise) {
   EXPECT_GT(accepted, kBatches / 10);
   EXPECT_GT(refused, kBatches / 10);
   EXPECT_GT(files, kBatches / 2);
+}
+
+// A valid instruction file whose OUTPUT_FILE is `outputFile`.
+std::string instructionsWriting(const std::string& outputFile) {
+  return "OUTPUT_FILE " + outputFile +
+         "\n\nSTART CAMERA\n  LOCATION 4 3 6\n  LOOK_AT 0 0.5 0\nEND CAMERA\n\n"
+         "START LIGHT\n  LOCATION 5 8 5\n  COLOUR 1 1 1\nEND LIGHT\n\n"
+         "START OBJECT PLANE\n  START MATERIAL\n    COLOUR 0.8 0.8 0.8\n  END MATERIAL\n"
+         "END OBJECT\n";
+}
+
+// sfrender without -o: each scene's own image (OUTPUT_FILE in its folder,
+// else NAME.ppm here), read ahead; the same promises, the images only here
+// or in an instruction file's folder.
+TEST(OutputPlanProperty, RandomRenderBatchesWithoutOutputKeepEveryPromise) {
+  constexpr int kBatches = 60;
+  static const char* kFolders[] = {"", "in/", "in/sub/", "ln/", "other/", "./in/"};
+  static const char* kNames[] = {"s", "t", "pic", "p.png"};
+  static const char* kOutputFiles[] = {"pic.png", "sub/pic.png", "s.ppm",  "../pic.png",
+                                       "p.png",   "t.ppm",       "pic.ppm"};
+  std::mt19937 random(kSeed + 1);
+  auto pick = [&](std::size_t n) {
+    return std::uniform_int_distribution<std::size_t>(0, n - 1)(random);
+  };
+  int accepted = 0, refused = 0;
+  for (int batch = 0; batch < kBatches; ++batch) {
+    fs::path root = freshTestFolder("output-plan-render-property");
+    InFolder here(root);
+    for (const char* folder : {"in/sub", "other"}) fs::create_directories(folder);
+    fs::create_directory_symlink("in", "ln");
+    std::vector<std::string> inputs;
+    std::vector<fs::path> folders = {root};
+    for (std::size_t i = 0, n = 2 + pick(3); i < n; ++i) {
+      std::string folder = kFolders[pick(std::size(kFolders))];
+      std::string name = kNames[pick(std::size(kNames))];
+      bool instructions = pick(2) == 0;
+      std::string path = folder + name + (instructions ? ".txt" : ".sf");
+      if (pick(8) == 0) path = "-";
+      if (path != "-" && !fs::exists(path)) {
+        std::ofstream(path) << (instructions ? instructionsWriting(
+                                                   kOutputFiles[pick(std::size(kOutputFiles))])
+                                             : kValidScene);
+      }
+      if (instructions && path != "-") folders.push_back(fs::path(path).parent_path());
+      inputs.push_back(path);
+    }
+    std::vector<std::string> args = {"sfrender", "-q", "--width", "4", "--height", "3"};
+    args.insert(args.end(), inputs.begin(), inputs.end());
+    std::string shown = "batch " + std::to_string(batch) + ":";
+    for (const std::string& input : inputs) shown += " '" + input + "'";
+    SCOPED_TRACE(shown);
+
+    Snapshot before = snapshot(root);
+    std::ostringstream out, err;
+    int status = runTool(sfrender, args, out, err, kValidScene);
+    int written = checkOutcome(
+        root, inputs, before, snapshot(root), status, err.str(), "sfrender",
+        [&](const fs::path& path) {
+          return std::any_of(folders.begin(), folders.end(),
+                             [&](const fs::path& folder) { return within(root / folder, path); });
+        });
+    written < 0 ? ++refused : ++accepted;
+  }
+  std::cout << "[ property ] " << accepted << " batches accepted, " << refused << " refused\n";
+  EXPECT_GT(accepted, kBatches / 10);
+  EXPECT_GT(refused, kBatches / 10);
 }
 
 }  // namespace
