@@ -4,16 +4,19 @@
 sfrender=${SFRENDER%% *}
 # A name of $1 bytes ending in $3, made of the character $2 (and 'a' where
 # a whole one does not fit).
+bytes_of() { local LC_ALL=C text=$1; echo ${#text}; }
 name_of() {
   local bytes=$1 character=$2 extension=$3 name=""
-  while (($(printf %s "$name$character$extension" | wc -c) <= bytes)); do name+=$character; done
-  while (($(printf %s "$name$extension" | wc -c) < bytes)); do name+=a; done
+  local step=$(bytes_of "$character") fixed=$(bytes_of "$extension")
+  while ((${#name} * step / ${#character} + step + fixed <= bytes)); do name+=$character; done
+  while (($(bytes_of "$name$extension") < bytes)); do name+=a; done
   printf %s "$name$extension"
 }
 for character in a é € 😀; do
-  written=0
+  written=0 lengths=""
   for bytes in 240 241 247 250 251 254 255; do
     png=$(name_of $bytes "$character" .png)
+    lengths+=" $(bytes_of "$png")"
     sf=$(name_of $bytes "$character" .sf)
     gltf=$(name_of $bytes "$character" .gltf)
     $sfrender S.sf --width 4 --height 3 -q -o "$png" && [[ -s $png ]] && written=$((written + 1))
@@ -23,6 +26,6 @@ for character in a é € 😀; do
     $SFCONVERT S.sf "$gltf" --external-buffers -q && [[ -s ${gltf%.gltf}.bin ]] &&
       written=$((written + 1))
   done
-  echo "$character: $written of 28 written"
+  echo "$character: names of$lengths bytes: $written of 28 written"
 done
 temporaries
