@@ -11,6 +11,7 @@
 #include "scenefile/convert.h"
 #include "scenefile/matrix.h"
 #include "scenefile/transform.h"
+#include "scenefile/validation.h"
 #include "tools/sfbuild/placement.h"
 
 namespace sfbuild {
@@ -513,7 +514,10 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y) {
 double verticalFovDegrees(const BuilderState& state) {
   // As sfrender's applySceneView, which --width and --height both given
   // leave the aspect ratio to.
-  if (state.scene.view) return std::clamp(state.scene.view->verticalFovDegrees, 0.001, 179.999);
+  if (state.scene.view) {
+    return std::clamp(state.scene.view->verticalFovDegrees, scene::kMinFovDegrees,
+                      scene::kMaxFovDegrees);
+  }
   return kVerticalFovDegrees;
 }
 

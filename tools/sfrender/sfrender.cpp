@@ -21,6 +21,7 @@
 #include "renderer/render.h"
 #include "renderer/saturating.h"
 #include "scenefile/read.h"
+#include "scenefile/validation.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
 #include "tools/common/input_limits.h"
@@ -124,12 +125,13 @@ void applySceneView(const scene::Scene& scene, const SfrenderOptions& o,
                     render::RenderSettings& settings) {
   if (!scene.view) return;
   if (!o.fov) {
-    settings.verticalFovDegrees = std::clamp(scene.view->verticalFovDegrees, 0.001, 179.999);
+    settings.verticalFovDegrees =
+        std::clamp(scene.view->verticalFovDegrees, scene::kMinFovDegrees, scene::kMaxFovDegrees);
   }
   if (!scene.view->aspectRatio || (o.height && o.width)) return;
   double aspect = *scene.view->aspectRatio;
   auto side = [](double pixels) {
-    return static_cast<int>(std::clamp(std::round(pixels), 1.0, 32768.0));
+    return static_cast<int>(std::clamp(std::round(pixels), 1.0, double{scene::kMaxImageSide}));
   };
   if (o.height) {
     settings.width = side(settings.height * aspect);
