@@ -396,10 +396,4 @@ std::optional<std::string> regularFileProblem(const fs::path& path) {
   return std::nullopt;
 }
 
-bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
-  std::error_code ec;
-  return std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec) &&
-         std::filesystem::equivalent(a, b, ec);
-}
-
 }  // namespace tools

@@ -118,7 +118,4 @@ bool checkCanWrite(const std::filesystem::path& target, bool keepExtension, std:
 // glTF reader's for a buffer's file.
 std::optional<std::string> regularFileProblem(const std::filesystem::path& path);
 
-// True when both paths name one existing file (through links too).
-bool isSameFile(const std::filesystem::path& a, const std::filesystem::path& b);
-
 }  // namespace tools
