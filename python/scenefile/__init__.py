@@ -267,20 +267,17 @@ def _output_clash(inputs: Sequence[str], made_from: str, target: str, buffer: st
 
 
 def _output_file(scene: Scene, path: str, format: str, options: Dict[str, Any]) -> Optional[str]:
-    """The OUTPUT_FILE the writer is given: ``output_file``, or as sfconvert
-    names the image, after the instruction file; checked by the readers' rule."""
-    given = options.get("output_file")
+    """The OUTPUT_FILE the writer is given: ``output_file``, held to the
+    readers' rule, or as sfconvert names the image, after the instruction
+    file, what a name cannot hold made '_' (the library's rule both)."""
+    given: Optional[str] = options.get("output_file")
     if given is None:
         if format != "instructions" or scene.output_file is not None:
             return None
-        given = os.path.splitext(os.path.basename(path))[0] + ".ppm"
-        why = f"the image's name {given!r}, made from the file name, "
-    else:
-        why = f"{given!r} "
+        return _core.output_file_name_for(path)
     problem = _core.check_output_file_name(given)
     if problem is not None:
-        raise ValueError(f"output_file: {why}cannot be an OUTPUT_FILE: {problem}; name it with "
-                         "output_file=")
+        raise ValueError(f"output_file {given!r} cannot be an OUTPUT_FILE: {problem}")
     return given
 
 

@@ -198,6 +198,12 @@ std::optional<std::string> checkOutputFileName(const py::str& name) {
   return d.message + " (" + d.hint + ")";
 }
 
+// output_file_name_for(path) -> the OUTPUT_FILE an instruction file written
+// there gets when its scene has none, as sfconvert names it.
+py::str outputFileNameFor(const py::str& path) {
+  return decodeText(scene::outputFileNameFor(encodeText(path, "the path")), "surrogateescape");
+}
+
 // check_view(fov, aspect_ratio) -> why a view with these is out of range, or
 // None: the one rule for a view, which validate() holds a scene's view to.
 std::optional<std::string> checkView(double fov, std::optional<double> aspectRatio) {
@@ -338,6 +344,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("compose_transform", &sp::composeTransform, py::arg("ops"));
   m.def("decompose_transform", &sp::decomposeTransform, py::arg("matrix"));
   m.def("check_output_file_name", &sp::checkOutputFileName, py::arg("name"));
+  m.def("output_file_name_for", &sp::outputFileNameFor, py::arg("path"));
   m.def("check_view", &sp::checkView, py::arg("fov"), py::arg("aspect_ratio"));
   m.def("write_files", &sp::writeFiles, py::arg("files"));
   m.def("output_clash", &sp::outputClash, py::arg("inputs"), py::arg("outputs"));

@@ -13,7 +13,7 @@ import pytest
 
 import scenefile
 from scenefile import Camera
-from conftest import TESTDATA
+from conftest import TESTDATA, run
 
 ALL = os.path.join(TESTDATA, "valid", "all-primitives.sf")
 NAN, INF = float("nan"), float("inf")
@@ -40,14 +40,19 @@ def test_a_good_output_file_reads_back(scene, tmp_path):
     assert scenefile.read(tmp_path / "o.txt").output_file == "out/image-1.png"
 
 
-def test_an_output_file_made_from_the_file_name_must_be_one_too(scene, tmp_path):
-    # As sfconvert: the image is named after the instruction file, and a
-    # name it cannot hold is refused rather than written unreadable.
-    with pytest.raises(ValueError, match="output_file"):
-        scenefile.write(scene, tmp_path / "my scene.txt")
-    assert os.listdir(tmp_path) == []
-    scenefile.write(scene, tmp_path / "my scene.txt", output_file="my-scene.ppm")
-    assert scenefile.read(tmp_path / "my scene.txt").output_file == "my-scene.ppm"
+@pytest.mark.parametrize("name, image", [("my scene.txt", "my_scene.ppm"),
+                                         ("my café.txt", "my_caf_.ppm"),
+                                         ("tab\there.txt", "tab_here.ppm")])
+def test_an_output_file_made_from_the_file_name_is_one_too(scene, sfconvert, tmp_path, name,
+                                                           image):
+    # As sfconvert: the image is named after the instruction file, what an
+    # instruction file cannot hold in a name made '_' (the library's rule).
+    (tmp_path / "ours").mkdir()
+    (tmp_path / "theirs").mkdir()
+    scenefile.write(scene, tmp_path / "ours" / name)
+    assert scenefile.read(tmp_path / "ours" / name).output_file == image
+    run(sfconvert, ALL, tmp_path / "theirs" / name, "--quiet")
+    assert (tmp_path / "ours" / name).read_bytes() == (tmp_path / "theirs" / name).read_bytes()
 
 
 def positions_and_triangles():
