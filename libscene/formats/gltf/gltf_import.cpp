@@ -208,7 +208,9 @@ void Importer::visit(int index, const glm::dmat4& world) {
   // A node holds at most one light, counted here, and one mesh, whose
   // objects are counted as they are added (roomForOne).
   if (nodeLight(c_.model, index) >= 0 && !roomForOne(index)) return;
-  std::optional<std::vector<glm::dmat4>> instances = meshes_.instanceMatrices(index);
+  // Each instance is an object: no more are read than maxObjects allows.
+  std::optional<std::vector<glm::dmat4>> instances = meshes_.instanceMatrices(
+      index, maxObjects_ - std::min(maxObjects_, c_.scene.objects.size() + c_.scene.lights.size()));
   if (c_.out.hasErrors()) return;
   std::optional<RecordExtras> extras = recordExtras(ownExtras(c_.own.nodes, index));
   // Our writer never instances: a node that does is not the one its

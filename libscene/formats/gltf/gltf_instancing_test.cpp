@@ -139,5 +139,20 @@ TEST(GltfInstancing, AnInstanceMovedIsFittedWithANote) {
   EXPECT_EQ(back.scene.objects.size(), scene.objects.size());
 }
 
+// Each instance is an object: the instances' accessors are not read past
+// --max-objects, however many they hold.
+TEST(GltfInstancing, NoMoreInstancesAreReadThanMaxObjectsAllows) {
+  std::mt19937 rng(3);
+  Scene scene = alikeScene(rng);
+  DiagnosticList diagnostics;
+  std::optional<GltfFiles> files = writeGltf(scene, {}, true, diagnostics);
+  ASSERT_TRUE(files.has_value());
+  ReadOptions options;
+  options.maxObjects = 10;
+  ReadResult back = parseScene(instanced(files->main, 0.0), "instanced.glb", options);
+  EXPECT_FALSE(back.ok());
+  EXPECT_GE(count(back.diagnostics, DiagnosticCode::GltfTooLarge), 1u);
+}
+
 }  // namespace
 }  // namespace scene

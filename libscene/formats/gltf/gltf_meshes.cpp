@@ -348,7 +348,7 @@ bool MeshReader::holdsWrittenMesh(int mesh, ObjectKind kind) {
   return cached->second;
 }
 
-std::optional<std::vector<glm::dmat4>> MeshReader::instanceMatrices(int node) {
+std::optional<std::vector<glm::dmat4>> MeshReader::instanceMatrices(int node, std::size_t limit) {
   nlohmann::json ext = parseOrNull(c_.model.nodes[node].extensions_json_string);
   if (!ext.is_object() || !ext.contains("EXT_mesh_gpu_instancing")) return std::nullopt;
   const nlohmann::json& instancing = ext["EXT_mesh_gpu_instancing"];
@@ -384,8 +384,7 @@ std::optional<std::vector<glm::dmat4>> MeshReader::instanceMatrices(int node) {
     bool skipped = false;
     std::size_t read = 0;
     std::optional<std::vector<double>> v =
-        readAccessor(index, type, {TINYGLTF_COMPONENT_TYPE_FLOAT}, name,
-                     std::numeric_limits<std::size_t>::max(), read, skipped);
+        readAccessor(index, type, {TINYGLTF_COMPONENT_TYPE_FLOAT}, name, limit, read, skipped);
     if (!v) return matrices;
     values[name] = std::move(*v);
   }

@@ -49,8 +49,9 @@ class MeshReader {
   // its JSON): each one's TRANSLATION * ROTATION * SCALE, read from float
   // accessors of one count. Nothing when the node has none; an empty list
   // with a diagnostic when they cannot be read (a loss for a valid file
-  // whose accessors are not floats, an error for an invalid one).
-  std::optional<std::vector<glm::dmat4>> instanceMatrices(int node);
+  // whose accessors are not floats, an error for an invalid one, or for
+  // more than `limit` instances, which bounds what is allocated).
+  std::optional<std::vector<glm::dmat4>> instanceMatrices(int node, std::size_t limit);
 
  private:
   // The triangles of one primitive, as indices into its POSITION data.
