@@ -1,15 +1,22 @@
 // The tools as command-line users expect them (docs/TOOLS.md): standard
 // input and output as files, --no-clobber, -q and -v, what each says it
 // wrote, and the JSON report's shape.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
 #include "tools/common/exit_code.h"
 #include "tools/common/file_io.h"
+#include "tools/common/input_limits.h"
 #include "tools/sfcheck/sfcheck.h"
 #include "tools/sfconvert/sfconvert.h"
 #include "tools/tool_test_support.h"
@@ -211,6 +218,27 @@ TEST_F(StreamsAndFlags, JsonGivesTheSpansEnd) {
   EXPECT_EQ(d["length"], 3);
   EXPECT_EQ(d["endLine"], 2);
   EXPECT_EQ(d["endColumn"], 8);
+}
+
+// Standard input that cannot be read (a folder: read(2) says EISDIR) is a
+// read error with its reason, not an empty input, which std::cin alone
+// would take it for.
+TEST(StandardInput, AnUnreadableOneIsAReadErrorNotAnEmptyInput) {
+  int saved = ::dup(STDIN_FILENO);
+  int folder = ::open("/", O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(saved, 0);
+  ASSERT_GE(folder, 0);
+  ASSERT_EQ(::dup2(folder, STDIN_FILENO), STDIN_FILENO);
+  ::close(folder);
+  std::clearerr(stdin);
+  std::cin.clear();
+  InputText text = readInputText("-", scene::ReadOptions{}, &std::cin);
+  ::dup2(saved, STDIN_FILENO);
+  ::close(saved);
+  std::clearerr(stdin);
+  std::cin.clear();
+  EXPECT_FALSE(text.text.has_value());
+  EXPECT_EQ(text.readError, std::strerror(EISDIR));
 }
 
 }  // namespace
