@@ -180,6 +180,12 @@ void scaleAll(MeshData& m, std::mt19937&) {
   }
 }
 
+void translateAll(MeshData& m, std::mt19937&) {
+  for (Vertex& v : m.vertices) {
+    for (int c = 0; c < 3; ++c) v[c] += 0.5f;
+  }
+}
+
 void flipOneTriangle(MeshData& m, std::mt19937& rng) {
   std::size_t t = 3 * (rng() % (m.indices.size() / 3));
   std::swap(m.indices[t + 1], m.indices[t + 2]);
@@ -257,6 +263,7 @@ TEST(GltfMeshEdits, AMeshChangedInShapeIsStaleAndFitted) {
   const std::tuple<const char*, Edit, bool> edits[] = {
       {"one coordinate nudged by one float step", nudgeOneCoordinate, true},
       {"scaled by 2", scaleAll, false},
+      {"moved by 0.5 along each axis", translateAll, true},
       {"one triangle turned over", flipOneTriangle, true},
       {"one triangle dropped", dropOneTriangle, true},
       {"one triangle collapsed", moveOneVertexOntoAnother, true},
