@@ -482,7 +482,12 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
     return false;
   }
   char message[512] = "";
-  if (!read(path.c_str(), &file.region, nullptr, 0, message, sizeof message)) {
+  int status = read(path.c_str(), &file.region, nullptr, 0, message, sizeof message);
+  if (status < 0) {
+    error = name + " is not an OpenEXR file; " + kRegionsAreFloatExr;
+    return false;
+  }
+  if (status == 0) {
     error = "cannot read " + name + ": " + message;
     return false;
   }
@@ -492,8 +497,8 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
   }
   const SfrenderImageRegion& r = file.region;
   file.rgb.assign(std::size_t{3} * static_cast<std::size_t>(r.width) * r.height, 0.0f);
-  if (!read(path.c_str(), &file.region, file.rgb.data(), file.rgb.size(), message,
-            sizeof message)) {
+  if (read(path.c_str(), &file.region, file.rgb.data(), file.rgb.size(), message, sizeof message) !=
+      1) {
     error = "cannot read " + name + ": " + message;
     return false;
   }

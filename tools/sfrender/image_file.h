@@ -75,7 +75,12 @@ struct ImageRegionFile {
   std::vector<float> rgb;
 };
 
-// Reads the image at `path` through OpenImageIO's module as a region to
+// What a region to merge must be, for the messages that refuse one.
+inline constexpr const char* kRegionsAreFloatExr =
+    "regions to merge are 32-bit float EXR, which hold the render exactly (render them with -o "
+    "NAME.exr and no --bits)";
+
+// Reads the OpenEXR file at `path` through OpenImageIO's module as a region to
 // merge, bounded as a render is: only a regular file is opened; its windows
 // and channels are checked, in arithmetic that cannot overflow, before a
 // pixel is allocated (3 or 4 channels, the data window inside the display

@@ -268,13 +268,19 @@ __attribute__((visibility("default"))) int sfrender_oiio_read(const char* path,
                                                               SfrenderImageRegion* region,
                                                               float* pixels, std::size_t capacity,
                                                               char* error, std::size_t errorSize) {
-  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::create("openexr");
   if (!in) {
     std::string message = OIIO::geterror();
-    copyText(message.empty() ? "no reader takes the file" : message, error, errorSize);
+    copyText(message.empty() ? "OpenImageIO has no OpenEXR reader" : message, error, errorSize);
     return 0;
   }
-  const OIIO::ImageSpec& spec = in->spec();
+  if (!in->valid_file(path)) return -1;
+  OIIO::ImageSpec spec;
+  if (!in->open(path, spec)) {
+    std::string message = in->geterror();
+    copyText(message.empty() ? "the file could not be opened" : message, error, errorSize);
+    return 0;
+  }
   *region = SfrenderImageRegion{spec.x,
                                 spec.y,
                                 spec.width,

@@ -60,10 +60,13 @@ typedef std::size_t (*SfrenderOiioFormats)(char* list, std::size_t size);
 typedef int (*SfrenderOiioWrite)(const char* name, const SfrenderImageData* image, int fd,
                                  char* error, std::size_t errorSize);
 
-// Reads the image at `path`: with `pixels` null, only its region
-// (`region`); otherwise also its first three channels as floats, row by row
-// from the top of the data window, into `pixels`, which holds `capacity`
-// floats. Returns 1, or 0 with a message in `error`.
+// Reads the OpenEXR file at `path` (--merge's tiles are EXR, and no other
+// of OpenImageIO's readers is tried, so that a stranger's bytes meet one
+// parser, not every one OpenImageIO has): with `pixels` null, only its
+// region (`region`); otherwise also its first three channels as floats,
+// row by row from the top of the data window, into `pixels`, which holds
+// `capacity` floats. Returns 1; -1 when the file is not OpenEXR; or 0 with
+// a message in `error`.
 typedef int (*SfrenderOiioRead)(const char* path, SfrenderImageRegion* region, float* pixels,
                                 std::size_t capacity, char* error, std::size_t errorSize);
 

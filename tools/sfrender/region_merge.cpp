@@ -106,9 +106,7 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
     const SfrenderImageRegion& r = file.region;
     if (!r.floating || r.bits != 32) {
       error = name + " holds " + std::to_string(r.bits) + "-bit " +
-              (r.floating ? "floating-point" : "integer") +
-              " values; regions to merge are 32-bit float EXR, which hold the render exactly "
-              "(render them with -o NAME.exr and no --bits)";
+              (r.floating ? "floating-point" : "integer") + " values; " + kRegionsAreFloatExr;
       return std::nullopt;
     }
     // By place, not by name: a file named twice is two regions, which

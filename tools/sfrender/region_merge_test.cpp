@@ -255,6 +255,23 @@ TEST_F(MergeRegions, ReadsRegularFilesOnly) {
   EXPECT_EQ(error, "cannot read '" + folder_.string() + "': it is a directory");
 }
 
+// Tiles are OpenEXR, and only OpenEXR's reader sees a tile's bytes:
+// another format, even holding floats, is refused by its content.
+TEST_F(MergeRegions, ReadsOpenExrOnly) {
+  render::Image whole = gradient(7, 5);
+  std::string error;
+  ASSERT_TRUE(writeImageFile(rows(whole, 0, 5), folder_ / "t.png", error)) << error;
+  ASSERT_TRUE(writeImageFile(rows(whole, 0, 5), folder_ / "float.tif", error, {32, false}) ||
+              writeImageFile(rows(whole, 0, 5), folder_ / "float.tif", error))
+      << error;
+  fs::rename(folder_ / "float.tif", folder_ / "float.exr");
+  for (const char* name : {"t.png", "float.exr"}) {
+    EXPECT_FALSE(mergeImageRegions({folder_ / name}, kLimit, error));
+    EXPECT_EQ(error,
+              "'" + (folder_ / name).string() + "' is not an OpenEXR file; " + kRegionsAreFloatExr);
+  }
+}
+
 // A file named twice is two regions that agree: the image, whichever
 // file comes twice and wherever.
 TEST_F(MergeRegions, TakesATileNamedTwice) {
