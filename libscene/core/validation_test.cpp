@@ -6,7 +6,9 @@
 #include <string>
 #include <utility>
 
+#include "libscene/testing/test_support.h"
 #include "scenefile/convert.h"
+#include "scenefile/format.h"
 #include "scenefile/read.h"
 
 namespace scene {
@@ -68,6 +70,36 @@ TEST(Validation, AnOutputFileNamedAfterItsFileIsOneTheReaderTakes) {
     named.outputFile = bad;
     DiagnosticList refused;
     EXPECT_FALSE(convertScene(named, Format::InstructionFile, {}, refused));
+  }
+}
+
+// A glTF or POV-Ray file carries the OUTPUT_FILE of the instruction file it
+// was written from: only a name an instruction file holds is taken back.
+TEST(Validation, EveryReaderTakesOnlyAnOutputFileAnInstructionFileHolds) {
+  Scene s = litScene();
+  s.outputFile = "image-1.ppm";
+  for (Format format : {Format::Gltf, Format::Pov}) {
+    SCOPED_TRACE(formatInfo(format).name);
+    DiagnosticList out;
+    std::optional<std::string> text = convertScene(s, format, {}, out);
+    ASSERT_TRUE(text);
+    std::size_t at = text->find("image-1.ppm");
+    ASSERT_NE(at, std::string::npos);
+    ReadResult good = parseSceneAs(format, *text, "good");
+    EXPECT_EQ(good.scene.outputFile, "image-1.ppm");
+    text->replace(at, 11, "caf\xC3\xA9.ppm");
+    ReadResult back = parseSceneAs(format, *text, "bad");
+    if (format == Format::Gltf) {
+      EXPECT_EQ(testing::withCode(back.diagnostics, DiagnosticCode::OutputFileName).size(), 1u);
+    } else {
+      EXPECT_TRUE(back.ok());
+      EXPECT_FALSE(back.scene.outputFile);
+      int told = 0;
+      for (const Diagnostic& d : testing::withCode(back.diagnostics, DiagnosticCode::PovIgnored)) {
+        told += d.message.find("output_file") != std::string::npos;
+      }
+      EXPECT_EQ(told, 1);
+    }
   }
 }
 

@@ -224,10 +224,11 @@ ReadResult parseGltf(std::string_view bytes, std::string fileName, const fs::pat
   gltf::Importer importer(model, own, options, result);
   importer.run();
   if (out.hasErrors()) return result;
-  // What the file gave must hold as a scene file's values would.
+  // What the file gave must hold as a scene file's values would, and its
+  // OUTPUT_FILE as an instruction file's.
+  if (outputFile) result.scene.outputFile = *outputFile;
   DiagnosticList checked = validateScene(result.scene, fileName);
   out.append(checked);
-  if (outputFile) result.scene.outputFile = *outputFile;
   return result;
 }
 

@@ -126,6 +126,15 @@ void PovSceneBuilder::build() {
     PovCommentWords words(exact.text);
     if (words.word("output_file")) {
       if (auto name = words.any(); name && words.done()) {
+        // Only a name an instruction file holds, which it came from.
+        DiagnosticList refused;
+        checkOutputFileName(std::string(*name), exact.span, refused);
+        if (refused.hasErrors()) {
+          ignored(exact.span,
+                  "the sfconvert comment's output_file is no name an instruction file holds, "
+                  "and is ignored");
+          continue;
+        }
         scene.outputFile = std::string(*name);
         scene.outputFileSpan = exact.span;
       }
