@@ -38,7 +38,8 @@ std::string exitStatusHelp();
 
 // Parses the arguments. Returns the exit code to stop with (0 after --help or
 // --version, Usage after a mistake, with the message on `err`), or nothing
-// when the tool should go on.
+// when the tool should go on. No option takes an empty value ("--width=" is
+// one), and one that takes a single value may not be given twice.
 std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, const char* const* argv,
                                          std::ostream& out, std::ostream& err);
 

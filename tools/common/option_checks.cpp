@@ -36,14 +36,14 @@ struct Decimal {
 
 // The text without one leading '+', which strtod allows and from_chars
 // does not ("+-1" keeps its '+', and is no number).
-std::string_view unsigned_(const std::string& text) {
+std::string_view withoutPlus(const std::string& text) {
   std::string_view view = text;
   if (view.size() > 1 && view[0] == '+' && view[1] != '+' && view[1] != '-') view.remove_prefix(1);
   return view;
 }
 
 Decimal readDecimal(const std::string& text) {
-  std::string_view digits = unsigned_(text);
+  std::string_view digits = withoutPlus(text);
   const char* end = digits.data() + digits.size();
   double value = 0;
   auto [stop, ec] = std::from_chars(digits.data(), end, value);
@@ -140,7 +140,7 @@ CLI::Validator wholeNumberIn(std::int64_t low, std::int64_t high) {
   std::string range = "between " + std::to_string(low) + " and " + std::to_string(high);
   return CLI::Validator(
       [low, high, range](std::string& value) -> std::string {
-        std::string_view digits = unsigned_(value);
+        std::string_view digits = withoutPlus(value);
         const char* end = digits.data() + digits.size();
         std::int64_t n = 0;
         auto [stop, ec] = std::from_chars(digits.data(), end, n);
@@ -170,8 +170,9 @@ CLI::Validator sizeInBytes() {
         std::string unit = value.substr(digits);
         while (!unit.empty() && unit.front() == ' ') unit.erase(0, 1);
         // A blank may part the number from its unit, and is no unit itself.
-        if (unit.empty() && digits < value.size())
+        if (unit.empty() && digits < value.size()) {
           return inQuotes(value) + " is not a number of bytes";
+        }
         for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (!unit.empty() && unit.back() == 'b') unit.pop_back();
         // "", "k", "ki", "m", ... : the power of 1000 or 1024 a unit stands for.
