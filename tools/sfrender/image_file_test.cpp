@@ -381,6 +381,35 @@ TEST_F(ImageFileTest, EveryListedFormatWritesWhatItPromises) {
   }
 }
 
+// Each extension gives its own format, though the writers write into memory
+// under no name: a file OpenImageIO reads as the format listed, AVIF as AV1
+// (not HEVC, as .heic), .jp2 in JPEG 2000's file format and .j2k as its
+// bare codestream.
+TEST_F(ImageFileTest, EveryExtensionWritesItsOwnFormat) {
+  render::Image image = testImage();
+  image.width = image.height = 32;  // JPEG 2000's least
+  image.rgb.assign(3 * 32 * 32, 0.5f);
+  std::string error;
+  for (const ImageFormat& format : writableImageFormats()) {
+    for (const std::string& extension : format.extensions) {
+      fs::path file = write("x" + extension, {}, image);
+      std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string());
+      ASSERT_TRUE(in) << extension;
+      EXPECT_EQ(in->format_name(), format.name == "ppm" ? "pnm" : format.name) << extension;
+      std::string bytes = readWholeFile(file, error).value_or("");
+      std::string want = extension == ".avif"   ? "avif"
+                         : extension == ".heic" ? "heic"
+                         : extension == ".jp2"  ? "jP  "
+                         : extension == ".j2k"  ? "\xff\x4f\xff\x51"
+                                                : "";
+      std::size_t at = extension == ".jp2" ? 4 : extension == ".j2k" ? 0 : 8;
+      if (!want.empty()) {
+        EXPECT_EQ(bytes.substr(at, 4), want) << extension;
+      }
+    }
+  }
+}
+
 TEST_F(ImageFileTest, BitsAndAlphaAFormatCannotHoldAreUsageErrors) {
   std::string scene = (dir_ / "s.sf").string();
   std::string error;

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cstddef>
 #include <cstring>
@@ -177,8 +178,18 @@ OIIO::ImageSpec specOf(const SfrenderImageData& image) {
 
 // Writers that choose what they write by the name they open: OpenImageIO
 // 2.4's JPEG 2000 takes its codec from the extension (.j2k or .jp2), and
-// opened as /proc/self/fd/N it writes nothing and reports success.
+// opened as /proc/self/fd/N it writes nothing and reports success. (HEIF's
+// takes AV1 for .avif, which its Compression attribute says instead; DPX
+// records the name in its header.)
 constexpr std::array<std::string_view, 1> kNamedWriters = {"jpeg2000"};
+
+// Whether `name` ends in `extension` (".avif"), in any case.
+bool endsWith(std::string_view name, std::string_view extension) {
+  return name.size() >= extension.size() &&
+         std::equal(
+             extension.begin(), extension.end(), name.end() - extension.size(),
+             [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); });
+}
 
 // Writes all of `bytes` to `fd`; false with errno set when it cannot.
 bool writeAll(int fd, const std::vector<unsigned char>& bytes) {
@@ -246,6 +257,9 @@ __attribute__((visibility("default"))) int sfrender_oiio_write(const char* name,
                kNamedWriters.end();
   if (named) out->set_ioproxy(&proxy);
   std::string message;
+  if (out->format_name() == std::string_view("heif")) {
+    spec.attribute("Compression", endsWith(name, ".avif") ? "avif" : "heic");
+  }
   bool ok = describeColour(*image, out->format_name(), spec, message);
   if (ok) ok = out->open(named ? std::string(name) : "/proc/self/fd/" + std::to_string(fd), spec);
   if (ok) ok = out->write_image(given, image->pixels);
