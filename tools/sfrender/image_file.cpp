@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tools/common/file_io.h"
+#include "tools/sfrender/exr_header.h"
 #include "tools/sfrender/memory_file.h"
 #include "tools/sfrender/oiio_module.h"
 #include "tools/sfrender/png_file.h"
@@ -479,6 +480,19 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
   // block.
   if (std::optional<std::string> problem = regularFileProblem(path)) {
     error = "cannot read " + name + ": " + *problem;
+    return false;
+  }
+  // OpenEXR allocates what an attribute declares (exr_header.h).
+  std::string why;
+  std::optional<std::string> head = readWholeFile(path, why, kExrHeaderBytes);
+  std::error_code failed;
+  std::uintmax_t size = std::filesystem::file_size(path, failed);
+  if (!head || failed) {
+    error = "cannot read " + name + ": " + (head ? failed.message() : why);
+    return false;
+  }
+  if (std::optional<std::string> problem = exrHeaderProblem(*head, size)) {
+    error = name + *problem;
     return false;
   }
   char message[512] = "";

@@ -235,6 +235,22 @@ TEST_F(MergeRegions, BoundsWhatATileAsksForBeforeAllocating) {
   fs::path below = withBox(write(one, "below.exr"), "dataWindow", 0, -5, 0, -5);
   EXPECT_FALSE(mergeImageRegions({below}, kLimit, error));
   EXPECT_NE(error.find("reach outside its image"), std::string::npos) << error;
+  // An attribute that declares more bytes than the file holds, which
+  // OpenEXR would allocate before reading them.
+  {
+    fs::path claims = write(one, "claims.exr");
+    std::string bytes = readWholeFile(claims, error).value_or("");
+    std::string key = std::string("compression") + '\0' + "compression" + '\0';
+    std::size_t at = bytes.find(key);
+    ASSERT_NE(at, std::string::npos);
+    std::memcpy(&bytes[at + key.size()], "\x00\x00\x00\x70", 4);  // 1,879,048,192
+    ASSERT_TRUE(writeFileAtomically(claims, bytes, error)) << error;
+    EXPECT_FALSE(mergeImageRegions({claims}, kLimit, error));
+    EXPECT_EQ(error, "'" + claims.string() +
+                         "''s OpenEXR attribute 'compression' declares 1879048192 bytes, more "
+                         "than the " +
+                         std::to_string(bytes.size()) + " of the file");
+  }
   fs::path five =
       writeExr(folder_ / "five.exr", windows(0, 0, 2, 1, 2, 1, 5), std::vector<float>(10, 0.5f));
   EXPECT_FALSE(mergeImageRegions({five}, kLimit, error));
