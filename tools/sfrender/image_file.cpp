@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <string>
@@ -509,11 +510,17 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
     error = name + *refusal;
     return false;
   }
-  const SfrenderImageRegion& r = file.region;
-  file.rgb.assign(std::size_t{3} * static_cast<std::size_t>(r.width) * r.height, 0.0f);
+  const SfrenderImageRegion checked = file.region;
+  file.rgb.assign(std::size_t{3} * static_cast<std::size_t>(checked.width) * checked.height, 0.0f);
   if (read(path.c_str(), &file.region, file.rgb.data(), file.rgb.size(), message, sizeof message) !=
       1) {
     error = "cannot read " + name + ": " + message;
+    return false;
+  }
+  // The pixels are read by a second opening: what was checked must be what
+  // was read, were the file replaced in between.
+  if (std::memcmp(&checked, &file.region, sizeof checked) != 0) {
+    error = "cannot read " + name + ": it changed while it was read";
     return false;
   }
   if (std::optional<std::string> value = nonFiniteValue(file)) {
