@@ -44,7 +44,9 @@ class StagedFile {
   ~StagedFile();
 
   // Creates the temporary; `keepExtension` ends its name with the target's
-  // extension, for writers that choose the format by it (OpenImageIO).
+  // extension, for a writer that opens it by name and chooses the format by
+  // the extension (sfrender's images no longer do: they are made in memory
+  // first, image_file.h).
   bool open(const std::filesystem::path& target, bool keepExtension, std::string& error);
   // The temporary, open for writing, for writers that take a descriptor.
   int descriptor() const { return fd_; }
