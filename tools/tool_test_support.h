@@ -1,6 +1,5 @@
-// What the tools' in-process tests (tools_test.cpp, integrity_test.cpp)
-// share: a valid scene, sfrender as a test runs it, and a scratch folder of
-// each test's own.
+// What the tools' in-process tests share: valid scenes, sfrender as a test
+// runs it, and a scratch folder of each test's own.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -23,6 +22,15 @@ inline const std::string kValidScene =
     "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
     "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
     "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+
+// A valid instruction file whose OUTPUT_FILE is `outputFile`.
+inline std::string instructionsWriting(const std::string& outputFile) {
+  return "OUTPUT_FILE " + outputFile +
+         "\n\nSTART CAMERA\n  LOCATION 4 3 6\n  LOOK_AT 0 0.5 0\nEND CAMERA\n\n"
+         "START LIGHT\n  LOCATION 5 8 5\n  COLOUR 1 1 1\nEND LIGHT\n\n"
+         "START OBJECT PLANE\n  START MATERIAL\n    COLOUR 0.8 0.8 0.8\n  END MATERIAL\n"
+         "END OBJECT\n";
+}
 
 // sfrender as a test runs it, with the memory as the machine has it.
 inline int sfrender(int argc, const char* const* argv, const ToolStreams& streams) {

@@ -340,15 +340,6 @@ TEST(OutputPlanProperty, RandomBatchesKeepEveryPromise) {
   EXPECT_GT(files, kBatches / 2);
 }
 
-// A valid instruction file whose OUTPUT_FILE is `outputFile`.
-std::string instructionsWriting(const std::string& outputFile) {
-  return "OUTPUT_FILE " + outputFile +
-         "\n\nSTART CAMERA\n  LOCATION 4 3 6\n  LOOK_AT 0 0.5 0\nEND CAMERA\n\n"
-         "START LIGHT\n  LOCATION 5 8 5\n  COLOUR 1 1 1\nEND LIGHT\n\n"
-         "START OBJECT PLANE\n  START MATERIAL\n    COLOUR 0.8 0.8 0.8\n  END MATERIAL\n"
-         "END OBJECT\n";
-}
-
 // sfrender without -o: each scene's own image (OUTPUT_FILE in its folder,
 // else NAME.ppm here), read ahead; the same promises, the images only here
 // or in an instruction file's folder.

@@ -12,15 +12,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A valid instruction file whose OUTPUT_FILE is `outputFile`.
-std::string instructionsWriting(const std::string& outputFile) {
-  return "OUTPUT_FILE " + outputFile +
-         "\n\nSTART CAMERA\n  LOCATION 4 3 6\n  LOOK_AT 0 0.5 0\nEND CAMERA\n\n"
-         "START LIGHT\n  LOCATION 5 8 5\n  COLOUR 1 1 1\nEND LIGHT\n\n"
-         "START OBJECT PLANE\n  START MATERIAL\n    COLOUR 0.8 0.8 0.8\n  END MATERIAL\n"
-         "END OBJECT\n";
-}
-
 TEST(ImageTarget, EachSceneOwnImageReadAhead) {
   fs::path root = freshTestFolder("image-target");
   fs::create_directories(root / "in/sub");
