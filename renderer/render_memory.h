@@ -16,10 +16,11 @@
 namespace render {
 
 /// Bytes still to be allocated once the scene has been read: the compiled
-/// scene (objects, lights), the BVH with its build temporaries, the image and
-/// its copy for the file. An estimate from the types' sizes, not a measure.
+/// scene (objects, lights), the BVH with its build temporaries, the image,
+/// its copy in the file's values and the file's bytes. An estimate from the
+/// types' sizes, not a measure.
 struct RenderMemoryEstimate {
-  std::uint64_t image = 0;  ///< the float image and the file's copy of it
+  std::uint64_t image = 0;  ///< the float image, its copy for the file, the file
   std::uint64_t scene = 0;  ///< RenderScene::Bytes::scene
   std::uint64_t bvh = 0;    ///< RenderScene::Bytes::bvh
 

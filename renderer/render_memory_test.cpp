@@ -38,11 +38,11 @@ TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
   EXPECT_EQ(wide.image, 4 * small.image);
 }
 
-// The figures of each part, as sfrender has always printed them: the
-// estimate moved beside the allocating code, its numbers did not.
+// The figures of each part, from the types' sizes: the image three times
+// (the floats, the file's copy, the file's bytes).
 TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   RenderMemoryEstimate e = estimateRenderMemory(1000, 7, 640, 480);
-  EXPECT_EQ(e.image, 640u * 480 * (3 * sizeof(float) + 3 * sizeof(float)));
+  EXPECT_EQ(e.image, 640u * 480 * 3 * (3 * sizeof(float)));
   // The records, each object's index in its list, its index in the scene
   // and its BVH leaf, and a plane's normal, counted for any object.
   EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
@@ -146,7 +146,7 @@ TEST(RenderMemory, RefusesOnlyWhatDoesNotFitAndSaysBothFigures) {
   std::optional<std::string> refusal = renderMemoryRefusal(e, 1000);
   ASSERT_TRUE(refusal.has_value());
   EXPECT_EQ(refusal->rfind("the render needs about ", 0), 0u) << *refusal;
-  EXPECT_NE(refusal->find("(image 7 MiB, scene "), std::string::npos) << *refusal;
+  EXPECT_NE(refusal->find("(image 11 MiB, scene "), std::string::npos) << *refusal;
   EXPECT_NE(refusal->find("only 1000 bytes of memory is available"), std::string::npos) << *refusal;
 }
 

@@ -691,7 +691,7 @@ TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
             toInt(ExitCode::OutOfResources));
   EXPECT_NE(err_.str().find("sfrender: error: the render needs about "), std::string::npos)
       << err_.str();
-  EXPECT_NE(err_.str().find("(image 7 MiB, scene "), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("(image 11 MiB, scene "), std::string::npos) << err_.str();
   EXPECT_NE(err_.str().find("but only 1 MiB of memory is available"), std::string::npos)
       << err_.str();
   EXPECT_FALSE(fs::exists(out));
