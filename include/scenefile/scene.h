@@ -106,7 +106,8 @@ struct Camera {
 /// Scene files and instruction files hold none; a renderer given no view of
 /// its own renders at this one.
 struct View {
-  /// The vertical field of view in degrees, in (0, 180).
+  /// The vertical field of view in degrees, in [kMinFovDegrees, kMaxFovDegrees]
+  /// (validation.h, checkView).
   double verticalFovDegrees = 60.0;
   /// The image's width over its height, where the file says.
   std::optional<double> aspectRatio;

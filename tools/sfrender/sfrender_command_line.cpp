@@ -87,7 +87,8 @@ void addImageOptions(CLI::App& app, SfrenderOptions& o) {
 
 void addLimitOptions(CLI::App& app, SfrenderOptions& o) {
   app.add_option("--max-pixels", o.limits.maxPixels,
-                 "refuse an image of more pixels (width x height)")
+                 "refuse an image, or a --merge tile's whole image, of more pixels (width x "
+                 "height)")
       ->transform(wholeNumberIn(1, std::int64_t{scene::kMaxImageSide} * scene::kMaxImageSide));
   app.add_option("--max-spp", o.limits.maxSpp, "refuse more samples per pixel than this")
       ->transform(wholeNumberIn(1, kSppCeiling));
