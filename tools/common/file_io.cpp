@@ -168,10 +168,11 @@ std::string folderProblem(const fs::path& folder, int error) {
 
 // The temporary's file name in `folder`: `.NAME.tmp-XXXXXX`, then `extension`
 // where it is kept. A target's name may be as long as the file system allows
-// (NAME_MAX, 255 bytes on most), and its temporary's is 12 bytes longer, and
-// the extension's more where it is kept: where the whole would be too long, NAME is cut short, at
-// the first byte of a character so that the name stays UTF-8 (and the extension too, should it
-// alone leave no room). mkstemp keeps it unique whatever is cut.
+// (NAME_MAX, 255 bytes on most), and its temporary's is 12 bytes longer (and
+// the extension's more): where the whole would be too long, NAME is cut
+// short, at the first byte of a character so that the name stays UTF-8 (and
+// the extension too, should it alone leave no room). mkstemp keeps it unique
+// whatever is cut.
 struct TemporaryName {
   std::string name;
   std::size_t suffix;  // the bytes after XXXXXX: the extension kept
