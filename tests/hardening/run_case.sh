@@ -12,6 +12,9 @@
 #   same A B / differs A B / absent PATH / present PATH / temporaries
 #                     print what holds, for the expected output to pin down
 #   skip WHY          ends the case as skipped (exit 77)
+#   needs_address_space_limits
+#                     skips the case under the sanitizers (SCENEFILE_SANITIZED
+#                     set), whose shadow memory no `ulimit -v` holds
 # and $SFRENDER, $SFCONVERT, $SFCHECK (the tools at their usual test size
 # for sfrender: 16x12) and $SOURCE (the source folder).
 set -uo pipefail
@@ -46,7 +49,10 @@ temporaries() {
   echo "temporaries: ${left:-none}"
 }
 skip() { echo "skipped: $*" >&2; exit 77; }
-export -f run same differs absent present temporaries skip
+needs_address_space_limits() {
+  [[ -z ${SCENEFILE_SANITIZED:-} ]] || skip "the sanitizers reserve more address space than a limit holds"
+}
+export -f run same differs absent present temporaries skip needs_address_space_limits
 
 got=$(source "$case" 2>&1 </dev/null)
 status=$?
