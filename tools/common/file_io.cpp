@@ -197,6 +197,14 @@ TemporaryName temporaryName(const fs::path& folder, const std::string& name,
   return {"." + name.substr(0, kept) + mark + extension, extension.size()};
 }
 
+// Why a file of `mode` is none the tools read or replace: a folder, a
+// device, a pipe, a socket; nothing for a regular file.
+std::optional<std::string> notRegularFile(mode_t mode) {
+  if (S_ISDIR(mode)) return "it is a directory";
+  if (!S_ISREG(mode)) return "it is " + fileKind(mode) + ", not a regular file";
+  return std::nullopt;
+}
+
 // Flushes a folder's entries, so that a rename in it survives a crash too.
 // Only a power loss needs this, so a failure is not an error.
 void syncFolder(const fs::path& folder) {
@@ -228,12 +236,8 @@ bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& e
   // a terminal that no path names.
   struct stat info {};
   if (::stat(target.c_str(), &info) == 0) {
-    if (S_ISDIR(info.st_mode)) {
-      error = "it is a directory";
-      return false;
-    }
-    if (!S_ISREG(info.st_mode)) {
-      error = "it is " + fileKind(info.st_mode) + ", not a regular file";
+    if (std::optional<std::string> problem = notRegularFile(info.st_mode)) {
+      error = *problem;
       return false;
     }
   } else if (errno == ELOOP) {
@@ -392,9 +396,7 @@ std::optional<std::string> regularFileProblem(const fs::path& path) {
   if (::stat(path.c_str(), &info) != 0) {
     return errno == ELOOP ? std::string(kLinkLoop) : std::string(std::strerror(errno));
   }
-  if (S_ISDIR(info.st_mode)) return "it is a directory";
-  if (!S_ISREG(info.st_mode)) return "it is " + fileKind(info.st_mode) + ", not a regular file";
-  return std::nullopt;
+  return notRegularFile(info.st_mode);
 }
 
 }  // namespace tools
