@@ -80,4 +80,12 @@ std::string OutputPlan::describe(const OutputClash& clash) const {
          (earlier.path == output.path ? "" : ", which is the same file");
 }
 
+bool writesOverInput(const std::string& input, const std::string& output) {
+  if (input.empty()) return false;
+  OutputPlan plan;
+  plan.addInput(input);
+  plan.addOutput(output, input);
+  return plan.firstClash().has_value();
+}
+
 }  // namespace tools

@@ -70,4 +70,8 @@ class OutputPlan {
   std::vector<Output> outputs_;
 };
 
+// Whether writing `output` would write over `input` (a plan of one of
+// each); false for no input ("", the default scene) or standard input.
+bool writesOverInput(const std::string& input, const std::string& output);
+
 }  // namespace tools

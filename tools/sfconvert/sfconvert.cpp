@@ -64,14 +64,6 @@ std::filesystem::path bufferPathOf(const std::string& output) {
   return gltfFile.parent_path() / (gltfFile.stem().string() + ".bin");
 }
 
-// Whether `output`, written from `input`, would be the input file.
-bool isInputFile(const std::string& input, const std::string& output) {
-  OutputPlan plan;
-  plan.addInput(input);
-  plan.addOutput(output, input);
-  return plan.firstClash().has_value();
-}
-
 // A conversion's plan, worked out from the command line before anything is
 // read: the output format, and the buffer file a .gltf may get.
 struct Plan {
@@ -138,7 +130,7 @@ std::optional<int> Converter::plan() {
                   "redirect it to a file or a pipe (> out.glb), or name the output file");
     return toInt(ExitCode::Usage);
   }
-  if (!plan_.toStdout && isInputFile(o_.input, o_.output)) {
+  if (!plan_.toStdout && writesOverInput(o_.input, o_.output)) {
     output_.error("the output '" + printableText(o_.output) +
                   "' is the input file; sfconvert never writes over its input");
     return toInt(ExitCode::InvalidInput);
@@ -164,7 +156,7 @@ std::optional<int> Converter::planBuffer() {
   }
   plan_.bufferPath = bufferPathOf(o_.output);
   plan_.bufferFile = plan_.bufferPath.filename().string();
-  if (isInputFile(o_.input, plan_.bufferPath.string())) {
+  if (writesOverInput(o_.input, plan_.bufferPath.string())) {
     output_.error("the buffer file '" + printableText(plan_.bufferPath.string()) +
                   "' is the input file; sfconvert never writes over its input");
     return toInt(ExitCode::InvalidInput);

@@ -286,10 +286,7 @@ std::optional<int> Renderer::targetRefusal() {
   const fs::path& target = job_.target;
   // Before the extension's check, so that an OUTPUT_FILE naming its own
   // instruction file is told so, not that .txt is no image format.
-  OutputPlan plan;
-  plan.addInput(o_.input);
-  plan.addOutput(target.string(), o_.input);
-  if (!o_.input.empty() && plan.firstClash()) {
+  if (writesOverInput(o_.input, target.string())) {
     output_.error("the output '" + printableText(target.string()) +
                   "' is the input file; sfrender never writes over its input");
     return toInt(ExitCode::InvalidInput);
