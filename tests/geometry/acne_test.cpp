@@ -1,4 +1,4 @@
-// RENDERING.md, "Accuracy that is owed": no self-shadowing speckle ("acne")
+// docs/ACCURACY.md, "Acne": no self-shadowing speckle ("acne")
 // at any scale from 1e-6 to 1e6, nor for scenes placed up to 1e6 away from
 // the origin.
 //

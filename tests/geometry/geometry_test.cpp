@@ -1,4 +1,4 @@
-// RENDERING.md, "Accuracy that is owed", geometry: at one sample per pixel,
+// docs/ACCURACY.md, "Geometry": at one sample per pixel,
 // the object each pixel shows agrees with an exact ray cast through the
 // pixel centres on all pixels but those whose centre ray passes within 1e-6
 // (relative to the scene's size) of a silhouette edge.

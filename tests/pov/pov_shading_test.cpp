@@ -1,6 +1,6 @@
 // The shaded comparison: for scenes of opaque objects, POV-Ray's render of
 // an export and sfrender's render differ little. The figures printed here
-// are those of docs/ACCURACY.md ("POV-Ray"), with the reasons for what
+// are those of docs/ACCURACY.md ("Shading"), with the reasons for what
 // remains; the bounds below keep them from growing unnoticed.
 #include <gtest/gtest.h>
 
