@@ -17,7 +17,7 @@
 # RMSE through OpenImageIO (render_probe compare; 8-bit images as values 0
 # to 1). Writes docs/perf/equal-error.dat and docs/perf/equal-error.png
 # (error against CPU time, log-log, a panel per scene) and the section
-# "Equal error" of docs/PERFORMANCE.md: a table per scene and, for POV-Ray's
+# "Equal error" of docs/perf/RESULTS.md: a table per scene and, for POV-Ray's
 # +A0.3 +AM2 +R3, the ratio of its CPU time to the time sfrender needs for
 # the same RMSE, interpolated in log-log between sfrender's points.
 #
@@ -50,7 +50,7 @@ spps=${EQ_SPPS:-1 2 4 8 16}
 adaptive_points=${EQ_ADAPTIVE:-0.3:16 0.2:16 0.15:16 0.1:16 0.05:16 0.03:16 0.1:64 0.03:64}
 pov_points=${EQ_POV_POINTS:-0.3:2:3 0.3:2:2 0.3:2:4 0.3:1:3 0.1:1:3 0.1:2:3 0.03:1:3 0.03:2:3}
 data=${EQ_DIR:-/tmp/scenefile-equal-error}
-doc=$root/docs/PERFORMANCE.md
+doc=$root/docs/perf/RESULTS.md
 plots=$root/docs/perf
 
 die() {
@@ -282,7 +282,7 @@ section=$work/equal-error.md
     "error), linear in log(time) against log(RMSE) between the two points whose errors bracket" \
     "it; beyond the envelope's ends, its nearest segment extended (marked *extrapolated*)."
   echo
-  echo "![Error against CPU time](perf/equal-error.png)"
+  echo "![Error against CPU time](equal-error.png)"
   echo
   for s in $scenes; do
     echo "### $s"

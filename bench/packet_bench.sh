@@ -7,8 +7,8 @@
 # depth 5, with `render_probe time --packets 1` and `--packets 0` alternately,
 # ROUNDS times each, at 2 threads and at 1, and prints the median render
 # times (parse and build apart) and their ratio. It stops if the two images
-# differ (render_probe's rgb_fnv1a). The figures in docs/PERFORMANCE.md,
-# "Packet tracing", are its output, with the instruction counts measured by
+# differ (render_probe's rgb_fnv1a). The figures in
+# docs/history/PERFORMANCE.md, "Packet tracing", are its output, with the instruction counts measured by
 # hand (see there).
 #
 # Environment: ROUNDS (5), PACKET_BENCH_DIR (/tmp/scenefile-packet-bench).

@@ -10,7 +10,7 @@
 # rounds of one timed run of each, alternating which goes first, under
 # /usr/bin/time -v (wall time and peak RSS). It then checks that the two
 # images show the same scene (image_compare), and writes the figures into
-# docs/PERFORMANCE.md, between the markers of its own section.
+# docs/perf/RESULTS.md, between the markers of its own section.
 #
 # Environment: RENDER_BENCH_OBJECTS ("1000 100000"), RENDER_BENCH_RUNS (3),
 # RENDER_BENCH_SEED (1), RENDER_BENCH_THREADS (2),
@@ -29,7 +29,7 @@ width=1920
 height=1080
 depth=5
 data=${RENDER_BENCH_DIR:-/tmp/scenefile-render-bench}
-doc=$root/docs/PERFORMANCE.md
+doc=$root/docs/perf/RESULTS.md
 
 die() {
   echo "render_bench: $*" >&2
@@ -257,7 +257,7 @@ section=$work/section.md
   echo '<!-- END render-benchmark -->'
 } >"$section"
 
-# --- docs/PERFORMANCE.md ------------------------------------------------------
+# --- docs/perf/RESULTS.md ------------------------------------------------------
 [[ -f $doc ]] || die "$doc is missing: run bench/run.sh first, which writes its introduction"
 if grep -q '^<!-- BEGIN render-benchmark' "$doc"; then
   awk -v section="$section" '

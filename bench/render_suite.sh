@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The rendering suite: bash bench/render_suite.sh [BUILD_DIR]   (or `make bench`)
 #
-# Four parts, each written into its own section of docs/PERFORMANCE.md, with
+# Four parts, each written into its own section of docs/perf/RESULTS.md, with
 # plots (gnuplot, PNG) under docs/perf/:
 #
 # 1. Against POV-Ray 3.7 at 1920x1080, 1 sample per pixel, depth 5, 2 threads,
@@ -55,7 +55,7 @@ width=1920
 height=1080
 depth=5
 data=${SUITE_DIR:-/tmp/scenefile-render-suite}
-doc=$root/docs/PERFORMANCE.md
+doc=$root/docs/perf/RESULTS.md
 plots=$root/docs/perf
 
 die() {
@@ -262,7 +262,7 @@ EOF
         "${S_peak[$s]} MB | ${P_peak[$s]} MB |"
     done
     echo
-    echo "![First pixel and render time of both programs](perf/against-povray.png)"
+    echo "![First pixel and render time of both programs](against-povray.png)"
     echo
     echo "**1,000,000 objects, 1920x1080 at 1 spp, parsed, built and rendered in under 10 s with" \
       "a peak under 1.5 GB: $big_ok** — slowest of the $big_runs runs $(fmt 2 "${S_walls_all[$big]}") s" \
@@ -378,11 +378,11 @@ EOF
       "$(thousands "$last") objects: $growth_ok** ($(fmt 0 "${K_ray[$first]}") ns to" \
       "$(fmt 0 "${K_ray[$last]}") ns, $(fmt 2 "$growth")×)."
     echo
-    echo "![Parse, build and render time against N](perf/scaling.png)"
+    echo "![Parse, build and render time against N](scaling.png)"
     echo
-    echo "![Time per primary ray against log N](perf/ray-time.png)"
+    echo "![Time per primary ray against log N](ray-time.png)"
     echo
-    echo "![Parse time against file size](perf/parse-size.png)"
+    echo "![Parse time against file size](parse-size.png)"
     echo
     echo '```'
     for n in $sizes; do printf '%s' "${K_raw[$n]}"; done
@@ -477,7 +477,7 @@ EOF
     {
       echo "### $s"
       echo
-      echo "![Error against time, $s](perf/error-$s.png)"
+      echo "![Error against time, $s](error-$s.png)"
       echo
       echo "Reference: $ref_spp spp, depth 8, $(fmt 1 "$ref_time") s. Each point is one run."
       echo

@@ -7,7 +7,7 @@
 #   read_bench --once     one parse in a fresh process: its peak memory
 #   povray                the same scene as POV-Ray SDL, rendered at 1x1 pixel
 # so that both programs see the same machine state. It writes the figures
-# into docs/PERFORMANCE.md, between the markers of its own section.
+# into docs/perf/RESULTS.md, between the markers of its own section.
 #
 # Environment: BENCH_OBJECTS (1000000), BENCH_SEED (1), BENCH_ROUNDS (3),
 # BENCH_DIR (/tmp/scenefile-bench; never inside the repository),
@@ -23,7 +23,7 @@ seed=${BENCH_SEED:-1}
 rounds=${BENCH_ROUNDS:-3}
 runs=5
 data=${BENCH_DIR:-/tmp/scenefile-bench}
-doc=$root/docs/PERFORMANCE.md
+doc=$root/docs/perf/RESULTS.md
 
 die() {
   echo "bench: $*" >&2
@@ -223,28 +223,15 @@ section=$work/section.md
   echo '<!-- END read-benchmark -->'
 } >"$section"
 
-# --- docs/PERFORMANCE.md ------------------------------------------------------
+# --- docs/perf/RESULTS.md ------------------------------------------------------
 if [[ ! -f $doc ]]; then
   mkdir -p "$(dirname "$doc")"
   cat >"$doc" <<'EOF'
-# Performance
+# Benchmark results
 
-How fast the library reads scene files, and how much memory it needs; and
-how fast `sfrender` renders, against POV-Ray. The figures below are written
-by the benchmarks under `bench/`; to reproduce them on your machine, run
-
-    make bench
-
-(or `bash bench/run.sh BUILD_DIR` and `bash bench/render_bench.sh BUILD_DIR`
-on an existing Release build). The reading benchmark generates a scene of a
-million objects (about 120 MB) under `/tmp/scenefile-bench`, times
-`scene::parseSceneFile` on it, measures the peak memory of one parse,
-compares with POV-Ray when `povray` is installed, and rewrites its section of
-this file. The target is at least 200 MB/s on one core, with a peak memory of
-at most twice the size of the scene model. The render benchmark renders
-scenes of 1,000 and 100,000 objects with `sfrender` and with POV-Ray 3.7 at
-the same settings, under `/tmp/scenefile-render-bench`, and rewrites its own
-section. Each section states the date and the machine it was measured on.
+Every benchmark's last run in full, with its raw figures: each section is
+written by the script it names (`make bench`) and rewritten by its next run.
+[PERFORMANCE.md](../PERFORMANCE.md) sums them up.
 
 EOF
 fi

@@ -7,7 +7,7 @@
 #    100,000 and 1,000,000 objects with Embree's user geometry (the renderer's
 #    own object test in its callbacks) one ray at a time and in packets of 4
 #    and 8, and render::renderObjectIds over the same rays, on 1 and 2
-#    threads; section "Against Embree" of docs/PERFORMANCE.md.
+#    threads; section "Against Embree" of docs/perf/RESULTS.md.
 # 2. float: bench/float_trace, a single-precision tracer of primary and
 #    shadow rays against the double renderer: time per ray on floor-1000,
 #    exact ids, self-intersection, acne and RMSE there and on the hard scenes
@@ -29,7 +29,7 @@ runs=${TRACERS_RUNS:-3}
 width=${TRACERS_WIDTH:-1920}
 height=${TRACERS_HEIGHT:-1080}
 data=${TRACERS_DIR:-/tmp/scenefile-render-suite}
-doc=$root/docs/PERFORMANCE.md
+doc=$root/docs/perf/RESULTS.md
 
 die() {
   echo "tracers: $*" >&2

@@ -121,8 +121,8 @@ inline bool hitsBox(const Bounds& b, const BoxRay& r, double tMin, double tMax) 
   // All three slabs, then one test: the interval only narrows from slab to
   // slab, so leaving early changes no answer, and the branch at each slab,
   // which goes either way as shadow rays meet or miss their cell's boxes,
-  // cost more than the slabs it skipped (docs/PERFORMANCE.md, "Big scenes:
-  // bins, planes and pages").
+  // cost more than the slabs it skipped (docs/history/PERFORMANCE.md, "Big
+  // scenes: bins, planes and pages").
   for (int i = 0; i < 3; ++i) {
     double tNear = (b.lo[i] - r.origin[i]) * r.inverseDirection[i];
     double tFar = (b.hi[i] - r.origin[i]) * r.inverseDirection[i];

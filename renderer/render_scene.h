@@ -195,8 +195,8 @@ class RenderScene {
   // the rectangle of each face that boxes reach, at most 1024 x 1024.
   // Against whole faces of 4 sqrt(n) cells a side (at most 512), the same
   // images and 5% less CPU at floor-100000 in 1080p, 20% less rendering at
-  // floor-1000000 (docs/PERFORMANCE.md, "Light grids fitted to their
-  // boxes"); 16 a box was no quicker and built larger grids.
+  // floor-1000000 (docs/history/PERFORMANCE.md, "Light grids fitted to
+  // their boxes"); 16 a box was no quicker and built larger grids.
   static constexpr DirectionGrid::FaceCells kLightGridCells{8.0, 8.0, 1,
                                                             std::uint64_t{1024} * 1024};
   // The world box of BVH item `item`, as the constructor made it.

@@ -15,8 +15,8 @@ namespace scene {
 // Faults in, for writing, the whole pages within [begin, end) without
 // writing a byte, where Linux offers MADV_POPULATE_WRITE (5.14 on): one
 // call maps them all, at two thirds of the cost of faulting them in at
-// their first writes on the machine measured (docs/PERFORMANCE.md, "Big
-// scenes: bins, planes and pages"). Elsewhere, or where the call fails, it
+// their first writes on the machine measured (docs/history/PERFORMANCE.md,
+// "Big scenes: bins, planes and pages"). Elsewhere, or where the call fails, it
 // does nothing, and the writes fault the pages in as before.
 inline void populatePagesForWriting(const void* begin, const void* end) {
 #if defined(__linux__) && defined(MADV_POPULATE_WRITE)

@@ -1,6 +1,7 @@
 #!/bin/bash
-# A scene file big enough to be read in parts (4 MiB and more; docs/
-# PERFORMANCE.md, "Reading in parts") renders the same image at 1 and 3
+# A scene file big enough to be read in parts (4 MiB and more;
+# docs/history/PERFORMANCE.md, "Reading in parts, and the build's boxes in
+# order") renders the same image at 1 and 3
 # threads, and a damaged one gets the same diagnostics, at the same line, and
 # the same exit status. Arguments: BIN_DIR WORK_DIR.
 set -euo pipefail

@@ -30,9 +30,9 @@ constexpr std::size_t kPrefaultFrom = std::size_t{16} << 20;
 // The whole pages of [begin, end) faulted in, ready to be written, on a
 // thread of its own, which the destructor waits for. A fresh page's first
 // touch costs more than the copy into it on these machines
-// (docs/PERFORMANCE.md, "Huge pages dropped"), and a read on one thread
+// (docs/history/PERFORMANCE.md, "Huge pages dropped"), and a read on one thread
 // paid every one: the 119 MB of a 1,000,000-object scene file took 70 ms
-// (docs/PERFORMANCE.md, "Big scenes: memory kept, and fewer passes").
+// (docs/history/PERFORMANCE.md, "Big scenes: memory kept, and fewer passes").
 // MADV_POPULATE_WRITE (Linux 5.14) changes no byte that a program could
 // have written; where the system lacks it, or no thread starts, nothing
 // happens.

@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
   // (the file's text, the parts' objects, the records, the BVH's build list)
   // paid a first touch on every page, although the one before it had just
   // freed as much: 60,000 of 280,000 page faults at 1,000,000 objects
-  // (docs/PERFORMANCE.md, "Big scenes: memory kept, and fewer passes").
+  // (docs/history/PERFORMANCE.md, "Big scenes: memory kept, and fewer
+  // passes").
   mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   int status = tools::runSfrender(argc, argv, tools::processStreams());

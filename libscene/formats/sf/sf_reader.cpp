@@ -319,8 +319,8 @@ class SceneFileParser {
   // A part's room for its next kObjectsPopulatedAhead objects, faulted in
   // at once when the objects reach the end of what was faulted in so far:
   // a fresh page costs more to fault in write by write than the object
-  // written there (docs/PERFORMANCE.md, "Big scenes: bins, planes and
-  // pages"), and room only just ahead of the objects costs no memory for
+  // written there (docs/history/PERFORMANCE.md, "Big scenes: bins, planes
+  // and pages"), and room only just ahead of the objects costs no memory for
   // lines that only look like records.
   void populateRoomAhead() {
     std::vector<Object>& objects = scene_.objects;
