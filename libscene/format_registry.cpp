@@ -10,14 +10,17 @@ namespace scene {
 
 std::span<const FormatInfo> formats() {
   // Built once, on first use, and never changed: a table of constants.
-  static const FormatInfo kRows[] = {sceneFileFormat(), instructionFileFormat(), gltfFormat(),
-                                     glbFormat(), povFormat()};
+  static const FormatInfo kRows[] = {
+#define SCENEFILE_FORMAT(enumerator, name, folder, row) row(),
+#include "scenefile/formats.def"
+#undef SCENEFILE_FORMAT
+  };
   return kRows;
 }
 
 const FormatInfo& formatInfo(Format format) {
-  // The rows are in the enum's order, which tests/format_registry_test.cpp
-  // holds to.
+  // The rows are in the enum's order: both are made from formats.def, and
+  // libscene/format_registry_test.cpp checks each row's own format.
   return formats()[static_cast<std::size_t>(format)];
 }
 

@@ -19,7 +19,7 @@ const std::string kScene = testing::kCameraRecord +
 
 TEST(FormatRegistry, HasOneCompleteRowPerFormatInTheOrderOfTheList) {
   std::vector<Format> listed = {
-#define SCENEFILE_FORMAT(enumerator, name, folder) Format::enumerator,
+#define SCENEFILE_FORMAT(enumerator, name, folder, row) Format::enumerator,
 #include "scenefile/formats.def"
 #undef SCENEFILE_FORMAT
   };

@@ -20,7 +20,7 @@ struct ConvertedFiles;
 
 /// A file format of the suite (scenefile/formats.def lists them).
 enum class Format : std::uint8_t {
-#define SCENEFILE_FORMAT(enumerator, name, folder) enumerator,
+#define SCENEFILE_FORMAT(enumerator, name, folder, row) enumerator,
 #include "scenefile/formats.def"
 #undef SCENEFILE_FORMAT
 };

@@ -1,16 +1,15 @@
 // The registry's rows, one function per format, each defined in its format's
-// folder (libscene/formats/NAME/NAME_format.cpp) beside its reader and
-// writer. Only libscene/format_registry.cpp calls them.
+// folder (libscene/formats/FOLDER/FOLDER_format.cpp) beside its reader and
+// writer, and named in scenefile/formats.def. Only
+// libscene/format_registry.cpp calls them.
 #pragma once
 
 #include "scenefile/format.h"
 
 namespace scene {
 
-FormatInfo sceneFileFormat();        // formats/sf
-FormatInfo instructionFileFormat();  // formats/instruction
-FormatInfo gltfFormat();             // formats/gltf
-FormatInfo glbFormat();              // formats/gltf
-FormatInfo povFormat();              // formats/pov
+#define SCENEFILE_FORMAT(enumerator, name, folder, row) FormatInfo row();
+#include "scenefile/formats.def"
+#undef SCENEFILE_FORMAT
 
 }  // namespace scene
