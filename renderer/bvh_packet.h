@@ -3,7 +3,7 @@
 // for all of them at once in SIMD lanes, with every ray visiting exactly the
 // leaves, in exactly the order, that Bvh::traverse visits for it alone.
 //
-// Why the hits are the same, bit for bit (docs/RENDERING.md, "Packets"): a
+// Why the hits are the same, bit for bit (docs/TRACING.md, "Packets"): a
 // ray's closest hit is the first item, in its own visiting order, that
 // reaches the least t under the strict t < tMax test, so a ray that visits
 // the same items in the same order with the same tMax before each ends with

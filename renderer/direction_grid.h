@@ -14,7 +14,7 @@
 //
 // Conservative: a cell lists every box that meets its cone widened by
 // kMargin in tangent coordinates (relative above 1), a million times the
-// rounding of a lookup or of a box's corners (docs/RENDERING.md, "Direction
+// rounding of a lookup or of a box's corners (docs/TRACING.md, "Direction
 // grids"). A cell that would list more than its limit lists nothing and is
 // full: its rays walk the BVH, as do rays outside every window.
 #pragma once
@@ -55,7 +55,7 @@ class DirectionGrid {
   static constexpr double kMargin = 1e-6;
   /// Boxes nearer the apex than this fraction of the farthest box corner
   /// are listed in every cell: near the apex, a shadow ray's rounding moves
-  /// its direction by more than the margin (docs/RENDERING.md).
+  /// its direction by more than the margin (docs/TRACING.md).
   static constexpr double kNearApex = 1e-7;
   /// Lookups farther from the apex than this multiple of the farthest box
   /// corner are not answered (the BVH answers them), for the same reason:

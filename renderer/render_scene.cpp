@@ -200,7 +200,7 @@ RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids
   for (const scene::Light& light : scene.lights) {
     lights_.push_back(RenderLight{light.position(), light.colour});
   }
-  // A grid per light, for its shadow rays (docs/RENDERING.md, "Direction
+  // A grid per light, for its shadow rays (docs/TRACING.md, "Direction
   // grids"); not for a scene of planes alone, which has nothing to list.
   if (lightGrids && boxes.size() >= kMinLightGridObjects) buildLightGrids(boxes, threads);
 }
@@ -543,7 +543,7 @@ std::uint32_t RenderScene::shadowCell(std::size_t light, const glm::dvec3& point
   // normal (at most sqrt(3) times its largest component) and a rounding:
   // within `slack`, which must be a billionth of the distance or less, so
   // that the ray's direction is that of fromLight to well within the
-  // grid's margin (docs/RENDERING.md, "Direction grids").
+  // grid's margin (docs/TRACING.md, "Direction grids").
   double largestError = std::max({pointError.x, pointError.y, pointError.z});
   double slack = 2.0 * largestError + 0x1p-51 * DirectionGrid::largestMagnitude(point);
   if (!(slack <= 1e-9 * DirectionGrid::largestMagnitude(fromLight))) return DirectionGrid::kNoCell;

@@ -203,7 +203,7 @@ class RenderScene {
   Bounds itemBounds(std::uint32_t item) const;
 
   // The grid of the bounded objects' directions from `eye` in `window`
-  // (docs/RENDERING.md, "Direction grids"); not built (grid.built() false)
+  // (docs/TRACING.md, "Direction grids"); not built (grid.built() false)
   // where the objects would cover too many cells.
   EyeGrid eyeGrid(const glm::dvec3& eye, const GridWindow& window) const;
   // closestHits for camera rays: a ray leaving the grid's apex whose cell
