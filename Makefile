@@ -22,10 +22,11 @@ run: build
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
-# The API reference, from the public headers (Doxygen): $(BUILD_DIR)/docs/html.
+# The API reference, from the public headers (Doxygen): $(BUILD_DIR)/docs/html;
+# and the pictures of docs/GUIDE.md, from the scenes in the repository.
 docs: configure
-	@cmake --build $(BUILD_DIR) --target docs
-	@echo "The API reference is in $(BUILD_DIR)/docs/html/index.html."
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target docs docs-images
+	@echo "The API reference is in $(BUILD_DIR)/docs/html/index.html; the guide's pictures in docs/images/guide."
 
 bench: build
 	@bash bench/run.sh $(BUILD_DIR)
