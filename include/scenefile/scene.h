@@ -25,13 +25,27 @@
 
 namespace scene {
 
-/// The four primitives of FORMATS.md, each in its local space.
-enum class ObjectKind : std::uint8_t { Plane, Sphere, Cylinder, Cube };
+/// The four primitives of FORMATS.md, each in its local space
+/// (scenefile/object_kinds.def lists them).
+enum class ObjectKind : std::uint8_t {
+#define SCENEFILE_OBJECT_KIND(enumerator, record, pov) enumerator,
+#include "scenefile/object_kinds.def"
+#undef SCENEFILE_OBJECT_KIND
+};
+
+/// Every ObjectKind, in the order of scenefile/object_kinds.def.
+inline constexpr ObjectKind kObjectKinds[] = {
+#define SCENEFILE_OBJECT_KIND(enumerator, record, pov) ObjectKind::enumerator,
+#include "scenefile/object_kinds.def"
+#undef SCENEFILE_OBJECT_KIND
+};
 
 /// The record name as both formats spell it: "PLANE", "SPHERE", ...
 std::string_view objectKindName(ObjectKind kind);
 /// The kind whose record name is exactly `name`, if any.
 std::optional<ObjectKind> objectKindFromName(std::string_view name);
+/// The record names as a message offers them: "PLANE, SPHERE, CYLINDER or CUBE".
+std::string objectKindChoices();
 
 /// The Phong material of FORMATS.md. Scene files carry only `colour`; the
 /// other values then keep these defaults.

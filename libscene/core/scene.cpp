@@ -1,12 +1,16 @@
 #include "scenefile/scene.h"
 
 #include <array>
+#include <iterator>
 
 namespace scene {
 
 namespace {
-constexpr std::array<std::string_view, 4> kObjectKindNames = {"PLANE", "SPHERE", "CYLINDER",
-                                                              "CUBE"};
+constexpr std::string_view kObjectKindNames[] = {
+#define SCENEFILE_OBJECT_KIND(enumerator, record, pov) #record,
+#include "scenefile/object_kinds.def"
+#undef SCENEFILE_OBJECT_KIND
+};
 constexpr std::array<std::string_view, 7> kMaterialNames = {
     "AMBIENT", "DIFFUSE", "SPECULAR", "SHININESS", "REFLECTIVITY", "TRANSPARENCY", "RI"};
 constexpr std::array<std::string_view, 5> kTransformNames = {"SCALE", "TRANSLATE", "ROTATE_X",
@@ -18,10 +22,19 @@ std::string_view objectKindName(ObjectKind kind) {
 }
 
 std::optional<ObjectKind> objectKindFromName(std::string_view name) {
-  for (std::size_t i = 0; i < kObjectKindNames.size(); ++i) {
-    if (kObjectKindNames[i] == name) return static_cast<ObjectKind>(i);
+  for (ObjectKind kind : kObjectKinds) {
+    if (objectKindName(kind) == name) return kind;
   }
   return std::nullopt;
+}
+
+std::string objectKindChoices() {
+  std::string text;
+  for (std::size_t i = 0; i < std::size(kObjectKinds); ++i) {
+    if (i > 0) text += i + 1 == std::size(kObjectKinds) ? " or " : ", ";
+    text += objectKindName(kObjectKinds[i]);
+  }
+  return text;
 }
 
 std::string_view materialPropertyName(MaterialProperty property) {

@@ -35,7 +35,11 @@ constexpr std::array<std::string_view, 18> kLineKeywords = {
     "AMBIENT",     "DIFFUSE",  "SPECULAR",  "SHININESS",    "REFLECTIVITY", "TRANSPARENCY",
     "RI",          "SCALE",    "TRANSLATE", "ROTATE_X",     "ROTATE_Y",     "ROTATE_Z"};
 
-constexpr std::array<std::string_view, 4> kObjectKinds = {"PLANE", "SPHERE", "CYLINDER", "CUBE"};
+constexpr std::string_view kObjectKindNames[] = {
+#define SCENEFILE_OBJECT_KIND(enumerator, record, pov) #record,
+#include "scenefile/object_kinds.def"
+#undef SCENEFILE_OBJECT_KIND
+};
 
 // The property keywords, the block each belongs to and how many numbers
 // it takes.
@@ -258,7 +262,7 @@ class InstructionParser {
     std::size_t expectedTokens = *block == Block::Object ? 3 : 2;
     if (*block == Block::Object && cursor_.tokenCount() < 3) {
       out_.error(DiagnosticCode::TokenCount, cursor_.endOfLine(),
-                 "START OBJECT needs the object's kind (PLANE, SPHERE, CYLINDER or CUBE)");
+                 "START OBJECT needs the object's kind (" + objectKindChoices() + ")");
     } else if (cursor_.tokenCount() > expectedTokens) {
       out_.error(DiagnosticCode::TokenCount, cursor_.tokenSpan(expectedTokens),
                  "unexpected text after START " + std::string(name));
@@ -275,19 +279,18 @@ class InstructionParser {
           object.kind = *kind;
         } else {
           Diagnostic& d = out_.error(DiagnosticCode::UnknownObjectKind, cursor_.tokenSpan(2),
-                                     "unknown object kind '" +
-                                         std::string(kindName.substr(0, 40)) +
-                                         "', expected PLANE, SPHERE, CYLINDER or CUBE");
-          if (auto guess = suggestKeyword(kindName, kObjectKinds)) {
+                                     "unknown object kind '" + std::string(kindName.substr(0, 40)) +
+                                         "', expected " + objectKindChoices());
+          if (auto guess = suggestKeyword(kindName, kObjectKindNames)) {
             d.fixIt = FixIt{cursor_.tokenSpan(2), std::string(*guess)};
             d.hint = "did you mean '" + std::string(*guess) + "'?";
-            if (keywordInOtherCase(kindName, kObjectKinds)) {
+            if (keywordInOtherCase(kindName, kObjectKindNames)) {
               // "sphere" is read as the SPHERE it means.
               d.hint = "keywords are upper case: " + d.hint;
               object.kind = *objectKindFromName(*guess);
             }
           }
-          if (!keywordInOtherCase(kindName, kObjectKinds)) open.valuesOk = false;
+          if (!keywordInOtherCase(kindName, kObjectKindNames)) open.valuesOk = false;
         }
       } else {
         open.valuesOk = false;

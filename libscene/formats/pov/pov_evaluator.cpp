@@ -95,7 +95,7 @@ void PovEvaluator::declare(const PovToken& d) {
   PovSymbol symbol;
   const PovToken& t = peek();
   std::string_view w = t.kind == PovTokenKind::Word ? t.text : std::string_view{};
-  if (w == "sphere" || w == "box" || w == "cylinder" || w == "plane" || w == "object") {
+  if (povObjectKind(w) || w == "object") {
     symbol.kind = PovSymbolKind::Object;
     symbol.object = std::make_shared<PovPendingObject>(objectStatement());
   } else if (w == "pigment" || w == "finish" || w == "texture" || w == "interior" ||

@@ -7,6 +7,15 @@ namespace scene {
 
 namespace {
 
+constexpr std::string_view kObjectKeywords[] = {
+#define SCENEFILE_OBJECT_KIND(enumerator, record, pov) #pov,
+#include "scenefile/object_kinds.def"
+#undef SCENEFILE_OBJECT_KIND
+};
+
+// The shapes stand in the order a did-you-mean prefers on a tie (sphere
+// before plane), not in object_kinds.def's; statesEveryObject holds them to
+// that list.
 // clang-format off
 constexpr std::string_view kStatements[] = {
     "camera", "light_source", "sphere", "box", "cylinder", "plane", "object", "global_settings",
@@ -45,11 +54,30 @@ constexpr std::string_view kDirectives[] = {
 // clang-format on
 
 template <std::size_t N>
-bool contains(const std::string_view (&list)[N], std::string_view word) {
+constexpr bool contains(const std::string_view (&list)[N], std::string_view word) {
   return std::find(std::begin(list), std::end(list), word) != std::end(list);
 }
 
+constexpr bool statesEveryObject() {
+  for (std::string_view keyword : kObjectKeywords) {
+    if (!contains(kStatements, keyword)) return false;
+  }
+  return true;
+}
+static_assert(statesEveryObject(), "a POV-Ray object of object_kinds.def is no statement");
+
 }  // namespace
+
+std::string_view povObjectKeyword(ObjectKind kind) {
+  return kObjectKeywords[static_cast<std::size_t>(kind)];
+}
+
+std::optional<ObjectKind> povObjectKind(std::string_view word) {
+  for (ObjectKind kind : kObjectKinds) {
+    if (povObjectKeyword(kind) == word) return kind;
+  }
+  return std::nullopt;
+}
 
 bool isPovStatement(std::string_view word) {
   return contains(kStatements, word);

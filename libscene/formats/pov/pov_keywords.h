@@ -6,10 +6,19 @@
 // statement.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string_view>
 
+#include "scenefile/scene.h"
+
 namespace scene {
+
+// The POV-Ray object that `kind` is read from and written as: sphere, box,
+// cylinder or plane (scenefile/object_kinds.def).
+std::string_view povObjectKeyword(ObjectKind kind);
+// The kind whose POV-Ray object `word` names, if any.
+std::optional<ObjectKind> povObjectKind(std::string_view word);
 
 // A statement the reader converts or reads: camera, light_source, the four
 // shapes, object, global_settings, background.

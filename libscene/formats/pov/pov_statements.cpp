@@ -90,8 +90,7 @@ void PovStatementReader::statement() {
     std::string_view word = t.text;
     if (word == "camera") return camera();
     if (word == "light_source") return light();
-    if (word == "sphere" || word == "box" || word == "cylinder" || word == "plane" ||
-        word == "object") {
+    if (povObjectKind(word) || word == "object") {
       PovPendingObject object = objectStatement();
       countElement(object.span);
       parts_.objects.push_back(std::move(object));
@@ -362,14 +361,21 @@ PovPendingObject PovStatementReader::objectStatement() {
   PovPendingObject object;
   object.span = keyword.span;
   object.exactComment = keyword.exactComment;
-  if (w == "sphere") {
-    sphereShape(keyword, object);
-  } else if (w == "box") {
-    boxShape(keyword, object);
-  } else if (w == "cylinder") {
-    cylinderShape(keyword, object);
-  } else if (w == "plane") {
-    planeShape(keyword, object);
+  if (std::optional<ObjectKind> kind = povObjectKind(w)) {
+    switch (*kind) {
+      case ObjectKind::Plane:
+        planeShape(keyword, object);
+        break;
+      case ObjectKind::Sphere:
+        sphereShape(keyword, object);
+        break;
+      case ObjectKind::Cylinder:
+        cylinderShape(keyword, object);
+        break;
+      case ObjectKind::Cube:
+        boxShape(keyword, object);
+        break;
+    }
   } else {
     declaredObject(object);
   }

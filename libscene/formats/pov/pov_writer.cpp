@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "libscene/formats/pov/pov_keywords.h"
 #include "libscene/text/number.h"
 #include "scenefile/matrix.h"
 #include "scenefile/transform.h"
@@ -283,20 +284,22 @@ void appendObjectComment(std::string& out, const Object& object) {
 void appendObject(std::string& out, const Object& object, std::size_t index, const Scene& scene,
                   const PovSettings& options) {
   if (!options.flat) appendObjectComment(out, object);
+  out += povObjectKeyword(object.kind);
+  out += " { ";
   switch (object.kind) {
     case ObjectKind::Sphere:
-      out += "sphere { 0, 1\n";
+      out += "0, 1\n";
       break;
     case ObjectKind::Cube:
-      out += "box { -1, 1\n";
+      out += "-1, 1\n";
       break;
     case ObjectKind::Cylinder:
       // Closed by its caps unless `open`: a solid, like ours.
-      out += "cylinder { <0, -1, 0>, <0, 1, 0>, 1\n";
+      out += "<0, -1, 0>, <0, 1, 0>, 1\n";
       break;
     case ObjectKind::Plane:
-      out += eyeBelowPlane(object.matrix, glm::dvec3(scene.camera.matrix[3])) ? "plane { -y, 0\n"
-                                                                              : "plane { y, 0\n";
+      out +=
+          eyeBelowPlane(object.matrix, glm::dvec3(scene.camera.matrix[3])) ? "-y, 0\n" : "y, 0\n";
       break;
   }
   out += "  ";

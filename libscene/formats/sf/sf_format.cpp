@@ -19,7 +19,7 @@ constexpr std::string_view kExtensions[] = {".sf"};
 Recognition recogniseSceneFile(std::string_view text) {
   std::optional<std::string_view> first = firstWordOutsideComments(text);
   if (!first) return Recognition::Default;
-  for (std::string_view name : {"CAMERA", "LIGHT", "PLANE", "SPHERE", "CYLINDER", "CUBE"}) {
+  for (std::string_view name : sceneFileRecordNames()) {
     if (startsWithIgnoringCase(*first, name.substr(0, 3))) return Recognition::Likely;
   }
   return Recognition::None;

@@ -18,31 +18,40 @@ namespace scene {
 
 namespace {
 
-constexpr std::array<std::string_view, 6> kRecordNames = {"CAMERA", "LIGHT",    "PLANE",
-                                                          "SPHERE", "CYLINDER", "CUBE"};
-constexpr std::string_view kExpectedRecord =
-    "a record name (CAMERA, LIGHT, PLANE, SPHERE, CYLINDER or CUBE)";
+// The records: CAMERA, LIGHT, then one per object kind, in the order of
+// scenefile/object_kinds.def.
+enum class RecordKind : std::uint8_t {
+  Camera,
+  Light,
+#define SCENEFILE_OBJECT_KIND(enumerator, record, pov) enumerator,
+#include "scenefile/object_kinds.def"
+#undef SCENEFILE_OBJECT_KIND
+  Unknown
+};
 
-enum class RecordKind { Camera, Light, Plane, Sphere, Cylinder, Cube, Unknown };
+constexpr std::string_view kRecordNames[] = {
+    "CAMERA",
+    "LIGHT",
+#define SCENEFILE_OBJECT_KIND(enumerator, record, pov) #record,
+#include "scenefile/object_kinds.def"
+#undef SCENEFILE_OBJECT_KIND
+};
+
+std::string expectedRecord() {
+  return "a record name (CAMERA, LIGHT, " + objectKindChoices() + ")";
+}
 
 RecordKind recordKindFromName(std::string_view name) {
-  for (std::size_t i = 0; i < kRecordNames.size(); ++i) {
+  for (std::size_t i = 0; i < std::size(kRecordNames); ++i) {
     if (kRecordNames[i] == name) return static_cast<RecordKind>(i);
   }
   return RecordKind::Unknown;
 }
 
+// The object kind of a record past LIGHT: those follow the kinds' order.
 ObjectKind objectKindOf(RecordKind kind) {
-  switch (kind) {
-    case RecordKind::Plane:
-      return ObjectKind::Plane;
-    case RecordKind::Sphere:
-      return ObjectKind::Sphere;
-    case RecordKind::Cylinder:
-      return ObjectKind::Cylinder;
-    default:
-      return ObjectKind::Cube;
-  }
+  constexpr auto kFirstObject = static_cast<std::size_t>(RecordKind::Light) + 1;
+  return kObjectKinds[static_cast<std::size_t>(kind) - kFirstObject];
 }
 
 bool startsLikeNumber(std::string_view token) {
@@ -164,13 +173,13 @@ class SceneFileParser {
         // Stray numbers: report once, then skip to the next named line.
         if (!resyncing_) {
           out_.error(DiagnosticCode::ExpectedRecordName, nameSpan,
-                     "expected " + std::string(kExpectedRecord) + ", found a number")
+                     "expected " + expectedRecord() + ", found a number")
               .hint = "each record is a name line, a colour line and four matrix rows";
         }
         resyncing_ = true;
         return;
       }
-      reportUnknownKeyword(cursor_, 0, kRecordNames, kExpectedRecord, out_);
+      reportUnknownKeyword(cursor_, 0, kRecordNames, expectedRecord(), out_);
       // "sphere" is still a sphere for the rest of the checks.
       if (auto guess = suggestKeyword(name, kRecordNames); guess && guess->size() == name.size()) {
         kind = recordKindFromName(*guess);
@@ -424,6 +433,10 @@ void populateMergeTarget(const std::vector<ReadResult>& results, std::size_t thr
 }
 
 }  // namespace
+
+std::span<const std::string_view> sceneFileRecordNames() {
+  return kRecordNames;
+}
 
 std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::string fileName,
                                                 const ReadOptions& options, unsigned parts) {

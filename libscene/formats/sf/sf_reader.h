@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -18,6 +19,10 @@ namespace scene {
 // by the whole-file reader.
 ReadResult parseSceneFile(std::string_view text, std::string fileName,
                           const ReadOptions& options = {});
+
+// The record names: CAMERA, LIGHT and each object kind's, in the order of
+// scenefile/object_kinds.def.
+std::span<const std::string_view> sceneFileRecordNames();
 
 // The smallest file read in parts: 4 MiB, some 30,000 records, a few
 // milliseconds of reading on one core.
