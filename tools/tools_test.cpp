@@ -15,6 +15,7 @@
 #include <system_error>
 #include <vector>
 
+#include "image/image_file.h"
 #include "renderer/render.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/exit_code.h"
@@ -23,7 +24,6 @@
 #include "tools/common/resource_guard.h"
 #include "tools/sfcheck/sfcheck.h"
 #include "tools/sfconvert/sfconvert.h"
-#include "tools/sfrender/image_file.h"
 #include "tools/sfrender/sfrender.h"
 #include "tools/sfrender/thread_probe.h"
 #include "tools/tool_test_support.h"

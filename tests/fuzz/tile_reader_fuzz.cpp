@@ -1,5 +1,5 @@
 // libFuzzer target: the reader of sfrender --merge's tiles (readImageRegionWith,
-// tools/sfrender/image_file.h) on any bytes. The bytes are written to a file
+// image/image_file.h) on any bytes. The bytes are written to a file
 // named .exr, as a tile on disk, since OpenImageIO reads by name (its EXR
 // reader first, by the extension, then any other whose format the bytes
 // have). OpenImageIO's module (oiio_module.cpp), which sfrender loads at run
@@ -17,10 +17,10 @@
 #include <string>
 #include <system_error>
 
+#include "image/image_file.h"
+#include "image/oiio_module.h"
+#include "image/region_merge.h"
 #include "tests/fuzz/fuzz_input.h"
-#include "tools/sfrender/image_file.h"
-#include "tools/sfrender/oiio_module.h"
-#include "tools/sfrender/region_merge.h"
 
 extern "C" int sfrender_oiio_read(const char* path, SfrenderImageRegion* region, float* pixels,
                                   std::size_t capacity, char* error, std::size_t errorSize);

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The public API is the only way in: the installed headers, the tools, the
-# renderer, the Python module (python/src) and the example programs include
-# nothing of libscene's private folders, and the public headers include only
-# each other, glm and the standard library. Tests may include private headers
-# (they test them), so *_test.cpp files and tests/ are not checked.
+# image files (image/), the renderer, the Python module (python/src) and the
+# example programs include nothing of libscene's private folders, and the
+# public headers include only each other, glm and the standard library.
+# Tests may include private headers (they test them), so *_test.cpp files
+# and tests/ are not checked.
 #
 #   check_public_api.sh SOURCE_DIR
 set -euo pipefail
@@ -12,7 +13,7 @@ cd "$root"
 failures=0
 
 # Sources that must use the public API only.
-mapfile -t users < <(find tools renderer examples bench python -name '*.cpp' -o -name '*.h' |
+mapfile -t users < <(find image tools renderer examples bench python -name '*.cpp' -o -name '*.h' |
   grep -v '_test\.cpp$' | grep -v '^tools/tool_test_support\.h$' | sort)
 # bench/read_bench.cpp and bench/render_probe.cpp time one reader or writer
 # on its own, below the registry: benchmarks of the internals, by design.

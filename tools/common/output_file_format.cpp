@@ -10,9 +10,9 @@ namespace {
 
 // What sfrender writes with Debian 12's OpenImageIO (2.4.7): its own .ppm,
 // then the extensions of OpenImageIO's writers that sfrender takes
-// (tools/sfrender/oiio_module.cpp leaves out those that make no file or
+// (image/oiio_module.cpp leaves out those that make no file or
 // cannot hold a rendered image: GIF, ICO, ZFile), in the order of sfrender's
-// table of formats (tools/sfrender/image_formats.cpp). sfrender asks
+// table of formats (image/image_formats.cpp). sfrender asks
 // OpenImageIO at run time; sfcheck, which must not load it, has this copy,
 // and a test (ImageFormats.SfchecksListIsOpenImageIOs) fails when the two
 // part.

@@ -1,7 +1,7 @@
 // The image formats sfrender writes, by the output's extension, as a fixed
 // list: sfcheck warns of an OUTPUT_FILE that names none, and sfrender
 // refuses one, before it asks OpenImageIO (which sfcheck must not load) at
-// run time what it writes (tools/sfrender/image_formats.h); a test holds
+// run time what it writes (image/image_formats.h); a test holds
 // the two lists together.
 #pragma once
 

@@ -4,7 +4,7 @@
 #include <exception>
 #include <utility>
 
-#include "tools/common/quantize.h"
+#include "image/quantize.h"
 
 namespace sfbuild {
 

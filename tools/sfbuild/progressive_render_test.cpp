@@ -8,8 +8,8 @@
 #include <iostream>
 #include <thread>
 
+#include "image/quantize.h"
 #include "renderer/default_scene.h"
-#include "tools/common/quantize.h"
 
 namespace sfbuild {
 namespace {

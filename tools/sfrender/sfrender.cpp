@@ -16,6 +16,8 @@
 #include <thread>
 #include <variant>
 
+#include "image/image_file.h"
+#include "image/region_merge.h"
 #include "renderer/adaptive_sampling.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
@@ -32,10 +34,8 @@
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
-#include "tools/sfrender/image_file.h"
 #include "tools/sfrender/image_region.h"
 #include "tools/sfrender/image_target.h"
-#include "tools/sfrender/region_merge.h"
 #include "tools/sfrender/thread_probe.h"
 
 namespace tools {

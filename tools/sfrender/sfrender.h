@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "image/image_formats.h"
 #include "renderer/render.h"
 #include "renderer/render_memory.h"
 #include "scenefile/read.h"
 #include "tools/common/cli_forward.h"
 #include "tools/common/command_line.h"
 #include "tools/common/tool_streams.h"
-#include "tools/sfrender/image_formats.h"
 
 namespace tools {
 

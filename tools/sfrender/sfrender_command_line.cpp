@@ -3,10 +3,10 @@
 #include <map>
 #include <string>
 
+#include "image/image_file.h"
 #include "scenefile/validation.h"
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
-#include "tools/sfrender/image_file.h"
 #include "tools/sfrender/image_region.h"
 #include "tools/sfrender/sfrender.h"
 

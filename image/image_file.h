@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "image/image_formats.h"
+#include "image/oiio_module.h"
+#include "image/quantize.h"
 #include "renderer/render.h"
-#include "tools/common/quantize.h"
-#include "tools/sfrender/image_formats.h"
-#include "tools/sfrender/oiio_module.h"
 
 namespace tools {
 

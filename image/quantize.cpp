@@ -1,4 +1,4 @@
-#include "tools/common/quantize.h"
+#include "image/quantize.h"
 
 #include <algorithm>
 #include <cmath>

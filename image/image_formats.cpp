@@ -1,4 +1,4 @@
-#include "tools/sfrender/image_formats.h"
+#include "image/image_formats.h"
 
 #include <algorithm>
 #include <array>

@@ -5,7 +5,7 @@
 // A plain C interface (oiio_module.h), so that nothing of OpenImageIO
 // crosses it. Little CMS, which makes the sRGB ICC profile, is one of those
 // libraries already.
-#include "tools/sfrender/oiio_module.h"
+#include "image/oiio_module.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>

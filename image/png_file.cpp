@@ -1,4 +1,4 @@
-#include "tools/sfrender/png_file.h"
+#include "image/png_file.h"
 
 #include <png.h>
 

@@ -1,4 +1,4 @@
-#include "tools/sfrender/image_file.h"
+#include "image/image_file.h"
 
 #include <dlfcn.h>
 
@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "image/exr_header.h"
+#include "image/memory_file.h"
+#include "image/oiio_module.h"
+#include "image/png_file.h"
 #include "tools/common/file_io.h"
-#include "tools/sfrender/exr_header.h"
-#include "tools/sfrender/memory_file.h"
-#include "tools/sfrender/oiio_module.h"
-#include "tools/sfrender/png_file.h"
 
 namespace tools {
 

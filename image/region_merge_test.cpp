@@ -1,4 +1,4 @@
-#include "tools/sfrender/region_merge.h"
+#include "image/region_merge.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -13,8 +13,8 @@
 #include <random>
 #include <string>
 
+#include "image/image_file.h"
 #include "tools/common/file_io.h"
-#include "tools/sfrender/image_file.h"
 
 namespace tools {
 namespace {

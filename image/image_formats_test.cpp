@@ -1,6 +1,6 @@
 // The formats sfrender writes, from a list as OpenImageIO's module gives it
 // (no module needed), and sfcheck's fixed copy of it against the module's.
-#include "tools/sfrender/image_formats.h"
+#include "image/image_formats.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "image/image_file.h"
 #include "tools/common/output_file_format.h"
-#include "tools/sfrender/image_file.h"
 
 namespace tools {
 namespace {

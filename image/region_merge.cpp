@@ -1,11 +1,11 @@
-#include "tools/sfrender/region_merge.h"
+#include "image/region_merge.h"
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 
-#include "tools/sfrender/image_file.h"
+#include "image/image_file.h"
 
 namespace tools {
 

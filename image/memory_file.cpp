@@ -1,4 +1,4 @@
-#include "tools/sfrender/memory_file.h"
+#include "image/memory_file.h"
 
 #include <sys/mman.h>
 #include <sys/stat.h>

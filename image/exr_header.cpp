@@ -1,4 +1,4 @@
-#include "tools/sfrender/exr_header.h"
+#include "image/exr_header.h"
 
 namespace tools {
 
