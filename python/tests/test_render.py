@@ -43,7 +43,7 @@ def levels(image):
 
 def srgb_decoding(image):
     """What sfrender writes in a float EXR: the sRGB decoding of each number,
-    in doubles and rounded to a float, as tools/sfrender/image_file.cpp does."""
+    in doubles and rounded to a float, as image/image_file.cpp does."""
     v = image.astype(np.float64)
     m = np.abs(v)
     linear = np.where(m <= 0.04045, m / 12.92, np.power((m + 0.055) / 1.055, 2.4))
