@@ -54,8 +54,10 @@ std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
       case scene::ObjectKind::Cylinder:
         extent[r] = std::sqrt(x * x + z * z) + std::abs(y);
         break;
-      default:
+      case scene::ObjectKind::Cube:
         extent[r] = std::abs(x) + std::abs(y) + std::abs(z);
+        break;
+      case scene::ObjectKind::Plane:  // unbounded: returned above
         break;
     }
   }

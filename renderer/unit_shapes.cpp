@@ -14,9 +14,16 @@ glm::dvec3 spanFaceNormal(scene::ObjectKind kind, SpanFace face, const glm::dvec
                           const glm::dvec3& d, double t) {
   if (face == SpanFace::None) return glm::dvec3(0.0);
   if (face == SpanFace::Curved) {
-    if (kind == scene::ObjectKind::Sphere) return o + t * d;
-    glm::dvec2 n = glm::dvec2(o.x, o.z) + t * glm::dvec2(d.x, d.z);
-    return glm::dvec3(n.x, 0.0, n.y);
+    switch (kind) {
+      case scene::ObjectKind::Sphere:
+        return o + t * d;
+      case scene::ObjectKind::Cylinder:
+      case scene::ObjectKind::Plane:  // flat faces only: never asked
+      case scene::ObjectKind::Cube: {
+        glm::dvec2 n = glm::dvec2(o.x, o.z) + t * glm::dvec2(d.x, d.z);
+        return glm::dvec3(n.x, 0.0, n.y);
+      }
+    }
   }
   int code = static_cast<int>(face);
   glm::dvec3 n(0.0);

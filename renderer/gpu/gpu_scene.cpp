@@ -9,6 +9,23 @@ namespace render::gpu {
 
 namespace {
 
+// The shader's number for `kind` (render.comp: kPlane, kSphere, kCylinder,
+// kCube). A switch with no default, so that a kind added to
+// scenefile/object_kinds.def does not compile here until the shader has it.
+double shaderKind(scene::ObjectKind kind) {
+  switch (kind) {
+    case scene::ObjectKind::Plane:
+      return 0.0;
+    case scene::ObjectKind::Sphere:
+      return 1.0;
+    case scene::ObjectKind::Cylinder:
+      return 2.0;
+    case scene::ObjectKind::Cube:
+      return 3.0;
+  }
+  return -1.0;
+}
+
 // Object i in the shader's layout: toLocal, translation, toWorld (column
 // by column), the kind, then the material.
 void packObject(const RenderScene& scene, std::size_t i, double* o) {
@@ -21,7 +38,7 @@ void packObject(const RenderScene& scene, std::size_t i, double* o) {
     }
     o[9 + c] = object.translation[c];
   }
-  o[21] = static_cast<double>(static_cast<int>(object.kind));
+  o[21] = shaderKind(object.kind);
   const scene::Material& m = scene.material(static_cast<std::uint32_t>(i));
   double material[kObjectDoubles - 22] = {m.colour.r,     m.colour.g, m.colour.b,  m.ambient,
                                           m.diffuse,      m.specular, m.shininess, m.reflectivity,

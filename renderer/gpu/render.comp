@@ -60,7 +60,7 @@ layout(std430, binding = 7) writeonly buffer Counts { uvec4 counts[]; };
 const int kObjectDoubles = 32;
 const int kMaterial = 22;
 const uint kNone = 0xFFFFFFFFu;
-const int kPlane = 0, kSphere = 1, kCylinder = 2, kCube = 3;
+const int kPlane = 0, kSphere = 1, kCylinder = 2, kCube = 3;  // gpu_scene.cpp, shaderKind
 const int kFaceNone = -2, kFaceCurved = -1;
 const int kBvhStack = 128;   // Bvh::kStackSize
 const int kMediaCapacity = 8;
