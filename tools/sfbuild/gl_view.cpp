@@ -109,8 +109,7 @@ GlView::GlView() {
   lightColoursLocation_ = glGetUniformLocation(program_, "lightColours");
   materialLocation_ = glGetUniformLocation(program_, "material");
 
-  for (scene::ObjectKind kind : {scene::ObjectKind::Plane, scene::ObjectKind::Sphere,
-                                 scene::ObjectKind::Cylinder, scene::ObjectKind::Cube}) {
+  for (scene::ObjectKind kind : scene::kObjectKinds) {
     meshes_[static_cast<std::size_t>(kind)] =
         upload(scene::primitiveMesh(kind, kSegments, kPlaneHalfSize));
   }

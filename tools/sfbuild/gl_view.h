@@ -34,7 +34,7 @@ class GlView {
   GLint modelLocation_ = -1, highlightLocation_ = -1, eyeLocation_ = -1;
   GLint lightCountLocation_ = -1, lightPositionsLocation_ = -1, lightColoursLocation_ = -1;
   GLint materialLocation_ = -1;
-  std::array<Mesh, 4> meshes_{};  // by scene::ObjectKind
+  std::array<Mesh, std::size(scene::kObjectKinds)> meshes_{};  // by scene::ObjectKind
   Mesh grid_;
 };
 
