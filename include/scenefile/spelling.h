@@ -1,7 +1,7 @@
 /// @file
 /// Did-you-mean: the closest of a list of names to a word that is none of
 /// them. The readers suggest keywords with it (`sphere` -> `SPHERE`), and
-/// the tools suggest flags and choices (`--widht` -> `--width`).
+/// the tools suggest their options and choices.
 #pragma once
 
 #include <optional>
@@ -17,6 +17,9 @@ namespace scene {
 /// when none is that close.
 std::optional<std::string_view> suggestSpelling(std::string_view word,
                                                 std::span<const std::string_view> candidates);
+
+/// Whether `a` and `b` are the same word but for the case of ASCII letters.
+bool equalsIgnoringCase(std::string_view a, std::string_view b);
 
 /// The edit distance of suggestSpelling, capped at 64 for words longer
 /// than 64 characters.

@@ -12,12 +12,12 @@ char upper(char c) {
   return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
 }
 
+}  // namespace
+
 bool equalsIgnoringCase(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
                                             [](char x, char y) { return upper(x) == upper(y); });
 }
-
-}  // namespace
 
 // Optimal string alignment distance, case-insensitive, capped: words longer
 // than any keyword or flag are not worth comparing.
