@@ -138,7 +138,7 @@ struct Tally {
 
 // The scene as a scene file holds it (default materials, no operations),
 // through every format: .sf, glTF, GLB and POV-Ray give back every bit; an
-// instruction file (written with --approximate, since a random camera rolls
+// instruction file (written with the approximate option, since a random camera rolls
 // and a random matrix shears) reads back with the eye and every translation
 // exact, the rest within 1e-12 per column, and writes itself again.
 void checkSceneFileScene(const Scene& scene, int index, std::map<Format, Tally>& tally) {
@@ -353,7 +353,7 @@ TEST(ExtremeValues, NegativeZeroMaterialValuesComeBackThroughEveryFormat) {
 }
 
 // Lights whose colours sum beyond the largest double: POV-Ray's
-// ambient_light (their sum) is clamped, with a loss; --no-loss refuses.
+// ambient_light (their sum) is clamped, with a loss; noLoss refuses.
 TEST(ExtremeValues, LightsSummingBeyondTheLargestDoubleClampAmbientLight) {
   Scene scene = testing::RandomSceneGenerator(3).scene(false);
   scene.lights.resize(2);

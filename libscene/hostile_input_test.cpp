@@ -21,7 +21,7 @@ TEST(HostileInput, AOneGigabyteLine) {
   std::string text = testing::kCameraRecord + "SPHERE\n1 1 ";
   text.append(std::size_t{1} << 30, '7');
   text += "\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
-  // Past the default --max-file-size (1 GiB): raised, so that the reader
+  // Past the default maxFileSize (1 GiB): raised, so that the reader
   // itself meets the line.
   ReadOptions options;
   options.maxFileSize = text.size();

@@ -33,12 +33,17 @@ std::optional<Format> detectFormat(std::string_view text, std::string_view fileN
   return std::nullopt;
 }
 
-bool checkFileSize(std::uint64_t bytes, const ReadOptions& options, DiagnosticList& out) {
+bool checkFileSize(std::uint64_t bytes, const ReadOptions& options, DiagnosticList& out,
+                   std::string_view subject, bool sizeKnown) {
   if (bytes <= options.maxFileSize) return true;
-  out.error(DiagnosticCode::FileTooLarge, {},
-            "the file is " + std::to_string(bytes) + " bytes, more than the limit of " +
-                std::to_string(options.maxFileSize))
-      .hint = "raise the limit with --max-file-size if the file is meant to be this large";
+  std::string limit = std::to_string(options.maxFileSize);
+  Diagnostic& d =
+      out.error(DiagnosticCode::FileTooLarge, {},
+                std::string(subject) + " is " +
+                    (sizeKnown ? std::to_string(bytes) + " bytes, more than the limit of " + limit
+                               : "more than the limit of " + limit + " bytes"));
+  d.hint = "raise the limit with {0} if the file is meant to be this large";
+  d.remedies = {{Setting::MaxFileSize, sizeKnown ? std::to_string(bytes) : ""}};
   return false;
 }
 
@@ -46,8 +51,7 @@ namespace {
 
 // unknown-format, at the first word: what each format starts with, from the
 // registry, so that the message names every format there is.
-ReadResult unknownFormat(std::string_view text, std::string fileName,
-                         const ReadOptions& options) {
+ReadResult unknownFormat(std::string_view text, std::string fileName, const ReadOptions& options) {
   ReadResult result{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
   LineCursor cursor(text);
   SourceSpan where{1, 1, 0};
@@ -84,29 +88,33 @@ ReadResult checked(ReadResult result, const ReadOptions& options) {
   return result;
 }
 
-ReadResult refusedAsTooLarge(std::size_t bytes, std::string fileName, const ReadOptions& options) {
-  ReadResult refused{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};
-  checkFileSize(bytes, options, refused.diagnostics);
+// file-too-large for a text over the limit, else nothing: the one check of
+// both ways in.
+std::optional<ReadResult> refusedAsTooLarge(std::string_view text, std::string& fileName,
+                                            const ReadOptions& options) {
+  ReadResult refused{Scene{}, DiagnosticList(fileName, options.errorLimit)};
+  if (checkFileSize(text.size(), options, refused.diagnostics)) return std::nullopt;
   return refused;
+}
+
+ReadResult readAs(Format format, std::string_view text, std::string fileName,
+                  const ReadOptions& options) {
+  return checked(formatInfo(format).read(text, std::move(fileName), options), options);
 }
 
 }  // namespace
 
 ReadResult parseScene(std::string_view text, std::string fileName, const ReadOptions& options) {
-  if (text.size() > options.maxFileSize) {
-    return refusedAsTooLarge(text.size(), std::move(fileName), options);
-  }
+  if (auto refused = refusedAsTooLarge(text, fileName, options)) return std::move(*refused);
   std::optional<Format> format = detectFormat(text, fileName);
   if (!format) return unknownFormat(text, std::move(fileName), options);
-  return parseSceneAs(*format, text, std::move(fileName), options);
+  return readAs(*format, text, std::move(fileName), options);
 }
 
 ReadResult parseSceneAs(Format format, std::string_view text, std::string fileName,
                         const ReadOptions& options) {
-  if (text.size() > options.maxFileSize) {
-    return refusedAsTooLarge(text.size(), std::move(fileName), options);
-  }
-  return checked(formatInfo(format).read(text, std::move(fileName), options), options);
+  if (auto refused = refusedAsTooLarge(text, fileName, options)) return std::move(*refused);
+  return readAs(format, text, std::move(fileName), options);
 }
 
 }  // namespace scene

@@ -24,7 +24,18 @@ TEST(CheckFileSize, RefusesOnlyAboveTheLimit) {
   EXPECT_EQ(d.severity, Severity::Error);
   EXPECT_EQ(d.file, "big.sf");
   EXPECT_EQ(d.message, "the file is 101 bytes, more than the limit of 100");
-  EXPECT_NE(d.hint.find("--max-file-size"), std::string::npos);
+  EXPECT_EQ(d.hint, "raise the limit with {0} if the file is meant to be this large");
+  EXPECT_EQ(d.remedies, (std::vector<Remedy>{{Setting::MaxFileSize, "101"}}));
+}
+
+TEST(CheckFileSize, AnInputOfUnknownSizeIsOverTheLimitWithTheSameCure) {
+  ReadOptions options;
+  options.maxFileSize = 100;
+  DiagnosticList out("-");
+  EXPECT_FALSE(checkFileSize(101, options, out, "the input", false));
+  ASSERT_EQ(out.items().size(), 1u);
+  EXPECT_EQ(out.items()[0].message, "the input is more than the limit of 100 bytes");
+  EXPECT_EQ(out.items()[0].remedies, (std::vector<Remedy>{{Setting::MaxFileSize, ""}}));
 }
 
 TEST(CheckFileSize, TheDefaultIsOneGibibyte) {

@@ -2,12 +2,12 @@
 
 #include <string>
 
-#include "scenefile/convert.h"
 #include "libscene/formats/instruction/instruction_reader.h"
 #include "libscene/formats/instruction/instruction_writer.h"
 #include "libscene/formats/sf/sf_reader.h"
 #include "libscene/formats/sf/sf_writer.h"
 #include "libscene/testing/test_support.h"
+#include "scenefile/convert.h"
 #include "scenefile/transform.h"
 
 namespace scene {
@@ -36,9 +36,9 @@ TEST(InstructionWriter, WritesEveryMaterialValueAndTheOperations) {
   s.outputFile = "pic.ppm";
   s.camera.lookAt = glm::dvec3(0, 0, 0);
   s.objects[0].material.ambient = 0.25;
-  s.objects[0].transforms = std::vector<TransformOp>{
-      {TransformKind::Translate, glm::dvec3(1, 2, 3), {}},
-      {TransformKind::RotateY, glm::dvec3(0.5, 0, 0), {}}};
+  s.objects[0].transforms =
+      std::vector<TransformOp>{{TransformKind::Translate, glm::dvec3(1, 2, 3), {}},
+                               {TransformKind::RotateY, glm::dvec3(0.5, 0, 0), {}}};
   s.objects[0].matrix = composeTransform(*s.objects[0].transforms);
   DiagnosticList out;
   std::optional<std::string> text = writeInstructionFile(s, {}, out);
@@ -95,14 +95,15 @@ TEST(Conversion, ReportsEveryDroppedMaterialValue) {
 }
 
 TEST(Conversion, ShearNeedsApproximate) {
-  ReadResult r = parseSceneFile(std::string(testing::kCameraRecord) +
-                                    "CUBE\n1 1 1\n1 0.5 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",
-                                "s.sf");
+  ReadResult r = parseSceneFile(
+      std::string(testing::kCameraRecord) + "CUBE\n1 1 1\n1 0.5 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",
+      "s.sf");
   ASSERT_TRUE(r.ok());
   DiagnosticList out("s.sf");
   EXPECT_FALSE(convertScene(r.scene, Format::InstructionFile, {}, out).has_value());
   Diagnostic d = expectOne(out, DiagnosticCode::MatrixNotExpressible, 7, 1);
-  EXPECT_EQ(d.hint, "'--approximate' writes the nearest rotation and scale");
+  EXPECT_EQ(d.hint, "'{0}' writes the nearest rotation and scale");
+  EXPECT_EQ(d.remedies, (std::vector<Remedy>{{Setting::Approximate, "true"}}));
 
   ConversionOptions approximate;
   approximate.instructions.approximate = true;
@@ -124,9 +125,9 @@ TEST(Conversion, ShearNeedsApproximate) {
 
 TEST(Conversion, RolledCameraNeedsApproximate) {
   // Up is -X: the camera is rolled by 90 degrees.
-  ReadResult r = parseSceneFile("CAMERA\n0 0 0\n0 -1 0 0\n1 0 0 0\n0 0 1 5\n0 0 0 1\n" +
-                                    std::string(testing::kLightRecord),
-                                "c.sf");
+  ReadResult r = parseSceneFile(
+      "CAMERA\n0 0 0\n0 -1 0 0\n1 0 0 0\n0 0 1 5\n0 0 0 1\n" + std::string(testing::kLightRecord),
+      "c.sf");
   ASSERT_TRUE(r.ok());
   DiagnosticList out("c.sf");
   EXPECT_FALSE(convertScene(r.scene, Format::InstructionFile, {}, out).has_value());
@@ -140,13 +141,12 @@ TEST(Conversion, RolledCameraNeedsApproximate) {
 }
 
 TEST(Conversion, LightMatricesKeepOnlyTheirPosition) {
-  ReadResult r = parseSceneFile(std::string(testing::kCameraRecord) +
-                                    "LIGHT\n1 1 1\n2 0 0 1\n0 2 0 1\n0 0 2 1\n0 0 0 1\n",
-                                "l.sf");
+  ReadResult r = parseSceneFile(
+      std::string(testing::kCameraRecord) + "LIGHT\n1 1 1\n2 0 0 1\n0 2 0 1\n0 0 2 1\n0 0 0 1\n",
+      "l.sf");
   ASSERT_TRUE(r.ok());
   DiagnosticList out("l.sf");
-  std::optional<std::string> text =
-      convertScene(r.scene, Format::InstructionFile, {}, out);
+  std::optional<std::string> text = convertScene(r.scene, Format::InstructionFile, {}, out);
   ASSERT_TRUE(text.has_value());
   expectOne(out, DiagnosticCode::IgnoredLightMatrix, 7, 1, Severity::Note);
   EXPECT_NE(text->find("  LOCATION 1 1 1\n"), std::string::npos);

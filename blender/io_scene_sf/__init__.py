@@ -39,10 +39,21 @@ def _scenefile_or_report(operator, context):
         return None
 
 
+# The exporter's options by the settings they set (scenefile.Remedy), so
+# that a hint names the option its user sees.
+_OPTION_LABELS = {"approximate": "Approximate"}
+
+
+def _in_options(remedy):
+    """A remedy as the add-on's option, else as the module's keyword."""
+    return _OPTION_LABELS.get(remedy.setting, str(remedy))
+
+
 def _report_diagnostics(operator, diagnostics):
     for d in diagnostics:
         level = {"error": "ERROR", "warning": "WARNING"}.get(d.severity.value, "INFO")
-        operator.report({level}, str(d) + (f" ({d.hint})" if d.hint else ""))
+        hint = d.hint_in(_in_options)
+        operator.report({level}, str(d) + (f" ({hint})" if hint else ""))
 
 
 class ImportSceneFile(bpy.types.Operator, ImportHelper):
@@ -90,7 +101,7 @@ class ExportSceneFile(bpy.types.Operator, ExportHelper):
                 "also the Phong materials and each object's SCALE, ROTATE, TRANSLATE list")),
         default="SF")
     approximate: BoolProperty(
-        name="Approximate", default=False,
+        name=_OPTION_LABELS["approximate"], default=False,
         description="write a matrix with shear, or a rolled camera, in an instruction file as "
                     "the nearest it can hold, instead of failing")
     use_selection: BoolProperty(name="Selected Objects", default=False,

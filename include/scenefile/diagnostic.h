@@ -65,6 +65,38 @@ struct DiagnosticNote {
   friend bool operator==(const DiagnosticNote&, const DiagnosticNote&) = default;
 };
 
+/// A setting a user can change: a limit or option of the library's
+/// (ReadOptions, ConversionOptions) or one of a render's. The library names
+/// it as data and never in words, since each front end calls it differently:
+/// a tool by its flag, Python by its keyword, the Blender add-on by its
+/// option (docs/DIAGNOSTICS.md, "Remedies").
+enum class Setting : std::uint8_t {
+  MaxFileSize,         ///< ReadOptions::maxFileSize
+  MaxObjects,          ///< ReadOptions::maxObjects
+  MaxGltfNodes,        ///< GltfReadOptions::maxNodes
+  TransposedMatrices,  ///< SceneFileReadOptions::transposedMatrices
+  SkipUnsupported,     ///< PovReadOptions::skipUnsupported
+  Approximate,         ///< InstructionWriteOptions::approximate
+  FieldOfView,         ///< a render's vertical field of view, in degrees
+  Width,               ///< a render's image width, in pixels
+  Height,              ///< a render's image height, in pixels
+  Depth,               ///< a render's bounces
+  OutputPath,          ///< where a render's image is written
+};
+
+/// The stable kebab-case name of a setting ("max-file-size"), for data
+/// such as Python's Remedy; "unknown" for a value that is no setting.
+std::string_view settingName(Setting setting);
+
+/// A setting that would cure a diagnostic, and the value that would do.
+struct Remedy {
+  Setting setting = Setting::MaxFileSize;
+  /// The value as text ("50"); "true" for an option to turn on; empty
+  /// where the advice is only which setting to change.
+  std::string value;
+  friend bool operator==(const Remedy&, const Remedy&) = default;
+};
+
 struct Diagnostic {
   Severity severity = Severity::Error;
   DiagnosticCode code = DiagnosticCode::UnknownFormat;
@@ -72,13 +104,34 @@ struct Diagnostic {
   SourceSpan span;
   /// Lower case, no final period, as in clang.
   std::string message;
-  /// One line of advice printed after the message, or empty.
+  /// One line of advice printed after the message, or empty. "{0}", "{1}",
+  /// ... stand for remedies[0], [1], ... in the front end's words (hintText).
   std::string hint;
   std::vector<DiagnosticNote> notes;
   std::optional<FixIt> fixIt;
+  std::vector<Remedy> remedies;
 
   friend bool operator==(const Diagnostic&, const Diagnostic&) = default;
 };
+
+/// `hint` with each "{N}" that has a remedies[N] replaced by
+/// `words(remedies[N])`: how a front end says a hint in its own terms.
+template <typename Words>
+std::string hintText(std::string_view hint, const std::vector<Remedy>& remedies, Words&& words) {
+  std::string out;
+  for (std::size_t i = 0; i < hint.size(); ++i) {
+    std::size_t n = i + 2 < hint.size() && hint[i] == '{' && hint[i + 2] == '}'
+                        ? static_cast<std::size_t>(hint[i + 1] - '0')
+                        : remedies.size();
+    if (n < remedies.size()) {
+      out += words(remedies[n]);
+      i += 2;
+    } else {
+      out += hint[i];
+    }
+  }
+  return out;
+}
 
 /// Collects the diagnostics of one operation, in the order they were found.
 /// After `errorLimit` errors the list takes no more and says so once, so that a

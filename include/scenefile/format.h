@@ -55,7 +55,7 @@ struct FormatHolds {
 struct FormatInfo {
   /// The format this row describes.
   Format format = Format::SceneFile;
-  /// The name sfconvert's --to takes: "sf", "instructions", ...
+  /// The format's name, as the tools and Python take it: "sf", "instructions", ...
   std::string_view name;
   /// The format with its article, for messages: "a scene file".
   std::string_view singular;
@@ -90,7 +90,7 @@ std::span<const FormatInfo> formats();
 /// The row of `format`.
 const FormatInfo& formatInfo(Format format);
 
-/// The format sfconvert's --to calls `name`, if any.
+/// The format named `name` (FormatInfo::name), if any.
 const FormatInfo* findFormatByName(std::string_view name);
 
 /// The format whose extensions hold the extension of `fileName` ("a/b.gltf"
@@ -102,7 +102,7 @@ const FormatInfo* findFormatByExtension(std::string_view fileName);
 /// (.pov)".
 std::string describeFormats();
 
-/// The --to names joined with ", ": "sf, instructions, gltf, glb, pov".
+/// The formats' names joined with ", ": "sf, instructions, gltf, glb, pov".
 std::string formatNames();
 
 }  // namespace scene

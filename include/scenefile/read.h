@@ -71,7 +71,10 @@ std::optional<Format> detectFormat(std::string_view text, std::string_view fileN
 /// Reports file-too-large when an input of `bytes` bytes is above
 /// options.maxFileSize; true when it is within the limit. The tools call it
 /// with the size on disk before reading; parseScene checks the text's size.
-bool checkFileSize(std::uint64_t bytes, const ReadOptions& options, DiagnosticList& out);
+/// `subject` names the input in the message; `sizeKnown` false says that
+/// `bytes` is only what was read of a longer input (a pipe).
+bool checkFileSize(std::uint64_t bytes, const ReadOptions& options, DiagnosticList& out,
+                   std::string_view subject = "the file", bool sizeKnown = true);
 
 /// Detects the format and reads `text` with its reader. Text in no known
 /// format gets an unknown-format error, text above options.maxFileSize
@@ -79,8 +82,7 @@ bool checkFileSize(std::uint64_t bytes, const ReadOptions& options, DiagnosticLi
 /// folder of `fileName`, and nowhere else. Every accepted scene holds only
 /// finite numbers and has passed the rules of scenefile/validation.h that
 /// its reader applies.
-ReadResult parseScene(std::string_view text, std::string fileName,
-                      const ReadOptions& options = {});
+ReadResult parseScene(std::string_view text, std::string fileName, const ReadOptions& options = {});
 
 /// Reads `text` as `format`, whatever its content says.
 ReadResult parseSceneAs(Format format, std::string_view text, std::string fileName,

@@ -25,8 +25,8 @@ inline constexpr double kParallelTolerance = 1e-9;
 /// glTF yfov in radians stay well within a double's range).
 inline constexpr double kMinFovDegrees = 0.001;
 inline constexpr double kMaxFovDegrees = 179.999;
-/// The longest side of an image, in pixels (sfrender's --width and --height,
-/// sfconvert's): its width times its height fits an int.
+/// The longest side of an image, in pixels (a render's width and height, and
+/// a conversion's): its width times its height fits an int.
 inline constexpr int kMaxImageSide = 32768;
 /// A View's aspect ratio (width over height): that of an image of 1 to
 /// kMaxImageSide pixels a side.
@@ -74,7 +74,7 @@ void checkMaterialValue(MaterialProperty property, double value, SourceSpan wher
 /// ratio, when it has one, in [kMinAspectRatio, kMaxAspectRatio]; each value
 /// outside (NaN included) is a value-out-of-range error at `where`. The one
 /// rule for a view: validateScene and every writer (convertScene) hold a
-/// scene's view to it, and the tools their --fov, --width and --height.
+/// scene's view to it, and the tools their field of view and image size.
 void checkView(const View& view, SourceSpan where, DiagnosticList& out);
 
 /// OUTPUT_FILE is one name of printable ASCII without blanks, as an

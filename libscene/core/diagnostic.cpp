@@ -17,6 +17,34 @@ std::string_view severityName(Severity severity) {
   return "error";
 }
 
+std::string_view settingName(Setting setting) {
+  switch (setting) {
+    case Setting::MaxFileSize:
+      return "max-file-size";
+    case Setting::MaxObjects:
+      return "max-objects";
+    case Setting::MaxGltfNodes:
+      return "max-gltf-nodes";
+    case Setting::TransposedMatrices:
+      return "transposed-matrices";
+    case Setting::SkipUnsupported:
+      return "skip-unsupported";
+    case Setting::Approximate:
+      return "approximate";
+    case Setting::FieldOfView:
+      return "field-of-view";
+    case Setting::Width:
+      return "width";
+    case Setting::Height:
+      return "height";
+    case Setting::Depth:
+      return "depth";
+    case Setting::OutputPath:
+      return "output-path";
+  }
+  return "unknown";
+}
+
 namespace {
 
 struct CodeEntry {
@@ -75,7 +103,7 @@ Diagnostic& DiagnosticList::report(Severity severity, DiagnosticCode code, Sourc
     discarded_ = Diagnostic{};
     return discarded_;
   }
-  items_.push_back(Diagnostic{severity, code, file_, span, std::move(message), {}, {}, {}});
+  items_.push_back(Diagnostic{severity, code, file_, span, std::move(message), {}, {}, {}, {}});
   std::size_t index = items_.size() - 1;
   if (severity == Severity::Error) ++errorCount_;
   if (severity == Severity::Warning) ++warningCount_;
@@ -85,6 +113,7 @@ Diagnostic& DiagnosticList::report(Severity severity, DiagnosticCode code, Sourc
                                 file_,
                                 span,
                                 "too many errors; stopped after " + std::to_string(errorLimit_),
+                                {},
                                 {},
                                 {},
                                 {}});
@@ -102,4 +131,3 @@ void DiagnosticList::append(const DiagnosticList& other) {
 }
 
 }  // namespace scene
-

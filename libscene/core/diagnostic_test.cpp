@@ -227,5 +227,25 @@ TEST(DiagnosticList, KeepsCountingWarningsPastWhatItStores) {
   EXPECT_FALSE(list.hasErrors());
 }
 
+TEST(HintText, SaysEachRemedyInTheCallersWords) {
+  std::vector<Remedy> remedies{{Setting::Width, "640"}, {Setting::Height, "480"}};
+  auto words = [](const Remedy& r) { return std::string(settingName(r.setting)) + "=" + r.value; };
+  EXPECT_EQ(hintText("render with {0} and {1}", remedies, words),
+            "render with width=640 and height=480");
+  // Braces that name no remedy are the hint's own text.
+  EXPECT_EQ(hintText("a block {2} {x} {", remedies, words), "a block {2} {x} {");
+  EXPECT_EQ(hintText("{0}", {}, words), "{0}");
+}
+
+TEST(Setting, EveryOneHasAStableName) {
+  std::set<std::string_view> names;
+  for (int i = 0; i <= static_cast<int>(Setting::OutputPath); ++i) {
+    std::string_view name = settingName(static_cast<Setting>(i));
+    EXPECT_NE(name, "unknown") << i;
+    EXPECT_TRUE(names.insert(name).second) << name;
+  }
+  EXPECT_EQ(settingName(Setting::MaxFileSize), "max-file-size");
+}
+
 }  // namespace
 }  // namespace scene

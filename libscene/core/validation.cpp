@@ -77,8 +77,8 @@ void checkMatrixLastRow(const glm::dmat4& matrix, const RecordSpans& spans, Diag
   for (int r = 0; r < 4; ++r) lastColumnIsIdentityRow &= matrix[3][r] == expected[r];
   if (lastColumnIsIdentityRow) {
     d.hint =
-        "the fourth column is 0 0 0 1, so the matrix looks transposed; "
-        "'sfconvert --transpose-matrices' repairs such files";
+        "the fourth column is 0 0 0 1, so the matrix looks transposed; '{0}' repairs such files";
+    d.remedies = {{Setting::TransposedMatrices, "true"}};
   }
 }
 

@@ -138,7 +138,8 @@ Diagnostic& reportTooManyObjects(SourceSpan span, std::size_t maxObjects, Diagno
   Diagnostic& d = out.error(DiagnosticCode::TooManyObjects, span,
                             "the file has more than " + std::to_string(maxObjects) +
                                 " objects and lights: reading stops here");
-  d.hint = "raise the limit with --max-objects if the scene is meant to be this large";
+  d.hint = "raise the limit with {0} if the scene is meant to be this large";
+  d.remedies = {{Setting::MaxObjects, ""}};
   return d;
 }
 

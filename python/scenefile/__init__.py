@@ -23,6 +23,7 @@ from . import _checks, _core
 from ._model import (Camera, Colour, Diagnostic, FixIt, Light, Material, Matrix, Note, Object,
                      ObjectKind, Scene, Severity, TransformKind, TransformOp, Vector, View,
                      _diagnostics, _kind, _matrix, compose_transform)
+from ._remedy import Remedy
 
 __version__: str = _core.__version__
 
@@ -35,8 +36,8 @@ FIT_TOLERANCE: float = _core.FIT_TOLERANCE
 
 __all__ = [
     "CUBE", "CYLINDER", "Camera", "Colour", "Diagnostic", "FIT_TOLERANCE", "FixIt", "Light",
-    "Material", "Matrix", "MeshFit", "Note", "Object", "ObjectKind", "PLANE", "SPHERE", "Scene",
-    "SceneError", "Severity", "TransformKind", "TransformOp", "Vector", "View", "check",
+    "Material", "Matrix", "MeshFit", "Note", "Object", "ObjectKind", "PLANE", "SPHERE", "Remedy",
+    "Scene", "SceneError", "Severity", "TransformKind", "TransformOp", "Vector", "View", "check",
     "compose_transform", "convert", "decompose_transform", "default_scene", "fit_primitive",
     "formats", "loads", "primitive_mesh", "read", "render", "validate", "write",
 ]
@@ -374,8 +375,8 @@ def render(scene: Scene, width: int = 640, height: int = 480, spp: int = 1, dept
     Rows from the top, red, green, blue: the numbers sfrender writes before
     it rounds them to an image's levels (``round(clamp(v, 0, 1) * 255)`` is
     its 8-bit PNG or PPM). ``fov`` is the vertical field of view in degrees,
-    60 as the issue that made the module names it; None takes the scene's
-    own (a glTF or POV-Ray camera's), else 60, as sfrender without --fov.
+    60 by default, as in sfrender; None takes the scene's own (a glTF or
+    POV-Ray camera's), else 60, as sfrender without --fov.
     ``threads`` 0 uses every core. The GIL is released while it renders, and
     Ctrl+C (KeyboardInterrupt) stops it. An invalid scene raises SceneError,
     a render that does not fit in free memory MemoryError.

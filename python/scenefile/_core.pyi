@@ -12,7 +12,8 @@ SceneData: {"camera": {"matrix", "colour", "look_at", "span"},
              "reflectivity", "transparency", "ri"};
   transforms: [(kind name, (x, y, z), span)] | None; span: (line, column, length).
 DiagnosticData: {"severity", "code", "file", "span", "message", "hint",
-                 "notes": [(span, message)], "fix_it": (span, replacement) | None}
+                 "notes": [(span, message)], "fix_it": (span, replacement) | None,
+                 "remedies": [(setting, value)]}
 """
 
 from typing import Any, Dict, List, Optional, Sequence, Tuple
@@ -60,3 +61,4 @@ def primitive_mesh(kind: str, segments: int,
 def formats() -> List[Dict[str, Any]]: ...
 def format_by_extension(file_name: str) -> Optional[str]: ...
 def suggest_spelling(word: str, candidates: List[str]) -> Optional[str]: ...
+def hint_text(hint: str, words: List[str]) -> str: ...

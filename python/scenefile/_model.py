@@ -17,12 +17,14 @@ then describe the matrix anew.
 from __future__ import annotations
 
 import enum
-from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union, overload
+from typing import (Any, Callable, Dict, Iterable, List, Optional, Sequence, Tuple, Union,
+                    overload)
 
 import numpy as np
 import numpy.typing as npt
 
 from . import _checks, _core
+from ._remedy import Remedy, hint_in
 
 Colour = Tuple[float, float, float]
 Vector = Tuple[float, float, float]
@@ -628,19 +630,32 @@ class Diagnostic:
     ``str()`` gives the tools' one-line form: ``file:line:column: error:
     message [code]`` (without line and column where the place is unknown).
     Lines and columns count from 1; columns count bytes; 0 is unknown.
+    ``remedies`` are the settings that would cure it; ``hint`` names them as
+    this package's keywords, and ``hint_in`` in other words.
     """
 
-    __slots__ = ("severity", "code", "file", "line", "column", "length", "message", "hint",
-                 "notes", "fix_it")
+    __slots__ = ("severity", "code", "file", "line", "column", "length", "message", "_hint",
+                 "notes", "fix_it", "remedies")
 
     def __init__(self, severity: Union[Severity, str], code: str, file: str, line: int,
                  column: int, message: str, hint: str = "", length: int = 0,
-                 notes: Sequence[Note] = (), fix_it: Optional[FixIt] = None) -> None:
+                 notes: Sequence[Note] = (), fix_it: Optional[FixIt] = None,
+                 remedies: Sequence[Remedy] = ()) -> None:
         self.severity = Severity(severity)
         self.line, self.column, self.length = _place(line, column, length)
-        self.code, self.file, self.message, self.hint = code, file, message, hint
+        self.code, self.file, self.message, self._hint = code, file, message, hint
         self.notes: List[Note] = list(notes)
         self.fix_it = fix_it
+        self.remedies: List[Remedy] = list(remedies)
+
+    @property
+    def hint(self) -> str:
+        """One line of advice, or "": ``raise the limit with max_file_size=188 ...``."""
+        return self.hint_in(str)
+
+    def hint_in(self, words: Callable[[Remedy], str]) -> str:
+        """The hint with each remedy said as ``words(remedy)``: a front end's own terms."""
+        return hint_in(self._hint, self.remedies, words) if self.remedies else self._hint
 
     @property
     def location(self) -> str:
@@ -668,8 +683,9 @@ class Diagnostic:
         if data["fix_it"] is not None:
             (fl, fc, flen), replacement = data["fix_it"]
             fix_it = FixIt(fl, fc, flen, replacement)
+        remedies = [Remedy(setting, value) for setting, value in data["remedies"]]
         return cls(data["severity"], data["code"], data["file"], line, column, data["message"],
-                   data["hint"], length, notes, fix_it)
+                   data["hint"], length, notes, fix_it, remedies)
 
 
 def _diagnostics(data: Iterable[Dict[str, Any]]) -> List[Diagnostic]:

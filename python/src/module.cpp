@@ -309,6 +309,15 @@ std::optional<std::string> suggestSpelling(const std::string& word,
   return std::string(*found);
 }
 
+// hint_text(hint, words) -> the hint with each "{N}" replaced by words[N]:
+// the library's one rule for saying a diagnostic's remedies.
+std::string hintText(const std::string& hint, const std::vector<std::string>& words) {
+  std::vector<scene::Remedy> remedies(words.size());
+  return scene::hintText(hint, remedies, [&](const scene::Remedy& remedy) {
+    return words[static_cast<std::size_t>(&remedy - remedies.data())];
+  });
+}
+
 py::array_t<float> render(const py::handle& data, int width, int height, int spp, int depth,
                           double fov, int threads, std::uint64_t seed) {
   render::RenderSettings settings;
@@ -356,6 +365,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("formats", &sp::formatRows);
   m.def("format_by_extension", &sp::formatByExtension, py::arg("file_name"));
   m.def("suggest_spelling", &sp::suggestSpelling, py::arg("word"), py::arg("candidates"));
+  m.def("hint_text", &sp::hintText, py::arg("hint"), py::arg("words"));
   m.attr("FIT_TOLERANCE") = scene::kFitTolerance;
   m.attr("DEFAULT_SEGMENTS") = scene::kDefaultSegments;
   m.attr("MIN_SEGMENTS") = scene::kMinSegments;

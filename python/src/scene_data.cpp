@@ -250,7 +250,15 @@ py::list diagnosticsToData(const scene::DiagnosticList& list) {
     d["span"] = spanToTuple(diagnostic.span);
     // A message quotes the input, which may be any bytes: shown, not kept.
     d["message"] = decodeText(diagnostic.message, "backslashreplace");
+    // "{0}" in the hint stands for remedies[0], which the package names by
+    // its keyword (scenefile._model.Remedy).
     d["hint"] = decodeText(diagnostic.hint, "backslashreplace");
+    py::list remedies;
+    for (const scene::Remedy& remedy : diagnostic.remedies) {
+      remedies.append(py::make_tuple(py::str(std::string(scene::settingName(remedy.setting))),
+                                     decodeText(remedy.value, "backslashreplace")));
+    }
+    d["remedies"] = remedies;
     py::list notes;
     for (const scene::DiagnosticNote& note : diagnostic.notes) {
       notes.append(

@@ -20,11 +20,36 @@ CHECKED = corpus("valid/*", "invalid/*", "gltf/*.gltf", "gltf-hostile/*.gltf",
 TOOL_POLICY = ("output-file-escapes", "output-file-format", "output-file-link-loop")
 
 
+# The tools' flags for the settings a hint names, and the tool said once
+# before those that are another tool's (tools/common/diagnostic_printer.cpp).
+TOOL_FLAGS = {"max-file-size": ("", "--max-file-size", False),
+              "max-objects": ("", "--max-objects", False),
+              "max-gltf-nodes": ("", "--max-nodes", False),
+              "transposed-matrices": ("sfconvert", "--transpose-matrices", False),
+              "skip-unsupported": ("", "--skip-unsupported", False),
+              "approximate": ("", "--approximate", False),
+              "field-of-view": ("sfrender", "--fov", True),
+              "width": ("sfrender", "--width", True), "height": ("sfrender", "--height", True),
+              "depth": ("", "--depth", True), "output-path": ("", "-o", False)}
+
+
+def as_the_tools_say(d):
+    """The hint with each remedy said as the tools' flag."""
+    said = set()
+
+    def flag(remedy):
+        tool, name, shows_value = TOOL_FLAGS[remedy.setting]
+        words = f"{tool} {name}" if tool and tool not in said else name
+        said.add(tool)
+        return words + (f" {remedy.value}" if shows_value and remedy.value else "")
+    return d.hint_in(flag)
+
+
 def shown(d):
     """A diagnostic as the comparison sees it: every field sfcheck's JSON has."""
     notes = [(n.line, n.column, n.length, n.message) for n in d.notes]
-    return (d.file, d.severity.value, d.code, d.line, d.column, d.length, d.message, d.hint,
-            notes)
+    return (d.file, d.severity.value, d.code, d.line, d.column, d.length, d.message,
+            as_the_tools_say(d), notes)
 
 
 def shown_json(d):
@@ -111,6 +136,11 @@ def test_limits_are_the_tools(tmp_path):
         scenefile.read(path, max_file_size=10)
     assert caught.value.errors[0].code == "file-too-large"
     assert scenefile.check(path, max_file_size=10)[0].code == "file-too-large"
+    # Told in Python's words: the keyword, and the size that would do.
+    size = os.path.getsize(path)
+    assert caught.value.errors[0].hint == (f"raise the limit with max_file_size={size} if the "
+                                           "file is meant to be this large")
+    assert caught.value.errors[0].remedies == [scenefile.Remedy("max-file-size", str(size))]
     with pytest.raises(scenefile.SceneError) as caught:
         scenefile.read(path, max_objects=2)
     assert caught.value.errors[0].code == "too-many-objects"

@@ -45,6 +45,15 @@ def same_but_generator(ours, theirs):
         theirs, f"sfconvert {version}".encode())
 
 
+def test_a_hint_names_the_keyword_that_cures_it(tmp_path):
+    # Where sfconvert says '--approximate', Python says its keyword.
+    with pytest.raises(scenefile.SceneError) as caught:
+        scenefile.convert(SHEAR, tmp_path / "shear.txt")
+    hints = {d.hint for d in caught.value.errors}
+    assert "'approximate=True' writes the nearest rotation and scale" in hints, hints
+    assert not (tmp_path / "shear.txt").exists()
+
+
 def sfconvert_losses(sfconvert, source, target, flags):
     result = run(sfconvert, source, target, *flags, "--format", "json", "--quiet", check=False)
     return result.returncode, [(d["code"], d["line"], d["message"])

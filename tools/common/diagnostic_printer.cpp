@@ -1,5 +1,8 @@
 #include "tools/common/diagnostic_printer.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace tools {
 
 namespace {
@@ -7,6 +10,42 @@ namespace {
 scene::Severity shownSeverity(const scene::Diagnostic& d, bool warningsAsErrors) {
   if (warningsAsErrors && d.severity == scene::Severity::Warning) return scene::Severity::Error;
   return d.severity;
+}
+
+// A setting as the tools' flags say it, and the tool that has the flag
+// where the hint names it (its other tools read the same option).
+struct SettingFlag {
+  std::string_view tool;  // said before the flag, once a hint
+  std::string_view flag;
+  bool showsValue;  // the value is written after the flag
+};
+
+SettingFlag settingFlag(scene::Setting setting) {
+  switch (setting) {
+    case scene::Setting::MaxFileSize:
+      return {"", "--max-file-size", false};
+    case scene::Setting::MaxObjects:
+      return {"", "--max-objects", false};
+    case scene::Setting::MaxGltfNodes:
+      return {"", "--max-nodes", false};
+    case scene::Setting::TransposedMatrices:
+      return {"sfconvert", "--transpose-matrices", false};
+    case scene::Setting::SkipUnsupported:
+      return {"", "--skip-unsupported", false};
+    case scene::Setting::Approximate:
+      return {"", "--approximate", false};
+    case scene::Setting::FieldOfView:
+      return {"sfrender", "--fov", true};
+    case scene::Setting::Width:
+      return {"sfrender", "--width", true};
+    case scene::Setting::Height:
+      return {"sfrender", "--height", true};
+    case scene::Setting::Depth:
+      return {"", "--depth", true};
+    case scene::Setting::OutputPath:
+      return {"", "-o", false};
+  }
+  return {"", "", false};
 }
 
 nlohmann::json spanToJson(const scene::SourceSpan& span) {
@@ -19,6 +58,22 @@ nlohmann::json spanToJson(const scene::SourceSpan& span) {
 }
 
 }  // namespace
+
+std::string hintText(const scene::Diagnostic& d) {
+  std::vector<std::string_view> toolsSaid;
+  return scene::hintText(d.hint, d.remedies, [&](const scene::Remedy& remedy) {
+    SettingFlag words = settingFlag(remedy.setting);
+    std::string text;
+    if (!words.tool.empty() &&
+        std::find(toolsSaid.begin(), toolsSaid.end(), words.tool) == toolsSaid.end()) {
+      toolsSaid.push_back(words.tool);
+      text = std::string(words.tool) + " ";
+    }
+    text += words.flag;
+    if (words.showsValue && !remedy.value.empty()) text += " " + remedy.value;
+    return text;
+  });
+}
 
 std::optional<DiagnosticFormat> diagnosticFormatFromName(std::string_view name) {
   if (name == "text") return DiagnosticFormat::Text;
@@ -56,7 +111,7 @@ void DiagnosticPrinter::print(const scene::Diagnostic& d) const {
        << paint.severity(severity, scene::codeName(d.code)) << "]\n";
   quote(d.file, d.span, d.fixIt ? &*d.fixIt : nullptr);
   if (!d.hint.empty())
-    out_ << "  " << paint.location("hint:") << ' ' << printableText(d.hint) << '\n';
+    out_ << "  " << paint.location("hint:") << ' ' << printableText(hintText(d)) << '\n';
   for (const scene::DiagnosticNote& note : d.notes) {
     printLocation(d.file, note.span);
     out_ << ' ' << paint.severity(scene::Severity::Note, "note:") << ' '
@@ -83,7 +138,7 @@ nlohmann::json diagnosticToJson(const scene::Diagnostic& d, bool warningsAsError
       {"message", printableText(d.message)},
   };
   j.update(spanToJson(d.span));
-  if (!d.hint.empty()) j["hint"] = printableText(d.hint);
+  if (!d.hint.empty()) j["hint"] = printableText(hintText(d));
   if (!d.notes.empty()) {
     nlohmann::json notes = nlohmann::json::array();
     for (const scene::DiagnosticNote& note : d.notes) {

@@ -58,6 +58,12 @@ class DiagnosticPrinter {
   const SourceExcerpts* sources_;
 };
 
+// The hint in the tools' words: each setting of d.remedies as the flag that
+// sets it ("raise the limit with --max-file-size ..."), the tool that has
+// the flag said once where the hint names it ("sfrender --fov 50 --width
+// 640").
+std::string hintText(const scene::Diagnostic& d);
+
 // The short form, uncoloured: for messages built outside a tool's run.
 void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out);
 

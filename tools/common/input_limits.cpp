@@ -84,13 +84,8 @@ InputText readInputText(const std::string& file, const scene::ReadOptions& optio
     text = readWholeFile(file, input.readError, options.maxFileSize);
   }
   if (!text) return input;
-  if (text->size() > options.maxFileSize) {
-    // Not a regular file, or one that grew: its whole size is unknown.
-    input.refused
-        .error(
-            scene::DiagnosticCode::FileTooLarge, {},
-            "the input is more than the limit of " + std::to_string(options.maxFileSize) + " bytes")
-        .hint = "raise the limit with --max-file-size if the input is meant to be this large";
+  // Not a regular file, or one that grew: its whole size is unknown.
+  if (!scene::checkFileSize(text->size(), options, input.refused, "the input", false)) {
     return input;
   }
   input.text = std::move(text);

@@ -22,7 +22,7 @@ struct GltfReadOptions {
   /// More POSITION vertices than this in the file is gltf-too-large.
   std::size_t maxVertices = kDefaultMaxGltfVertices;
   /// More nodes and other objects than this is gltf-too-many-nodes, refused
-  /// before the file is parsed (sfconvert --max-nodes).
+  /// before the file is parsed (Setting::MaxGltfNodes).
   std::size_t maxNodes = kDefaultMaxGltfNodes;
 
   friend bool operator==(const GltfReadOptions&, const GltfReadOptions&) = default;

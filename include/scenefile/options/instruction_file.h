@@ -10,7 +10,7 @@ namespace scene {
 struct InstructionWriteOptions {
   /// Write the nearest expressible form of a matrix with shear or of a rolled
   /// camera, and report how far each value moved, instead of failing
-  /// (sfconvert --approximate). Under ConversionOptions::noLoss an
+  /// (Setting::Approximate). Under ConversionOptions::noLoss an
   /// approximation is still an error.
   bool approximate = false;
   /// OUTPUT_FILE for a scene that has none (one read from a scene file).

@@ -10,7 +10,7 @@ namespace scene {
 /// Options of the POV-Ray reader.
 struct PovReadOptions {
   /// Constructs outside the subset are warnings and are skipped
-  /// (sfconvert --skip-unsupported), instead of errors.
+  /// (Setting::SkipUnsupported), instead of errors.
   bool skipUnsupported = false;
   /// The image size that POV-Ray's image_width and image_height stand for.
   int imageWidth = 640;
@@ -32,7 +32,7 @@ struct PovWriteOptions {
   /// The bounces (max_trace_level).
   int maxDepth = 5;
   /// Every object unlit in a colour of its own, no lights: an
-  /// object-identity picture for geometry cross-checks (sfconvert --flat).
+  /// object-identity picture for geometry cross-checks.
   bool flat = false;
 
   friend bool operator==(const PovWriteOptions&, const PovWriteOptions&) = default;

@@ -7,7 +7,7 @@ namespace scene {
 /// Options of the scene file reader.
 struct SceneFileReadOptions {
   /// Read each 4x4 column by column: the repair for files written transposed
-  /// (sfconvert --transpose-matrices).
+  /// (Setting::TransposedMatrices).
   bool transposedMatrices = false;
 
   friend bool operator==(const SceneFileReadOptions&, const SceneFileReadOptions&) = default;

@@ -74,11 +74,11 @@ void CamerasAndLights::reportFov(int camera) {
   // file; one out of a View's range is not kept for sfrender either.
   double aspect = c.perspective.aspectRatio;
   if (aspect >= kMinAspectRatio && aspect <= kMaxAspectRatio) view.aspectRatio = aspect;
-  c_.out
-      .note(DiagnosticCode::CameraFov, {},
-            "the camera's vertical field of view is " + formatNumber(degrees) +
-                " degrees, which a scene file cannot hold")
-      .hint = "render with sfrender --fov " + formatNumber(degrees);
+  Diagnostic& d = c_.out.note(DiagnosticCode::CameraFov, {},
+                              "the camera's vertical field of view is " + formatNumber(degrees) +
+                                  " degrees, which a scene file cannot hold");
+  d.hint = "render with {0}";
+  d.remedies = {{Setting::FieldOfView, formatNumber(degrees)}};
 }
 
 void CamerasAndLights::addCamera(int node, const glm::dmat4& world) {

@@ -163,7 +163,7 @@ class Checker {
   void problem(DiagnosticCode code, const std::string& pointer, std::string message,
                Severity severity = Severity::Error) {
     if (problems_.size() < kMaxProblems) {
-      problems_.push_back({severity, code, pointer, std::move(message), {}});
+      problems_.push_back({severity, code, pointer, std::move(message), {}, {}});
     }
   }
 
@@ -385,8 +385,9 @@ class Checker {
                   " is dropped: a scene file holds no image shape",
               loss_);
       if (!problems_.empty() && problems_.back().pointer == where + "/aspectRatio") {
-        problems_.back().hint = "render with sfrender --width and --height in the ratio " +
-                                describe((*p)["aspectRatio"]);
+        problems_.back().hint =
+            "render with {0} and {1} in the ratio " + describe((*p)["aspectRatio"]);
+        problems_.back().remedies = {{Setting::Width, ""}, {Setting::Height, ""}};
       }
     }
     bounded(*p, "znear", where, 0.0, false, "a near plane above 0");
@@ -649,9 +650,10 @@ void reportProblems(const std::vector<DocumentProblem>& problems, std::string_vi
   }
   for (const DocumentProblem& p : problems) {
     auto found = at.find(p.pointer);
-    out.report(p.severity, p.code, found == at.end() ? SourceSpan{} : spans[found->second],
-               p.message)
-        .hint = p.hint;
+    Diagnostic& d = out.report(p.severity, p.code,
+                               found == at.end() ? SourceSpan{} : spans[found->second], p.message);
+    d.hint = p.hint;
+    d.remedies = p.remedies;
     if (out.full()) return;
   }
 }

@@ -31,6 +31,7 @@ struct DocumentProblem {
   std::string pointer;
   std::string message;
   std::string hint;
+  std::vector<Remedy> remedies;  // Diagnostic::remedies
 };
 
 // Every index of the document that the reader follows (scene, scenes' nodes,

@@ -76,7 +76,7 @@ const std::string& ownExtras(const std::vector<std::string>& extras, int index);
 // one has an extension value that the other has not.
 double distanceOfPbr(const PbrMaterial& a, const PbrMaterial& b);
 
-// The --tessellation that gives the writer's mesh of `kind` this many
+// The tessellation (segments) that gives the writer's mesh of `kind` this many
 // triangles, if one does.
 std::optional<int> writtenSegments(ObjectKind kind, std::size_t triangles);
 // Whether the triangles (three indices into `positions` each) are exactly

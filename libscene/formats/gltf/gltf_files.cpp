@@ -5,6 +5,7 @@
 #include <new>
 
 #include "libscene/formats/gltf/glb.h"
+#include "scenefile/read.h"
 
 namespace scene::gltf {
 
@@ -138,12 +139,8 @@ void checkBufferFiles(const nlohmann::json& doc, const fs::path& folder, const R
     }
     std::error_code sizeError;
     std::uintmax_t size = uri.starts_with("data:") ? 0 : fs::file_size(target, sizeError);
-    if (!sizeError && size > options.maxFileSize) {
-      out.error(DiagnosticCode::FileTooLarge, {},
-                "buffer " + std::to_string(i) + "'s file '" + shown + "' is " +
-                    std::to_string(size) + " bytes, more than the limit of " +
-                    std::to_string(options.maxFileSize))
-          .hint = "raise the limit with --max-file-size if the file is meant to be this large";
+    if (!sizeError) {
+      checkFileSize(size, options, out, "buffer " + std::to_string(i) + "'s file '" + shown + "'");
     }
   }
 }

@@ -140,7 +140,7 @@ TEST(GltfInstancing, AnInstanceMovedIsFittedWithANote) {
 }
 
 // Each instance is an object: the instances' accessors are not read past
-// --max-objects, however many they hold.
+// maxObjects, however many they hold.
 TEST(GltfInstancing, NoMoreInstancesAreReadThanMaxObjectsAllows) {
   std::mt19937 rng(3);
   Scene scene = alikeScene(rng);

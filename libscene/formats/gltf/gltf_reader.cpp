@@ -48,12 +48,14 @@ std::string parseErrorMessage(const std::string& what) {
 // within options.gltf.maxNodes; when not, says so.
 bool withinObjectLimit(std::size_t objects, const ReadOptions& options, DiagnosticList& out) {
   if (objects <= options.gltf.maxNodes) return true;
-  out.error(DiagnosticCode::GltfTooManyNodes, {},
-            "the file has " + std::to_string(objects) +
-                " nodes and other objects (a material counting 5, a camera or a light 2), more "
-                "than the limit of " +
-                std::to_string(options.gltf.maxNodes))
-      .hint = "raise the limit with --max-nodes if the file is meant to be this large";
+  Diagnostic& d =
+      out.error(DiagnosticCode::GltfTooManyNodes, {},
+                "the file has " + std::to_string(objects) +
+                    " nodes and other objects (a material counting 5, a camera or a light 2), more "
+                    "than the limit of " +
+                    std::to_string(options.gltf.maxNodes));
+  d.hint = "raise the limit with {0} if the file is meant to be this large";
+  d.remedies = {{Setting::MaxGltfNodes, std::to_string(objects)}};
   return false;
 }
 

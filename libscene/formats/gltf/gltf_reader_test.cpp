@@ -132,7 +132,9 @@ TEST(GltfReader, ComposesTheHierarchyAndBakesTheMeshSizeIntoTheMatrix) {
   EXPECT_EQ(read.scene.camera.matrix[3], glm::dvec4(0, 0, 10, 1));
   std::vector<Diagnostic> fov = withCode(read.diagnostics, DiagnosticCode::CameraFov);
   ASSERT_EQ(fov.size(), 1u);
-  EXPECT_NE(fov[0].hint.find("--fov 28.64789"), std::string::npos) << fov[0].hint;
+  ASSERT_EQ(fov[0].remedies.size(), 1u);
+  EXPECT_EQ(fov[0].remedies[0].setting, Setting::FieldOfView);
+  EXPECT_TRUE(fov[0].remedies[0].value.starts_with("28.64789")) << fov[0].remedies[0].value;
 }
 
 TEST(GltfReader, AMeshSplitIntoPrimitivesIsOneShape) {

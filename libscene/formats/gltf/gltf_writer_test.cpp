@@ -147,7 +147,7 @@ TEST(GltfWriter, TheInfinitePlaneIsMadeFiniteWithAWarning) {
   // Sized from the scene's bounds: the sphere reaches past x = 20.
   EXPECT_NE(finite[0].message.find("half-size 64"), std::string::npos) << finite[0].message;
   EXPECT_EQ(withCode(w.diagnostics, DiagnosticCode::LightFalloff).size(), 1u);
-  // --no-loss: an error, and nothing written.
+  // noLoss: an error, and nothing written.
   DiagnosticList out;
   EXPECT_FALSE(writeGltf(scene, testing::noLossConversion(), false, out).has_value());
   EXPECT_TRUE(out.hasErrors());

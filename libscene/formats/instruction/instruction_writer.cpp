@@ -102,14 +102,17 @@ std::optional<std::string> writeInstructionFile(const Scene& scene,
     } else if (std::abs(described.roll) > kRollTolerance) {
       double degrees = described.roll * 180.0 / std::numbers::pi;
       bool approximate = approximationSeverity == Severity::Warning;
-      out.report(
-             approximationSeverity,
-             approximate ? DiagnosticCode::CameraRollApproximated : DiagnosticCode::LossCameraRoll,
-             scene.camera.span,
-             "the camera is rolled by " + formatNumber(degrees) +
-                 " degrees about its forward axis, which an instruction file cannot hold" +
-                 (approximate ? "; written without the roll" : ""))
-          .hint = approximate ? "" : "'--approximate' writes the camera without its roll";
+      Diagnostic& d = out.report(
+          approximationSeverity,
+          approximate ? DiagnosticCode::CameraRollApproximated : DiagnosticCode::LossCameraRoll,
+          scene.camera.span,
+          "the camera is rolled by " + formatNumber(degrees) +
+              " degrees about its forward axis, which an instruction file cannot hold" +
+              (approximate ? "; written without the roll" : ""));
+      if (!approximate) {
+        d.hint = "'{0}' writes the camera without its roll";
+        d.remedies = {{Setting::Approximate, "true"}};
+      }
     }
   }
   text += "\nSTART CAMERA\n";
@@ -158,7 +161,8 @@ std::optional<std::string> writeInstructionFile(const Scene& scene,
         if (approximate) {
           addMovedEntries(diag, object.matrix, d.recomposed, object.span);
         } else {
-          diag.hint = "'--approximate' writes the nearest rotation and scale";
+          diag.hint = "'{0}' writes the nearest rotation and scale";
+          diag.remedies = {{Setting::Approximate, "true"}};
         }
       }
       ops = std::move(d.ops);

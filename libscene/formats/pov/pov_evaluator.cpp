@@ -52,8 +52,7 @@ void PovEvaluator::directive() {
   if (name == "if" || name == "ifdef" || name == "ifndef" || name == "switch" || name == "while" ||
       name == "for" || name == "macro") {
     unsupported(d.span, "'#" + std::string(name) + "'",
-                "sfconvert runs no loop, macro or condition; --skip-unsupported skips it to "
-                "its #end");
+                "sfconvert runs no loop, macro or condition; {0} skips it to its #end");
     skipDirectiveBlock();
     return;
   }

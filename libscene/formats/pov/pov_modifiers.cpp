@@ -163,7 +163,7 @@ void PovModifierReader::materialBlock(const PovToken& keyword, PovMaterialPatch&
                   "the " + std::string(w) + " '" + std::string(name.text) +
                       "' (declared in no file sfconvert reads)",
                   "it may come from " + firstOtherInclude() +
-                      ", whose declarations sfconvert does not read; --skip-unsupported "
+                      ", whose declarations sfconvert does not read; {0} "
                       "keeps the object without it");
       skipToBlockEnd();
     }

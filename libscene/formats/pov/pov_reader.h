@@ -25,7 +25,7 @@ inline constexpr std::size_t kMaxPovDeclarations = 100'000;
 
 // What POV-Ray's camera shows beyond what the scene's camera matrix holds.
 struct PovCameraView {
-  double verticalFovDegrees = 60.0;  // the --fov to render the scene with
+  double verticalFovDegrees = 60.0;  // the field of view to render the scene with
   double aspectRatio = 4.0 / 3.0;    // the image's width over its height
   // POV-Ray's world is left-handed: with a left-handed camera (POV-Ray's
   // default) the scene was mirrored (z negated) so that sfrender's

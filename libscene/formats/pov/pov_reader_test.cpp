@@ -9,9 +9,9 @@
 #include <numbers>
 #include <random>
 
+#include "libscene/testing/test_support.h"
 #include "libscene/text/number.h"
 #include "scenefile/read.h"
-#include "libscene/testing/test_support.h"
 #include "scenefile/transform.h"
 
 namespace scene {
@@ -252,7 +252,10 @@ TEST(PovReader, TheDefaultCameraIsLeftHandedAndMirrorsTheScene) {
   expectNear(glm::dvec3(camera[0]), {1, 0, 0});  // right stays +x: the picture is POV-Ray's
   expectNear(apply(r.read.scene.objects[0].matrix, {0, 0, 0}), {1, 2, -5});
   Diagnostic fov = expectOne(r.read.diagnostics, DiagnosticCode::CameraFov, 1, 1, Severity::Note);
-  EXPECT_EQ(fov.hint, "render with sfrender --fov 53.13010235415598 --width 640 --height 481");
+  EXPECT_EQ(fov.hint, "render with {0} {1} {2}");
+  EXPECT_EQ(fov.remedies, (std::vector<Remedy>{{Setting::FieldOfView, "53.13010235415598"},
+                                               {Setting::Width, "640"},
+                                               {Setting::Height, "481"}}));
 }
 
 TEST(PovReader, ALookAtCameraKeepsPovRaysHandedness) {

@@ -13,10 +13,10 @@ void PovReports::unsupported(SourceSpan span, const std::string& what, std::stri
   Severity severity = options_.pov.skipUnsupported ? Severity::Warning : Severity::Error;
   Diagnostic& d = out_.report(severity, DiagnosticCode::PovUnsupported, span,
                               what + " is not supported (line " + std::to_string(span.line) + ")");
-  d.hint = hint.empty() ? (options_.pov.skipUnsupported
-                               ? std::string("skipped")
-                               : std::string("--skip-unsupported converts the rest"))
+  d.hint = hint.empty() ? (options_.pov.skipUnsupported ? std::string("skipped")
+                                                        : std::string("{0} converts the rest"))
                         : std::move(hint);
+  if (d.hint.find("{0}") != std::string::npos) d.remedies = {{Setting::SkipUnsupported, "true"}};
 }
 
 void PovReports::loss(SourceSpan span, std::string message, std::string hint) {
@@ -24,8 +24,11 @@ void PovReports::loss(SourceSpan span, std::string message, std::string hint) {
   out_.report(severity, DiagnosticCode::PovLoss, span, std::move(message)).hint = std::move(hint);
 }
 
-void PovReports::ignored(SourceSpan span, std::string message, std::string hint) {
-  out_.note(DiagnosticCode::PovIgnored, span, std::move(message)).hint = std::move(hint);
+void PovReports::ignored(SourceSpan span, std::string message, std::string hint,
+                         std::vector<Remedy> remedies) {
+  Diagnostic& d = out_.note(DiagnosticCode::PovIgnored, span, std::move(message));
+  d.hint = std::move(hint);
+  d.remedies = std::move(remedies);
 }
 
 void PovReports::refuse(SourceSpan span, std::string message, std::string hint) {

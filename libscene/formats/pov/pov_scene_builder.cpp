@@ -375,8 +375,10 @@ void PovSceneBuilder::reportView(SourceSpan span) {
                     " shows a vertical field of view of " + fov +
                     " degrees at an aspect ratio of " + formatNumber(view.aspectRatio) +
                     (view.mirrored ? ", in a left-handed world (mirrored)" : ""));
-  d.hint = "render with sfrender --fov " + fov + " --width " + std::to_string(width) +
-           " --height " + std::to_string(std::max(height, 1));
+  d.hint = "render with {0} {1} {2}";
+  d.remedies = {{Setting::FieldOfView, fov},
+                {Setting::Width, std::to_string(width)},
+                {Setting::Height, std::to_string(std::max(height, 1))}};
 }
 
 }  // namespace

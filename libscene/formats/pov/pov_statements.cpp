@@ -100,7 +100,8 @@ void PovStatementReader::statement() {
       PovToken keyword = take();
       ignored(keyword.span, "global_settings is ignored",
               "sfrender's ambient term is AMBIENT times each light's colour, and "
-              "--depth sets the bounces");
+              "{0} sets the bounces",
+              {{Setting::Depth, ""}});
       skipBlockAfter();
       return;
     }
@@ -224,7 +225,7 @@ void PovStatementReader::cameraItem(const PovToken& word, PovCameraState& c,
              w == "panoramic" || w == "spherical" || w == "cylinder" || w == "mesh_camera" ||
              w == "user_defined") {
     unsupported(word.span, "the " + std::string(w) + " camera",
-                "sfrender's camera is a pinhole; --skip-unsupported reads it as perspective");
+                "sfrender's camera is a pinhole; {0} reads it as perspective");
     if (w == "cylinder") floatValue("the cylinder camera's type");
     if (w == "mesh_camera" || w == "user_defined") skipBlockAfter();
   } else if (w == "aperture" || w == "blur_samples" || w == "confidence" || w == "variance") {

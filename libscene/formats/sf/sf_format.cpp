@@ -36,8 +36,8 @@ void reportMaterialLosses(const Scene& scene, Severity severity, DiagnosticList&
       if (value == fallback) continue;
       out.report(severity, DiagnosticCode::LossMaterial, object.span,
                  std::string(materialPropertyName(p)) + " " + formatNumber(value) + " of " +
-                     std::string(objectKindName(object.kind)) + " object " +
-                     std::to_string(i + 1) + " is dropped: a scene file keeps only the colour")
+                     std::string(objectKindName(object.kind)) + " object " + std::to_string(i + 1) +
+                     " is dropped: a scene file keeps only the colour")
           .hint = "it becomes the default " + formatNumber(fallback);
     }
   }
@@ -49,9 +49,10 @@ std::optional<ConvertedFiles> writeSceneFileFormat(const Scene& scene,
   std::size_t errorsBefore = out.errorCount();
   reportMaterialLosses(scene, options.noLoss ? Severity::Error : Severity::Warning, out);
   if (scene.outputFile) {
-    out.note(DiagnosticCode::DroppedOutputFile, scene.outputFileSpan,
-             "OUTPUT_FILE is not written: a scene file names no output")
-        .hint = "sfrender takes the output name with -o";
+    Diagnostic& d = out.note(DiagnosticCode::DroppedOutputFile, scene.outputFileSpan,
+                             "OUTPUT_FILE is not written: a scene file names no output");
+    d.hint = "sfrender takes the output name with {0}";
+    d.remedies = {{Setting::OutputPath, *scene.outputFile}};
   }
   if (out.errorCount() != errorsBefore) return std::nullopt;
   return ConvertedFiles{writeSceneFile(scene), {}};

@@ -36,8 +36,7 @@ TEST(SceneFileReader, ReadsAValidScene) {
 }
 
 TEST(SceneFileReader, ReadsRowsIntoColumnMajorMatrices) {
-  ReadResult r = parse(kCameraRecord +
-                       "CUBE\n1 1 1\n1 2 3 4\n5 6 7 8\n9 10 11.5 12\n0 0 0 1\n");
+  ReadResult r = parse(kCameraRecord + "CUBE\n1 1 1\n1 2 3 4\n5 6 7 8\n9 10 11.5 12\n0 0 0 1\n");
   ASSERT_TRUE(r.ok()) << r.diagnostics.items().front().message;
   const glm::dmat4& m = r.scene.objects[0].matrix;
   EXPECT_EQ(m[1][0], 2.0);  // row 0, column 1
@@ -46,8 +45,11 @@ TEST(SceneFileReader, ReadsRowsIntoColumnMajorMatrices) {
 }
 
 TEST(SceneFileReader, AcceptsCrlfBomTabsAndNoFinalNewline) {
-  std::string text = "\xEF\xBB\xBF" "CAMERA\r\n0\t0 0\r\n 1 0 0 0 \r\n0 1 0 0\r\n0 0 1 5\r\n"
-                     "0 0 0 1\r\n\r\n" + kLightRecord + "PLANE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1";
+  std::string text =
+      "\xEF\xBB\xBF"
+      "CAMERA\r\n0\t0 0\r\n 1 0 0 0 \r\n0 1 0 0\r\n0 0 1 5\r\n"
+      "0 0 0 1\r\n\r\n" +
+      kLightRecord + "PLANE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1";
   ReadResult r = parse(text);
   EXPECT_TRUE(r.ok());
   EXPECT_TRUE(r.diagnostics.empty());
@@ -71,7 +73,9 @@ TEST(SceneFileReader, StopsAtTheFirstObjectOrLightPastMaxObjects) {
 }
 
 TEST(SceneFileReader, ColumnsCountFromTheLineNotTheBom) {
-  ReadResult r = parse("\xEF\xBB\xBF" "camera\n");
+  ReadResult r = parse(
+      "\xEF\xBB\xBF"
+      "camera\n");
   expectOne(r.diagnostics, DiagnosticCode::UnknownKeyword, 1, 1);
 }
 
@@ -129,7 +133,8 @@ TEST(SceneFileReader, ReportsInvalidBytes) {
   ReadResult r = parse(text);
   Diagnostic d = expectOne(r.diagnostics, DiagnosticCode::InvalidByte, 7, 3);
   EXPECT_EQ(d.message, "line contains a NUL byte");
-  ReadResult utf8 = parse(kCameraRecord + "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 \xC3\xA9\n");
+  ReadResult utf8 =
+      parse(kCameraRecord + "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 \xC3\xA9\n");
   expectOne(utf8.diagnostics, DiagnosticCode::InvalidByte, 12, 7);
 }
 
@@ -154,8 +159,8 @@ TEST(SceneFileReader, EmptyFileAndNoCamera) {
 
 TEST(SceneFileReader, ReportsTruncatedRecordsAndGoesOn) {
   // A SPHERE cut short by the next record, then a CUBE cut short by the end.
-  ReadResult r = parse(kCameraRecord + "SPHERE\n1 0 0\n1 0 0 0\n" + kLightRecord +
-                       "CUBE\n1 1 1\n1 0 0 0\n");
+  ReadResult r =
+      parse(kCameraRecord + "SPHERE\n1 0 0\n1 0 0 0\n" + kLightRecord + "CUBE\n1 1 1\n1 0 0 0\n");
   std::vector<Diagnostic> cut = testing::withCode(r.diagnostics, DiagnosticCode::TruncatedRecord);
   ASSERT_EQ(cut.size(), 2u);
   EXPECT_EQ(cut[0].span.line, 7u);
@@ -187,7 +192,8 @@ TEST(SceneFileReader, FourthRowMustBe0001) {
 TEST(SceneFileReader, HintsAtTransposedMatrices) {
   ReadResult r = parse(kCameraRecord + "SPHERE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n2 3 4 1\n");
   Diagnostic d = expectOne(r.diagnostics, DiagnosticCode::MatrixLastRow, 12, 1);
-  EXPECT_NE(d.hint.find("--transpose-matrices"), std::string::npos);
+  EXPECT_NE(d.hint.find("'{0}' repairs such files"), std::string::npos);
+  EXPECT_EQ(d.remedies, (std::vector<Remedy>{{Setting::TransposedMatrices, "true"}}));
   // The repair: read the same file column by column (the camera too).
   ReadOptions transposed;
   transposed.sceneFile.transposedMatrices = true;
@@ -195,9 +201,10 @@ TEST(SceneFileReader, HintsAtTransposedMatrices) {
                                   "SPHERE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n2 3 4 1\n",
                               transposed);
   ASSERT_FALSE(repaired.ok());  // the light was written row by row
-  ReadResult all = parse("CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 5 1\n"
-                         "SPHERE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n2 3 4 1\n",
-                         transposed);
+  ReadResult all = parse(
+      "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 5 1\n"
+      "SPHERE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n2 3 4 1\n",
+      transposed);
   ASSERT_TRUE(all.ok());
   EXPECT_EQ(glm::dvec3(all.scene.objects[0].matrix[3]), glm::dvec3(2, 3, 4));
   EXPECT_EQ(glm::dvec3(all.scene.camera.matrix[3]), glm::dvec3(0, 0, 5));
@@ -218,8 +225,8 @@ TEST(SceneFileReader, RejectsSingularAndIllConditionedMatrices) {
 }
 
 TEST(SceneFileReader, AllowsMirrors) {
-  ReadResult r = parse(kCameraRecord + kLightRecord +
-                       "SPHERE\n1 1 1\n-1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+  ReadResult r =
+      parse(kCameraRecord + kLightRecord + "SPHERE\n1 1 1\n-1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
   EXPECT_TRUE(r.ok());
   EXPECT_TRUE(r.diagnostics.empty());
 }

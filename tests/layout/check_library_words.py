@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""The library speaks in its own words: no source of libscene/ or
+include/scenefile/ names a tool's flag (--max-file-size, -o) in a string or
+a comment. A diagnostic that a setting can cure names it as data
+(scene::Remedy), and each front end says it in its own terms
+(docs/DIAGNOSTICS.md, "Remedies").
+
+    check_library_words.py SOURCE_DIR
+"""
+
+import pathlib
+import re
+import sys
+
+# A flag starts a word: after a space, a quote, a bracket or a backquote.
+FLAG = re.compile(r"(?:^|(?<=[\s\"'(`\[]))(--[a-z][a-z0-9-]*|-o\b)")
+
+# Text a writer puts in its output, which conversions keep byte for byte:
+# the POV-Ray writer's first comment says which render the file reproduces.
+OUTPUT_TEXT = {("libscene/formats/pov/pov_writer.cpp", '"--fov "'),
+               ("libscene/formats/pov/pov_writer.cpp", '" --width "'),
+               ("libscene/formats/pov/pov_writer.cpp", '" --height "')}
+
+
+def words(text):
+    """Each string literal and comment of C++ source, with its line number."""
+    i, line, n = 0, 1, len(text)
+    while i < n:
+        c = text[i]
+        if text.startswith("//", i):
+            end = text.find("\n", i)
+            end = n if end < 0 else end
+            yield line, text[i:end]
+            i = end
+        elif text.startswith("/*", i):
+            end = text.find("*/", i + 2)
+            end = n if end < 0 else end + 2
+            yield line, text[i:end]
+            line += text.count("\n", i, end)
+            i = end
+        elif text.startswith('R"', i) and not (i and (text[i - 1].isalnum() or text[i - 1] == "_")):
+            open_end = text.find("(", i)
+            delimiter = ")" + text[i + 2:open_end] + '"'
+            end = text.find(delimiter, open_end)
+            end = n if end < 0 else end + len(delimiter)
+            yield line, text[i:end]
+            line += text.count("\n", i, end)
+            i = end
+        elif c in "\"'":
+            j = i + 1
+            while j < n and text[j] != c and text[j] != "\n":
+                j += 2 if text[j] == "\\" else 1
+            yield line, text[i:j + 1]
+            i = j + 1
+        else:
+            if c == "\n":
+                line += 1
+            i += 1
+
+
+def main():
+    root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
+    failures = 0
+    sources = sorted(p for folder in ("libscene", "include/scenefile")
+                     for p in (root / folder).rglob("*")
+                     if p.suffix in (".h", ".cpp", ".def"))
+    for path in sources:
+        name = path.relative_to(root).as_posix()
+        for line, piece in words(path.read_text(encoding="utf-8", errors="replace")):
+            if (name, piece) in OUTPUT_TEXT:
+                continue
+            for flag in FLAG.findall(piece):
+                print(f"FAIL: {name}:{line} names the flag {flag}: {piece.strip()}",
+                      file=sys.stderr)
+                failures += 1
+    if failures:
+        print(f"FAIL: {failures} flags named in the library; give a diagnostic a "
+              "scene::Remedy and say it in the front end", file=sys.stderr)
+        return 1
+    print(f"{len(sources)} library sources name no flag")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
