@@ -2,6 +2,7 @@
 
 import math
 import os
+import re
 
 import numpy as np
 import pytest
@@ -9,7 +10,7 @@ import pytest
 import scenefile
 from scenefile import (CUBE, CYLINDER, PLANE, SPHERE, Camera, Light, Material, Object, Scene,
                        TransformOp, View)
-from conftest import EXAMPLES, TESTDATA
+from conftest import EXAMPLES, SOURCE, TESTDATA
 
 
 def built_scene():
@@ -92,6 +93,21 @@ def test_kinds_are_checked_with_a_suggestion():
         Object("sphere")
     with pytest.raises(ValueError, match="ROTATE_X"):
         TransformOp("ROTATE", 1.0)
+
+
+def test_the_kinds_are_those_of_object_kinds_def_in_its_order():
+    # Python cannot include the C++ list, so it is read here: a kind added
+    # there and not to ObjectKind, or the other way round, fails.
+    with open(os.path.join(SOURCE, "include", "scenefile", "object_kinds.def")) as f:
+        text = f.read()
+    records = re.findall(r"^SCENEFILE_OBJECT_KIND\(\w+, (\w+), \w+\)$", text, re.M)
+    assert records and len(records) == text.count("\nSCENEFILE_OBJECT_KIND(")
+    assert [kind.name for kind in scenefile.ObjectKind] == records
+    assert [kind.value for kind in scenefile.ObjectKind] == records
+    for record in records:
+        assert getattr(scenefile, record) is scenefile.ObjectKind[record]
+        assert record in scenefile.__all__
+        assert scenefile.primitive_mesh(record, 8, 1.0)[2].shape[1] == 3
 
 
 def test_transforms_describe_the_matrix_while_they_agree():
