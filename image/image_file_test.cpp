@@ -403,5 +403,38 @@ TEST_F(ImageFileTest, EveryExtensionWritesItsOwnFormat) {
   }
 }
 
+// sfrender writes .ppm by hand: the file must be the one OpenImageIO writes
+// (.pnm goes through it) and read back through OpenImageIO identically.
+TEST(ImageFile, HandWrittenPpmMatchesOpenImageIO) {
+  render::Image image;
+  image.width = 7;
+  image.height = 5;
+  for (int i = 0; i < image.width * image.height * 3; ++i) {
+    image.rgb.push_back(static_cast<float>(i % 23) / 19.0f - 0.1f);
+  }
+  fs::path dir = fs::temp_directory_path() / ("sfppm-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string error;
+  ASSERT_TRUE(writeImageFile(image, dir / "hand.ppm", error)) << error;
+  ASSERT_TRUE(writeImageFile(image, dir / "oiio.pnm", error)) << error;
+  std::optional<std::string> hand = readWholeFile(dir / "hand.ppm", error);
+  std::optional<std::string> oiio = readWholeFile(dir / "oiio.pnm", error);
+  ASSERT_TRUE(hand && oiio);
+  EXPECT_EQ(*hand, *oiio);
+
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open((dir / "hand.ppm").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, image.width);
+  EXPECT_EQ(in->spec().height, image.height);
+  EXPECT_EQ(in->spec().nchannels, 3);
+  std::vector<unsigned char> pixels(image.rgb.size());
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
+  in->close();
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    ASSERT_EQ(pixels[i], quantizeChannel(image.rgb[i])) << i;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tools

@@ -1,6 +1,6 @@
 // The tools as command-line users expect them (docs/TOOLS.md): standard
 // input and output as files, --no-clobber, -q and -v, what each says it
-// wrote, and the JSON report's shape.
+// wrote, the JSON report's shape, the exit codes and the limit flags.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -239,6 +239,51 @@ TEST(StandardInput, AnUnreadableOneIsAReadErrorNotAnEmptyInput) {
   std::cin.clear();
   EXPECT_FALSE(text.text.has_value());
   EXPECT_EQ(text.readError, std::strerror(EISDIR));
+}
+
+TEST_F(ToolTest, ExitCodesForUsageAndUnreadableFiles) {
+  EXPECT_EQ(run(runSfcheck, {"sfcheck"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--bogus", "x"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", path("missing.sf")}), toInt(ExitCode::IoError));
+  EXPECT_NE(err_.str().find("cannot read the file: No such file or directory"), std::string::npos);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--help"}), 0);
+  EXPECT_NE(out_.str().find("--werror"), std::string::npos);
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--version"}), 0);
+  EXPECT_EQ(out_.str(), std::string("sfconvert ") + SCENEFILE_VERSION + "\n");
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "-V"}), 0);
+  EXPECT_EQ(out_.str(), std::string("sfconvert ") + SCENEFILE_VERSION + "\n");
+}
+
+TEST_F(ToolTest, EveryReaderToolTakesTheLimitFlags) {
+  std::string scene = write("scene.sf", kValidScene);  // one light, one sphere
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-objects", "1", scene}), 1);
+  EXPECT_NE(err_.str().find(":13:1: error: the file has more than 1 objects and lights"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-objects", "2", scene}), 0);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-objects", "0", scene}), toInt(ExitCode::Usage));
+
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--max-objects", "1", scene, path("a.txt")}), 1);
+  EXPECT_NE(err_.str().find("[too-many-objects]"), std::string::npos) << err_.str();
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--max-file-size", "10", scene, path("a.txt")}), 1);
+  EXPECT_NE(err_.str().find("[file-too-large]"), std::string::npos) << err_.str();
+  EXPECT_EQ(files(), std::vector<std::string>{"scene.sf"});  // nothing written
+  EXPECT_EQ(run(runSfconvert, {"sfconvert", "--max-objects", "2", "--max-file-size", "1MiB", scene,
+                               path("a.txt")}),
+            0)
+      << err_.str();
+
+  std::vector<std::string> render = {"sfrender", scene,      "-o", path("a.ppm"), "--width",
+                                     "8",        "--height", "6",  "--quiet"};
+  std::vector<std::string> few = render;
+  few.insert(few.end(), {"--max-objects", "1"});
+  EXPECT_EQ(run(sfrender, few), 1);
+  EXPECT_NE(err_.str().find("[too-many-objects]"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(path("a.ppm")));
+  std::vector<std::string> enough = render;
+  enough.insert(enough.end(), {"--max-objects", "2"});
+  EXPECT_EQ(run(sfrender, enough), 0) << err_.str();
+  EXPECT_TRUE(fs::exists(path("a.ppm")));
 }
 
 }  // namespace

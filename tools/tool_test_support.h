@@ -1,5 +1,6 @@
 // What the tools' in-process tests share: valid scenes, sfrender as a test
-// runs it, and a scratch folder of each test's own.
+// runs it, a scratch folder of each test's own, and the fixture that runs a
+// tool there.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,11 +8,13 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "tools/common/file_io.h"
 #include "tools/common/tool_streams.h"
 #include "tools/sfrender/sfrender.h"
 
@@ -71,5 +74,45 @@ inline std::vector<std::string> fileNamesIn(const std::filesystem::path& folder)
   std::sort(names.begin(), names.end());
   return names;
 }
+
+// An instruction file: a camera, a light and a blue cube, drawn to pic.ppm.
+inline const std::string kInstructions =
+    "OUTPUT_FILE pic.ppm\nSTART CAMERA\nLOCATION 0 0 5\nLOOK_AT 0 0 0\nEND CAMERA\n"
+    "START LIGHT\nLOCATION 3 3 3\nCOLOUR 1 1 1\nEND LIGHT\n"
+    "START OBJECT CUBE\nSTART MATERIAL\nCOLOUR 0 0 1\nAMBIENT 0.15\nEND MATERIAL\n"
+    "START TRANSFORMATION\nSCALE 0.5 0.5 0.5\nROTATE_Y 1.5707963267948966\n"
+    "END TRANSFORMATION\nEND OBJECT\n";
+
+// The tools run in-process with their streams captured, as a user runs
+// them, in a folder of the test's own.
+class ToolTest : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = freshTestFolder("sftools"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::string write(const std::string& name, const std::string& content) const {
+    std::ofstream(path(name), std::ios::binary) << content;
+    return path(name);
+  }
+
+  std::string read(const std::string& name) const {
+    std::string error;
+    return readWholeFile(path(name), error).value_or("<missing>");
+  }
+
+  // Files in the folder, to see that nothing half-written stayed behind.
+  std::vector<std::string> files() const { return fileNamesIn(dir_); }
+
+  template <typename Tool>
+  int run(Tool tool, const std::vector<std::string>& args) {
+    return runTool(tool, args, out_, err_);
+  }
+
+  std::filesystem::path dir_;
+  std::ostringstream out_;
+  std::ostringstream err_;
+};
 
 }  // namespace tools

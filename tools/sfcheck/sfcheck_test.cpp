@@ -1,0 +1,146 @@
+// sfcheck end to end, in-process with its streams captured: the summary,
+// the diagnostics in text and JSON, --werror, and the files it cannot read.
+#include "tools/sfcheck/sfcheck.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "tools/common/exit_code.h"
+#include "tools/tool_test_support.h"
+
+namespace tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST_F(ToolTest, SfcheckSumsUpAndExitsZeroOnValidFiles) {
+  std::string a = write("a.sf", kValidScene);
+  std::string b = write("b.txt", kInstructions);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", a, b}), 0);
+  EXPECT_EQ(err_.str(), "sfcheck: 2 files checked, 0 errors, 0 warnings\n");
+}
+
+TEST_F(ToolTest, SfcheckPrintsDiagnosticsInTheCompilersForm) {
+  std::string bad = write("bad.sf",
+                          "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+                          "sphere\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", bad}), toInt(ExitCode::InvalidInput));
+  // The source line quoted, the span underlined, the fix-it under it.
+  EXPECT_EQ(err_.str(),
+            bad +
+                ":7:1: error: unknown keyword 'sphere', expected a record name (CAMERA, LIGHT, "
+                "PLANE, SPHERE, CYLINDER or CUBE) [unknown-keyword]\n"
+                "    7 | sphere\n"
+                "      | ^~~~~~\n"
+                "      | SPHERE\n"
+                "  hint: keywords are upper case: did you mean 'SPHERE'?\n"
+                "sfcheck: 1 file checked, 1 error, 0 warnings\n");
+  // The short form: a line a diagnostic.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "short", bad}), toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(err_.str(),
+            bad +
+                ":7:1: error: unknown keyword 'sphere', expected a record name (CAMERA, LIGHT, "
+                "PLANE, SPHERE, CYLINDER or CUBE) [unknown-keyword]\n"
+                "  hint: keywords are upper case: did you mean 'SPHERE'?\n"
+                "sfcheck: 1 file checked, 1 error, 0 warnings\n");
+}
+
+TEST_F(ToolTest, SfcheckWerrorAndJson) {
+  std::string unlit = write("unlit.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", unlit}), 0);
+  EXPECT_NE(err_.str().find("warning: scene has no LIGHT [no-light]"), std::string::npos);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", unlit}), 1);
+  EXPECT_NE(err_.str().find("error: scene has no LIGHT [no-light]"), std::string::npos);
+
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", unlit}), 0);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["summary"]["warnings"], 1);
+  EXPECT_EQ(report["files"][0]["format"], "scene-file");
+  const nlohmann::json& d = report["files"][0]["diagnostics"][0];
+  EXPECT_EQ(d["code"], "no-light");
+  EXPECT_EQ(d["severity"], "warning");
+  EXPECT_EQ(d["line"], 1);
+  EXPECT_EQ(d["column"], 1);
+}
+
+// A file's bytes quoted in a message (a POV-Ray #include name here) must not
+// reach the terminal raw, nor break the JSON report with invalid UTF-8.
+TEST_F(ToolTest, QuotedBytesArePrintableInTextAndJson) {
+  std::string pov = write("escape.pov", "#include \"a\x1B[31mb\xFF\xC3\xA9.inc\"\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", pov}), 1);
+  EXPECT_NE(err_.str().find("'#include \"a\\x1B[31mb\\xFF\xC3\xA9.inc\"' would read another file"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_EQ(err_.str().find('\x1B'), std::string::npos);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", pov}), 1);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  std::string message = report["files"][0]["diagnostics"][0]["message"];
+  EXPECT_NE(message.find("a\\x1B[31mb\\xFF\xC3\xA9.inc"), std::string::npos) << message;
+}
+
+TEST_F(ToolTest, SfcheckWarnsWhenOutputFileLeavesItsFolder) {
+  std::string escape = write("e.txt",
+                             "OUTPUT_FILE ../../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                             "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                             "COLOUR 1 1 1\nEND LIGHT\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", escape}), 0);
+  EXPECT_NE(err_.str().find(":1:13: warning: OUTPUT_FILE '../../x.ppm' leaves the instruction "
+                            "file's folder [output-file-escapes]"),
+            std::string::npos)
+      << err_.str();
+  // Through a link that leads out of the folder.
+  fs::create_directory_symlink(fs::temp_directory_path(), dir_ / "out");
+  std::string linked = write("l.txt",
+                             "OUTPUT_FILE out/x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                             "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                             "COLOUR 1 1 1\nEND LIGHT\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", linked}), 1);
+  std::string inside = write("i.txt",
+                             "OUTPUT_FILE sub/../x.ppm\nSTART CAMERA\nLOCATION 0 0 5\n"
+                             "LOOK_AT 0 0 0\nEND CAMERA\nSTART LIGHT\nLOCATION 1 1 1\n"
+                             "COLOUR 1 1 1\nEND LIGHT\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", inside}), 0) << err_.str();
+}
+
+TEST_F(ToolTest, SfcheckRefusesAFileAboveMaxFileSizeUnread) {
+  std::string scene = write("scene.sf", kValidScene);
+  std::string size = std::to_string(kValidScene.size());
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", "100", scene}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(err_.str(), scene + ": error: the file is " + size +
+                            " bytes, more than the limit of 100 [file-too-large]\n"
+                            "  hint: raise the limit with --max-file-size if the file is meant "
+                            "to be this large\n"
+                            "sfcheck: 1 file checked, 1 error, 0 warnings\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", "--max-file-size", "100", scene}), 1);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["files"][0]["diagnostics"][0]["code"], "file-too-large");
+  EXPECT_EQ(report["summary"]["errors"], 1);
+  // Size suffixes, and the limit itself is allowed.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", "1kib", scene}), 0) << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", size, scene}), 0) << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--max-file-size", "-5", scene}), toInt(ExitCode::Usage));
+}
+
+// A file that cannot be read is no "0 errors": counted as an error, and
+// named in the summary (text) or counted under "unreadable" (JSON).
+TEST_F(ToolTest, SfcheckCountsAnUnreadableFileAsAnError) {
+  std::string good = write("good.sf", kValidScene);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", good, path("missing.sf")}), toInt(ExitCode::IoError));
+  EXPECT_NE(err_.str().find("sfcheck: 2 files checked, 1 error, 0 warnings (1 file could not be "
+                            "read)\n"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", path("missing.sf"), dir_.string()}),
+            toInt(ExitCode::IoError));
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["summary"]["errors"], 2);
+  EXPECT_EQ(report["summary"]["unreadable"], 2);
+  EXPECT_EQ(report["files"][1]["readError"], "it is a directory");
+}
+
+}  // namespace
+}  // namespace tools

@@ -1,0 +1,216 @@
+// sfrender end to end, in-process with its streams captured: the image a
+// run names and writes, what it refuses, its statistics, its limits.
+#include "tools/sfrender/sfrender.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "renderer/render.h"
+#include "tools/common/exit_code.h"
+#include "tools/sfcheck/sfcheck.h"
+#include "tools/tool_test_support.h"
+
+namespace tools {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The manual's three ways of running the renderer: no file, a scene file,
+// an instruction file.
+TEST_F(ToolTest, SfrenderRendersTheDefaultSceneWithoutInput) {
+  std::string out = path("default.ppm");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--width", "32", "--height", "24"}), 0)
+      << err_.str();
+  EXPECT_NE(err_.str().find("sfrender: wrote " + out + " (32x24, the default scene)"),
+            std::string::npos);
+  std::string image = read("default.ppm");
+  EXPECT_EQ(image.substr(0, 13), "P6\n32 24\n255\n");
+  EXPECT_EQ(image.size(), std::string("P6\n32 24\n255\n").size() + 32 * 24 * 3);
+}
+
+TEST_F(ToolTest, SfrenderNamesASceneFilesImageAfterIt) {
+  std::string in = write("ball.sf", kValidScene);
+  fs::path before = fs::current_path();
+  fs::current_path(dir_);
+  int status = run(sfrender, {"sfrender", "ball.sf", "--width", "16", "--height", "12"});
+  fs::current_path(before);
+  EXPECT_EQ(status, 0) << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "ball.ppm"));
+}
+
+TEST_F(ToolTest, SfrenderHonoursAndConfinesOutputFile) {
+  fs::create_directory(dir_ / "scenes");
+  std::string in = write("scenes/i.txt", kInstructions);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "--width", "16", "--height", "12", "--quiet"}), 0)
+      << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "scenes" / "pic.ppm"));  // beside the instruction file
+  EXPECT_EQ(err_.str(), "");
+
+  std::string escaping = kInstructions;
+  escaping.replace(escaping.find("pic.ppm"), 7, "../escaped.ppm");
+  std::string bad = write("scenes/e.txt", escaping);
+  EXPECT_EQ(run(sfrender, {"sfrender", bad, "--width", "16", "--height", "12"}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_NE(err_.str().find("error: OUTPUT_FILE '../escaped.ppm' leaves the instruction file's "
+                            "folder [output-file-escapes]"),
+            std::string::npos)
+      << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "escaped.ppm"));
+  // -o names the output, and then the user has chosen.
+  EXPECT_EQ(
+      run(sfrender, {"sfrender", bad, "-o", path("chosen.png"), "--width", "16", "--height", "12"}),
+      0);
+  EXPECT_TRUE(fs::exists(dir_ / "chosen.png"));
+}
+
+TEST_F(ToolTest, SfrenderRefusesBadRequests) {
+  std::string in = write("s.sf", kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "-o", path("x.unknownformat")}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "--width", "0"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "--spp", "-1"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(run(sfrender, {"sfrender", path("missing.sf")}), toInt(ExitCode::IoError));
+  std::string invalid = write("bad.sf", "CAMERA\n");
+  EXPECT_EQ(run(sfrender, {"sfrender", invalid, "-o", path("bad.ppm")}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_FALSE(fs::exists(dir_ / "bad.ppm"));
+  // A scene file may have any name, an image's among them: never written over.
+  std::string odd = write("scene.ppm", kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", odd, "-o", odd}), toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(read("scene.ppm"), kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "-o", path("n/o/x.ppm")}), toInt(ExitCode::IoError));
+}
+
+TEST_F(ToolTest, SfrenderStatsAndFloatImages) {
+  std::string in = write("s.sf", kValidScene);
+  EXPECT_EQ(run(sfrender, {"sfrender", in, "-o", path("s.exr"), "--width", "8", "--height", "6",
+                           "--stats", "--spp", "4"}),
+            0)
+      << err_.str();
+  EXPECT_NE(err_.str().find("8x6, 4 spp, depth 5:"), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("(192 primary,"), std::string::npos) << err_.str();
+  EXPECT_TRUE(fs::exists(dir_ / "s.exr"));
+  EXPECT_EQ(files(), (std::vector<std::string>{"s.exr", "s.sf"}));  // no temporary left
+}
+
+// A batch on the GPU renders its scenes through one device it opens once:
+// each image is the one its scene gives rendered alone.
+TEST_F(ToolTest, SfrenderBatchOnTheGpuGivesEachSceneItsOwnImage) {
+  render::GpuProbe probe = render::probeGpu();
+  if (!probe.available) GTEST_SKIP() << "no Vulkan device: " << probe.reason;
+  std::vector<std::string> scenes = {write("a.sf", kValidScene), write("b.txt", kInstructions),
+                                     write("c.sf", kValidScene)};
+  std::vector<std::string> size = {"--device", "gpu", "--width", "24", "--height", "18"};
+  std::vector<std::string> batch = {"sfrender"};
+  batch.insert(batch.end(), scenes.begin(), scenes.end());
+  batch.insert(batch.end(), size.begin(), size.end());
+  batch.insert(batch.end(), {"-o", path("batch-{stem}.ppm"), "--verbose"});
+  ASSERT_EQ(run(sfrender, batch), 0) << err_.str();
+  // The device is opened once, by the first scene.
+  std::string said = err_.str();
+  std::size_t opened = said.find(" for the scenes on the gpu");
+  EXPECT_NE(opened, std::string::npos) << said;
+  EXPECT_EQ(said.find(" for the scenes on the gpu", opened + 1), std::string::npos) << said;
+  const std::vector<std::string> stems = {"a", "b", "c"};
+  for (std::size_t k = 0; k < stems.size(); ++k) {
+    std::vector<std::string> alone = {"sfrender", scenes[k], "-o",
+                                      path("alone-" + stems[k] + ".ppm")};
+    alone.insert(alone.end(), size.begin(), size.end());
+    ASSERT_EQ(run(sfrender, alone), 0) << err_.str();
+    std::string image = read("batch-" + stems[k] + ".ppm");
+    EXPECT_EQ(image.size(), std::string("P6\n24 18\n255\n").size() + 24 * 18 * 3) << stems[k];
+    EXPECT_EQ(image, read("alone-" + stems[k] + ".ppm")) << stems[k];
+  }
+}
+
+TEST_F(ToolTest, SfrenderSettingsAboveTheirLimitsAreUsageErrorsNamingTheFlag) {
+  std::string out = path("a.ppm");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--width", "8192", "--height", "8193"}),
+            toInt(ExitCode::Usage));
+  EXPECT_EQ(
+      err_.str(),
+      "sfrender: error: --width 8192 and --height 8193 make 67,117,056 pixels, more than the limit "
+      "of 67,108,864; raise it with --max-pixels\n");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--spp", "1025"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(
+      err_.str(),
+      "sfrender: error: --spp 1025 is more than the limit of 1024 samples per pixel; raise it with "
+      "--max-spp\n");
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", out, "--depth", "65"}), toInt(ExitCode::Usage));
+  EXPECT_EQ(err_.str(),
+            "sfrender: error: --depth 65 is more than the limit of 64 bounces; raise it with "
+            "--max-depth\n");
+  EXPECT_FALSE(fs::exists(out));
+  // Lowered limits hold too, and raised ones let the render through.
+  EXPECT_EQ(
+      run(sfrender, {"sfrender", "-o", out, "--width", "8", "--height", "8", "--max-pixels", "63"}),
+      toInt(ExitCode::Usage));
+  // A scene with nothing reflective or transparent: bounces cost nothing.
+  std::string matte = write("matte.sf", kValidScene);
+  EXPECT_EQ(
+      run(sfrender, {"sfrender", matte, "-o", out, "--width", "2", "--height", "2", "--spp", "2000",
+                     "--max-spp", "2000", "--depth", "70", "--max-depth", "70", "--quiet"}),
+      0)
+      << err_.str();
+  EXPECT_TRUE(fs::exists(out));
+}
+
+TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
+  std::string out = path("a.ppm");
+  std::vector<std::string> args = {"sfrender", "-o", out, "--width", "640", "--height", "480"};
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  auto oneMebibyte = [] { return std::optional<std::uint64_t>(std::uint64_t{1} << 20); };
+  std::istringstream none;
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), ToolStreams(none, out_, err_),
+                        oneMebibyte),
+            toInt(ExitCode::OutOfResources));
+  EXPECT_NE(err_.str().find("sfrender: error: the render needs about "), std::string::npos)
+      << err_.str();
+  EXPECT_NE(err_.str().find("(image 11 MiB, scene "), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("but only 1 MiB of memory is available"), std::string::npos)
+      << err_.str();
+  EXPECT_FALSE(fs::exists(out));
+  // Enough memory, or none known: it renders.
+  args = {"sfrender", "-o", out, "--width", "16", "--height", "12", "--quiet"};
+  argv.clear();
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), ToolStreams(none, out_, err_),
+                        oneMebibyte),
+            0)
+      << err_.str();
+  auto unknown = [] { return std::optional<std::uint64_t>(); };
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), ToolStreams(none, out_, err_),
+                        unknown),
+            0);
+}
+
+TEST_F(ToolTest, AnOutputFileWithNoImageExtensionIsReportedWhereItStands) {
+  for (std::string name : {"picture", "picture.xyz", "picture.txt"}) {
+    std::string file = write("n.txt", "OUTPUT_FILE " + name + kInstructions.substr(19));
+    std::string where = file + ":1:13: ";
+    EXPECT_EQ(run(runSfcheck, {"sfcheck", file}), 0) << name;
+    EXPECT_NE(err_.str().find(where + "warning: OUTPUT_FILE '" + name + "' "), std::string::npos)
+        << err_.str();
+    EXPECT_NE(err_.str().find("sfrender can write [output-file-format]"), std::string::npos)
+        << err_.str();
+    EXPECT_EQ(run(sfrender, {"sfrender", file, "--width", "8", "--height", "6"}),
+              toInt(ExitCode::InvalidInput))
+        << name;
+    EXPECT_NE(err_.str().find(where + "error: OUTPUT_FILE '" + name + "' "), std::string::npos)
+        << err_.str();
+    EXPECT_NE(err_.str().find("  hint: name the image with .ppm, .png, .tif or .exr"),
+              std::string::npos)
+        << err_.str();
+  }
+  std::string upper = write("u.txt", "OUTPUT_FILE pic.PNG" + kInstructions.substr(19));
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--werror", upper}), 0) << err_.str();
+  // Named with -o, the name is a usage error, as before.
+  EXPECT_EQ(run(sfrender, {"sfrender", "-o", path("picture")}), toInt(ExitCode::Usage));
+  EXPECT_EQ(files(), (std::vector<std::string>{"n.txt", "u.txt"}));
+}
+
+}  // namespace
+}  // namespace tools

@@ -1,0 +1,18 @@
+#include "tools/sfrender/thread_probe.h"
+
+#include <gtest/gtest.h>
+
+#include <optional>
+
+namespace tools {
+namespace {
+
+TEST(ThreadProbe, StartsTheThreadsItIsAskedFor) {
+  EXPECT_EQ(threadStartFailure(1), std::nullopt);
+  EXPECT_EQ(threadStartFailure(64), std::nullopt);
+  EXPECT_GE(renderThreadCount(0), 1);
+  EXPECT_EQ(renderThreadCount(7), 7);
+}
+
+}  // namespace
+}  // namespace tools
