@@ -5,7 +5,8 @@
 #   bash scripts/check-package.sh BUILD_DIR
 #
 # 1. installs the build (already built: `cmake --install`, nothing is
-#    rebuilt) to a temporary prefix, and checks its layout;
+#    rebuilt) to a temporary prefix, and checks its layout, the docs and
+#    the man pages' references to them included;
 # 2. builds examples/count-objects out of tree against that prefix alone:
 #    with find_package (CMAKE_PREFIX_PATH), shared and static, and with
 #    pkg-config (PKG_CONFIG_PATH), shared and --static;
@@ -75,6 +76,28 @@ if [[ -e $soname_file ]]; then
   [[ $soname == libscenefile.so.0 ]] || fail "libscenefile.so's SONAME is '$soname', not libscenefile.so.0"
 fi
 [[ ! -e $prefix/bin/sfrender_oiio.so ]] || fail "sfrender_oiio.so is installed in bin/"
+# The docs, with the guide's pictures and scenes, and none of the files that
+# make them; each man page's SEE ALSO names installed docs, at the prefix
+# the build was configured for (the man pages are made at build time).
+docdir=$(cache_value CMAKE_INSTALL_DOCDIR)
+docdir=${docdir:-share/doc/scenefile}
+for file in GUIDE.md TOOLS.md DIAGNOSTICS.md images/guide/row-reflectivity.png \
+            guide/first-scene.txt; do
+  [[ -e $prefix/$docdir/$file ]] || fail "the install has no $docdir/$file"
+done
+compgen -G "$prefix/$docdir/perf/*.png" >/dev/null || fail "the install has no $docdir/perf/*.png"
+for file in CMakeLists.txt man guide/make_images.sh; do
+  [[ ! -e $prefix/$docdir/$file ]] || fail "the install has $docdir/$file"
+done
+configured=$(cache_value CMAKE_INSTALL_PREFIX)/$docdir
+for page in "$prefix"/share/man/man1/*.1; do
+  named=$(grep -o "$configured/[A-Za-z_./]*\.md" "$page" | sort -u)
+  [[ -n $named ]] || fail "$(basename "$page") names no doc in $configured"
+  for doc in $named; do
+    [[ -e $prefix/$docdir/${doc#"$configured"/} ]] ||
+      fail "$(basename "$page") names $doc, which the install lacks"
+  done
+done
 
 # --- 2. and 3. Build the example each way, and run it ---------------------------
 valid_sf=$root/testdata/valid/all-primitives.sf
