@@ -4,15 +4,11 @@
 #include <cmath>
 #include <glm/common.hpp>
 
+#include "scenefile/srgb.h"
+
 namespace scene::gltf {
 
 namespace {
-
-// Where sRGB's curve leaves its straight segment, in display and linear
-// terms. The standard rounds the linear knee to 0.0031308; its exact image
-// keeps the two functions each other's inverse at the knee too.
-constexpr double kDisplayKnee = 0.04045;
-constexpr double kLinearKnee = kDisplayKnee / 12.92;
 
 // srgbToLinear(a) / srgbToLinear(b) for 0 <= a <= b, b > 0, also where
 // srgbToLinear(b) underflows or overflows (a light colour of 1e300): the ratio of the
@@ -20,24 +16,14 @@ constexpr double kLinearKnee = kDisplayKnee / 12.92;
 double linearRatio(double a, double b) {
   // On the straight segment the ratio is a / b, also where a / 12.92
   // underflows.
-  if (b <= kDisplayKnee) return std::clamp(a / b, 0.0, 1.0);
+  if (b <= kSrgbDisplayKnee) return std::clamp(a / b, 0.0, 1.0);
   double lb = srgbToLinear(b);
   if (std::isfinite(lb)) return std::clamp(srgbToLinear(a) / lb, 0.0, 1.0);
-  if (a <= kDisplayKnee) return 0.0;
+  if (a <= kSrgbDisplayKnee) return 0.0;
   return std::clamp(std::pow((a + 0.055) / (b + 0.055), 2.4), 0.0, 1.0);
 }
 
 }  // namespace
-
-double srgbToLinear(double display) {
-  if (!(display > kDisplayKnee)) return std::max(display, 0.0) / 12.92;
-  return std::pow((display + 0.055) / 1.055, 2.4);
-}
-
-double linearToSrgb(double linear) {
-  if (!(linear > kLinearKnee)) return std::max(linear, 0.0) * 12.92;
-  return 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-}
 
 glm::dvec3 illuminanceFromColour(const glm::dvec3& colour) {
   glm::dvec3 lux;

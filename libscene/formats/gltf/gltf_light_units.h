@@ -12,11 +12,6 @@
 
 namespace scene::gltf {
 
-// sRGB's transfer curve (IEC 61966-2-1) and its inverse, carried on past 1
-// by the same formula: a scene file's light colour may exceed 1.
-double srgbToLinear(double display);
-double linearToSrgb(double linear);
-
 // The illuminance that a viewer shows as a linear value of 1 on a white
 // diffuse surface: Blender's glTF add-on converts with 683 lm/W both ways,
 // and Cycles shows a white diffuse surface under E W/m^2 at E / pi.
