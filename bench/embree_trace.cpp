@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "bench/scene_loading.h"
+#include "renderer/camera.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "renderer/unit_shapes.h"

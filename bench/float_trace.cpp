@@ -36,6 +36,7 @@
 
 #include "bench/float_tracer.h"
 #include "bench/scene_loading.h"
+#include "renderer/camera.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "renderer/tracer.h"

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "renderer/camera.h"
 #include "renderer/default_scene.h"
 #include "renderer/radiance_bound.h"
 #include "renderer/render.h"

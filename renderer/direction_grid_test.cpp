@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "renderer/camera.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"

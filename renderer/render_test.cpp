@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <set>
 
+#include "renderer/camera.h"
 #include "renderer/default_scene.h"
 #include "renderer/test_scenes.h"
 

@@ -1,5 +1,5 @@
 // Handing a render's work to its threads: parts taken in turn, and the
-// square tiles of a region (render.cpp's passes).
+// square tiles of a region (cpu_render.cpp's passes).
 #pragma once
 
 #include <algorithm>
@@ -9,7 +9,8 @@
 #include <thread>
 #include <vector>
 
-#include "renderer/render.h"
+#include "renderer/image.h"
+#include "renderer/render_progress.h"
 
 namespace render {
 

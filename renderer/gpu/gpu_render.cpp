@@ -8,7 +8,10 @@
 #include <cstring>
 #include <optional>
 
+#include "renderer/camera.h"
+#include "renderer/device.h"
 #include "renderer/gpu/gpu_scene.h"
+#include "renderer/gpu/vulkan_context.h"
 // Generated at build time (renderer/CMakeLists.txt): render_comp_spv[].
 #include "renderer/gpu/render_comp_spv.h"
 
@@ -127,7 +130,7 @@ class Pipeline {
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };
 
-// The region as renderImage cuts it (render.cpp's regionToRender).
+// The region as renderImage cuts it (regionToRender).
 GpuParams paramsFor(const RenderScene& scene, const RenderSettings& settings,
                     const PixelRegion& region, bool idsOnly) {
   PinholeCamera camera(scene.camera(), settings);
@@ -305,11 +308,9 @@ KernelOutput runKernel(const RenderScene& scene, const RenderSettings& settings,
   return out;
 }
 
-}  // namespace
-
-Image renderImageGpu(const RenderScene& scene, const RenderSettings& settings,
-                     RenderStatistics* statistics, const ProgressCallback& progress,
-                     const CancelFlag* cancel) {
+Image renderImageVulkan(const RenderScene& scene, const RenderSettings& settings,
+                        RenderStatistics* statistics, const ProgressCallback& progress,
+                        const CancelFlag* cancel) {
   auto start = std::chrono::steady_clock::now();
   PixelRegion region = regionToRender(settings);
   Image image = blankImageFor(settings);
@@ -340,8 +341,8 @@ Image renderImageGpu(const RenderScene& scene, const RenderSettings& settings,
   return image;
 }
 
-std::vector<std::int32_t> renderObjectIdsGpu(const RenderScene& scene,
-                                             const RenderSettings& settings) {
+std::vector<std::int32_t> renderObjectIdsVulkan(const RenderScene& scene,
+                                                const RenderSettings& settings) {
   PixelRegion full{0, 0, std::max(0, settings.width), std::max(0, settings.height)};
   KernelOutput out = runKernel(scene, settings, full, true, {}, nullptr);
   std::vector<std::int32_t> ids(static_cast<std::size_t>(full.width()) * full.height());
@@ -351,6 +352,29 @@ std::vector<std::int32_t> renderObjectIdsGpu(const RenderScene& scene,
     ids[k] = object == RaySource::kNone ? -1 : static_cast<std::int32_t>(scene.sceneObject(object));
   }
   return ids;
+}
+
+}  // namespace
+
+// What fails in Vulkan (a device lost, memory short) is to the caller the
+// device's being unavailable, as a missing device is.
+Image renderImageGpu(const RenderScene& scene, const RenderSettings& settings,
+                     RenderStatistics* statistics, const ProgressCallback& progress,
+                     const CancelFlag* cancel) {
+  try {
+    return renderImageVulkan(scene, settings, statistics, progress, cancel);
+  } catch (const VulkanError& e) {
+    throw DeviceUnavailable(e.what());
+  }
+}
+
+std::vector<std::int32_t> renderObjectIdsGpu(const RenderScene& scene,
+                                             const RenderSettings& settings) {
+  try {
+    return renderObjectIdsVulkan(scene, settings);
+  } catch (const VulkanError& e) {
+    throw DeviceUnavailable(e.what());
+  }
 }
 
 }  // namespace render::gpu

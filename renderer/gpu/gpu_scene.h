@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "renderer/gpu/vulkan_context.h"
-#include "renderer/render.h"
+#include "renderer/render_scene.h"
 
 namespace render::gpu {
 

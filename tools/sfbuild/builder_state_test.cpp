@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "libscene/formats/sf/sf_writer.h"
+#include "renderer/camera.h"
 #include "renderer/render.h"
 #include "scenefile/read.h"
 #include "scenefile/transform.h"

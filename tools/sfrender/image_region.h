@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "renderer/render.h"
+#include "renderer/image.h"
 #include "tools/common/cli_forward.h"
 
 namespace tools {

@@ -1,0 +1,41 @@
+#include "renderer/render_settings.h"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace render {
+
+PixelRegion regionToRender(const RenderSettings& settings) {
+  PixelRegion full{0, 0, std::max(0, settings.width), std::max(0, settings.height)};
+  if (settings.region.empty()) return full;
+  PixelRegion cut{std::max(settings.region.x0, 0), std::max(settings.region.y0, 0),
+                  std::min(settings.region.x1, full.x1), std::min(settings.region.y1, full.y1)};
+  return cut.empty() ? PixelRegion{} : cut;
+}
+
+bool samplesAdaptively(const RenderSettings& settings) {
+  return settings.adaptiveThreshold > 0.0 && settings.samplesPerPixel > 1;
+}
+
+std::uint64_t uniformSampleCount(const RenderSettings& settings) {
+  PixelRegion region = regionToRender(settings);
+  return static_cast<std::uint64_t>(region.width()) * static_cast<std::uint64_t>(region.height()) *
+         static_cast<std::uint64_t>(std::max(1, settings.samplesPerPixel));
+}
+
+Image blankImageFor(const RenderSettings& settings) {
+  PixelRegion region = regionToRender(settings);
+  Image image;
+  image.width = region.width();
+  image.height = region.height();
+  image.originX = region.x0;
+  image.originY = region.y0;
+  image.fullWidth = std::max(0, settings.width);
+  image.fullHeight = std::max(0, settings.height);
+  std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  image.rgb.assign(pixels * Image::kChannels, 0.0f);
+  if (settings.coverage) image.coverage.assign(pixels, 0.0f);
+  return image;
+}
+
+}  // namespace render

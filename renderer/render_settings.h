@@ -1,0 +1,101 @@
+// What a render is asked for (RenderSettings), and what follows from it
+// alone: the pixels it covers, whether it samples adaptively, how many
+// samples a uniform one takes.
+#pragma once
+
+#include <cstdint>
+
+#include "renderer/image.h"
+
+namespace render {
+
+class GpuDevice;
+
+// Where renderImage traces (docs/RENDERING.md, "The GPU path").
+enum class RenderDevice {
+  Cpu,
+  // A Vulkan device with shaderFloat64 and shaderInt64 (lavapipe, a CPU
+  // implementation, counts too): the same picture to within rounding.
+  Gpu,
+  // The GPU when a real one (not a CPU implementation) is present, the
+  // render uniform, and it has at least kAutoGpuMinSamplesPerThread camera
+  // samples for each thread the CPU would render with; the CPU otherwise.
+  Auto,
+};
+
+struct RenderSettings {
+  int width = 640;
+  int height = 480;
+  double verticalFovDegrees = 60.0;
+  int samplesPerPixel = 1;
+  int maxDepth = 5;
+  // The most adaptive depth control may lower a channel of a sample (and so
+  // of a pixel) by leaving out reflected and refracted rays: half a level of
+  // an 8-bit image. A pixel whose level that could change is traced again
+  // (RenderStatistics::retracedPixels), so every level is what full tracing
+  // gives (docs/RENDERING.md,
+  // "Cost"). 0 traces every branch to the depth limit.
+  double pruneTolerance = 0.5 / 255.0;
+  // The most reflected and refracted rays one sample traces, whatever the
+  // scene: where every hit passes on nearly all it receives to both its
+  // children, no tolerance bounds the work, and this does (docs/RENDERING.md,
+  // "Cost"). 0: no limit, and then no pixel is retraced, so that an 8-bit
+  // level can come out one below what full tracing gives.
+  std::uint64_t maxRaysPerSample = 4096;
+  // The largest level of the integer image the render will be stored in
+  // (levelOf): what retracing keeps to the level of full tracing (255 for 8
+  // bits, 65535 for 16, with pruneTolerance half of one of its levels).
+  double levels = 255.0;
+  // Whether the image gets Image::coverage, for an image with alpha.
+  bool coverage = false;
+  // Whether camera rays find their hits as packets (RenderScene::closestHits,
+  // docs/TRACING.md, "Packets"): the same image, bit for bit, either way;
+  // false traces each alone, for the tests and benchmarks that compare.
+  bool packets = true;
+  // Whether camera rays find their hits through the eye's direction grid
+  // (RenderScene::closestHitsFromEye, docs/TRACING.md, "Direction
+  // grids") where it can answer: the same image, bit for bit, either way.
+  bool eyeGrid = true;
+  int threads = 0;  // 0: every core
+  std::uint64_t seed = 0;
+  // Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"): 0
+  // samples every pixel samplesPerPixel times. Above 0, every pixel corner
+  // is sampled, a pixel whose four corners agree is their mean, and a square
+  // whose corners differ by more than this (in some channel, in the image's
+  // units 0..1) or show different objects is cut in four, down to
+  // subdivisionDepth(samplesPerPixel) cuts.
+  double adaptiveThreshold = 0.0;
+  // The part of the width x height image to render; empty: all of it. Its
+  // pixels are exactly those of the full image's render (a region reaching
+  // outside the image is cut to it).
+  PixelRegion region;
+  // On the GPU, adaptive anti-aliasing is refused, threads only pack the
+  // scene for the upload, and the adaptive depth control's settings
+  // (pruneTolerance, maxRaysPerSample) are not used: every branch is traced
+  // to maxDepth.
+  RenderDevice device = RenderDevice::Cpu;
+  // The device GPU renders go through, kept open by the caller for as long
+  // as renders use it; null: each GPU render opens a device of its own.
+  // Auto with one given asks no probe: it takes it where it is a real GPU.
+  const GpuDevice* gpu = nullptr;
+};
+
+/// The pixels of the full image that `settings` asks for: its region cut to
+/// the image, or all of it.
+PixelRegion regionToRender(const RenderSettings& settings);
+
+/// Whether a render with `settings` samples adaptively (docs/RENDERING.md,
+/// "Adaptive sampling"): a threshold above 0 and more than one sample a
+/// pixel to refine to.
+bool samplesAdaptively(const RenderSettings& settings);
+
+/// The camera samples a uniform render with `settings` takes: the pixels
+/// of regionToRender times samplesPerPixel (at least 1).
+std::uint64_t uniformSampleCount(const RenderSettings& settings);
+
+/// An image of the pixels `settings` asks for (regionToRender), every
+/// value 0, with its place in the full image, and coverage when asked for:
+/// what each device's render fills in.
+Image blankImageFor(const RenderSettings& settings);
+
+}  // namespace render
