@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 
-#include "renderer/render.h"
+#include "renderer/camera.h"
 #include "renderer/render_scene.h"
 #include "scenefile/convert.h"
 #include "scenefile/matrix.h"
@@ -52,21 +52,10 @@ std::optional<double> typedNumber(const std::string& typed) {
   return value;
 }
 
-// The eye, forward, up and right of the camera, orthonormalised the way
-// render::PinholeCamera does it.
-struct Frame {
-  glm::dvec3 eye, forward, up, right;
-};
-Frame cameraFrame(const scene::Camera& camera) {
-  Frame f;
-  f.eye = glm::dvec3(camera.matrix[3]);
-  // Axes of any finite length are valid (1e-300, 1e300), as in the renderer.
-  f.forward = scene::unitDirection(-glm::dvec3(camera.matrix[2]));
-  glm::dvec3 up(camera.matrix[1]);
-  if (!scene::isModerate(up)) up = scene::unitDirection(up);
-  f.up = scene::unitDirection(up - glm::dot(up, f.forward) * f.forward);
-  f.right = glm::cross(f.forward, f.up);
-  return f;
+// The camera as the renderer draws it: the frame in which sfbuild moves it
+// and sets up its OpenGL view.
+render::PinholeCamera viewCamera(const BuilderState& state) {
+  return render::PinholeCamera(state.scene.camera, viewRenderSettings(state));
 }
 
 void updatePreview(BuilderState& state) {
@@ -435,27 +424,29 @@ void handleMouseMove(BuilderState& state, double x, double y) {
   glm::dvec2 delta = glm::dvec2(x, y) - state.mouse;
   state.mouse = {x, y};
   if (state.looking || state.panning) {
-    Frame f = cameraFrame(state.scene.camera);
+    render::PinholeCamera camera = viewCamera(state);
     if (state.looking) {
       // Yaw about world +Y, pitch about the camera's right, kept off the poles.
       double yaw = -delta.x * kLookRadiansPerPixel;
       double pitch = -delta.y * kLookRadiansPerPixel;
-      glm::dvec3 forward =
-          glm::dvec3(glm::rotate(glm::dmat4(1.0), yaw, glm::dvec3(0, 1, 0)) *
-                     glm::rotate(glm::dmat4(1.0), pitch, f.right) * glm::dvec4(f.forward, 0.0));
+      glm::dvec3 forward = glm::dvec3(glm::rotate(glm::dmat4(1.0), yaw, glm::dvec3(0, 1, 0)) *
+                                      glm::rotate(glm::dmat4(1.0), pitch, camera.right()) *
+                                      glm::dvec4(camera.forward(), 0.0));
       forward = glm::normalize(forward);
-      if (std::abs(forward.y) < 0.99) setCamera(state, f.eye, forward);
+      if (std::abs(forward.y) < 0.99) setCamera(state, camera.eye(), forward);
     } else {
-      glm::dvec3 eye = f.eye + (-delta.x * f.right + delta.y * f.up) * kPanUnitsPerPixel;
-      setCamera(state, eye, f.forward);
+      glm::dvec3 eye =
+          camera.eye() + (-delta.x * camera.right() + delta.y * camera.up()) * kPanUnitsPerPixel;
+      setCamera(state, eye, camera.forward());
     }
   }
   if (state.operation != Operation::None && state.typed.empty()) updatePreview(state);
 }
 
 void handleScroll(BuilderState& state, double offset) {
-  Frame f = cameraFrame(state.scene.camera);
-  setCamera(state, f.eye + f.forward * (offset * kWheelUnitsPerStep), f.forward);
+  render::PinholeCamera camera = viewCamera(state);
+  setCamera(state, camera.eye() + camera.forward() * (offset * kWheelUnitsPerStep),
+            camera.forward());
   recordChange(state);
 }
 
@@ -501,8 +492,7 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y) {
   }
   // One ray, no shadows: no lights' grids.
   render::RenderScene renderScene(pickScene, 0, false);
-  render::RenderSettings settings = viewRenderSettings(state);
-  render::PinholeCamera camera(renderScene.camera(), settings);
+  render::PinholeCamera camera(renderScene.camera(), viewRenderSettings(state));
   auto hit = renderScene.closestHit(camera.rayThrough(x, y), render::RaySource{});
   if (!hit) return {};
   std::size_t objects = state.scene.objects.size();
@@ -530,23 +520,23 @@ render::RenderSettings viewRenderSettings(const BuilderState& state) {
 }
 
 glm::dmat4 viewMatrix(const BuilderState& state) {
-  Frame f = cameraFrame(state.scene.camera);
+  render::PinholeCamera camera = viewCamera(state);
   glm::dmat4 view(1.0);
   for (int c = 0; c < 3; ++c) {
-    view[c][0] = f.right[c];
-    view[c][1] = f.up[c];
-    view[c][2] = -f.forward[c];
+    view[c][0] = camera.right()[c];
+    view[c][1] = camera.up()[c];
+    view[c][2] = -camera.forward()[c];
   }
-  view[3][0] = -glm::dot(f.right, f.eye);
-  view[3][1] = -glm::dot(f.up, f.eye);
-  view[3][2] = glm::dot(f.forward, f.eye);
+  view[3][0] = -glm::dot(camera.right(), camera.eye());
+  view[3][1] = -glm::dot(camera.up(), camera.eye());
+  view[3][2] = glm::dot(camera.forward(), camera.eye());
   return view;
 }
 
 glm::dmat4 projectionMatrix(const BuilderState& state, double near, double far) {
   // x_ndc = (r.d / f.d) / tanHalfWidth: the pinhole of render::PinholeCamera,
   // whose pixel (i, j) centre is OpenGL's fragment centre too.
-  double tanHalfHeight = std::tan(verticalFovDegrees(state) * std::numbers::pi / 360.0);
+  double tanHalfHeight = viewCamera(state).tanHalfHeight();
   double aspect = static_cast<double>(state.width) / state.height;
   glm::dmat4 p(0.0);
   p[0][0] = 1.0 / (tanHalfHeight * aspect);

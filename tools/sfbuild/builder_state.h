@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/render.h"
+#include "renderer/render_settings.h"
 #include "scenefile/scene.h"
 #include "tools/sfbuild/scene_history.h"
 
