@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <iterator>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -141,7 +142,7 @@ class RandomSceneGenerator {
  public:
   Object object() {
     Object o;
-    o.kind = static_cast<ObjectKind>(pick(4));
+    o.kind = kObjectKinds[pick(std::size(kObjectKinds))];
     Material& m = o.material;
     m.colour = {unit() * 1.2, unit(), pick(8) ? unit() : 0.0};
     if (pick(2)) {
