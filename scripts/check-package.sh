@@ -59,7 +59,8 @@ cmake --install "$build" --prefix "$prefix" >"$work/install.log" ||
   { cat "$work/install.log" >&2; exit 1; }
 soname_file=$prefix/$libdir/libscenefile.so.0
 for file in include/scenefile/read.h include/scenefile/formats.def \
-            include/scenefile/options/gltf.h "$libdir"/libscenefile.a "$libdir"/libscenefile.so \
+            include/scenefile/object_kinds.def include/scenefile/options/gltf.h \
+            "$libdir"/libscenefile.a "$libdir"/libscenefile.so \
             "$libdir"/libscenefile.so.0 "$libdir"/libscenefile.so.0.1.0 \
             "$libdir"/cmake/scenefile/scenefileConfig.cmake \
             "$libdir"/cmake/scenefile/scenefileConfigVersion.cmake \
