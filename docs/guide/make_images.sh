@@ -82,21 +82,25 @@ without_metadata() { # PNG
   oiiotool "$1" --nosoftwareattrib --eraseattrib ".*" -o "$1.tmp.png"
   mv "$1.tmp.png" "$1"
 }
-"$bin/sfconvert" "$guide/first-scene.txt" "$out/first-scene.pov" "${size[@]}" --quiet
-"$bin/sfconvert" "$guide/first-scene.txt" "$out/first-scene.gltf" "${size[@]}" --quiet
+# The converted files in a folder of their own, which POV-Ray, writing only
+# into its working folder, renders in.
+converted=$(mktemp -d "${TMPDIR:-/tmp}/scenefile-guide.XXXXXX")
+trap 'rm -rf "$converted"' EXIT
+"$bin/sfconvert" "$guide/first-scene.txt" "$converted/first-scene.pov" "${size[@]}" --quiet
+"$bin/sfconvert" "$guide/first-scene.txt" "$converted/first-scene.gltf" "${size[@]}" --quiet
 if command -v povray >/dev/null; then
-  # POV-Ray writes only into its working folder.
-  (cd "$out" && povray +Ifirst-scene.pov +Ofirst-scene-povray.png "+W$width" "+H$height" \
+  (cd "$converted" && povray +Ifirst-scene.pov +Opovray.png "+W$width" "+H$height" \
      +A -D -V File_Gamma=1.0 >/dev/null 2>&1)
-  without_metadata "$out/first-scene-povray.png"
+  without_metadata "$converted/povray.png"
+  mv "$converted/povray.png" "$out/first-scene-povray.png"
 else
   echo "make_images.sh: povray is not installed; first-scene-povray.png left as it is" >&2
 fi
 if command -v blender >/dev/null; then
   blender -b --factory-startup --python-exit-code 1 --python "$guide/blender_render.py" \
-    -- "$out/first-scene.gltf" "$out/first-scene-blender.png" "$width" "$height" >/dev/null 2>&1
-  without_metadata "$out/first-scene-blender.png"
+    -- "$converted/first-scene.gltf" "$converted/blender.png" "$width" "$height" >/dev/null 2>&1
+  without_metadata "$converted/blender.png"
+  mv "$converted/blender.png" "$out/first-scene-blender.png"
 else
   echo "make_images.sh: blender is not installed; first-scene-blender.png left as it is" >&2
 fi
-rm -f "$out/first-scene.pov" "$out/first-scene.gltf"
