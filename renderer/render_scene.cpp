@@ -341,7 +341,7 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
       if (best == RaySource::kNone) {
         out[k].reset();
       } else {
-        finishHit(best, ray, bestCandidate, out[k].emplace());
+        hitOn(best, ray, bestCandidate, out[k].emplace());
       }
     }
     if (leftCount == 0) continue;
@@ -405,8 +405,7 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
   }
 }
 
-void RenderScene::finishHit(std::uint32_t index, const Ray& ray, const Candidate& c,
-                            Hit& hit) const {
+void RenderScene::hitOn(std::uint32_t index, const Ray& ray, const Candidate& c, Hit& hit) const {
   const RenderObject& object = objects_[index];
   glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
@@ -461,7 +460,7 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
     return bestCandidate.t;
   });
   if (best == RaySource::kNone) return std::nullopt;
-  return finishedHit(best, ray, bestCandidate);
+  return hitOn(best, ray, bestCandidate);
 }
 
 void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int count,
@@ -497,7 +496,7 @@ void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int cou
       if (best[lane] == RaySource::kNone) {
         out[first + lane].reset();
       } else {
-        finishHit(best[lane], ray[lane], bestCandidate[lane], out[first + lane].emplace());
+        hitOn(best[lane], ray[lane], bestCandidate[lane], out[first + lane].emplace());
       }
     }
   }
@@ -514,7 +513,7 @@ std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySo
     }
   }
   if (best == RaySource::kNone) return std::nullopt;
-  return finishedHit(best, ray, bestCandidate);
+  return hitOn(best, ray, bestCandidate);
 }
 
 bool RenderScene::blockedByPlane(const Ray& ray, const RaySource& source, double tMax,

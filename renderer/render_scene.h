@@ -61,10 +61,10 @@ struct RenderLight {
 struct Hit {
   double t = 0.0;
   std::uint32_t object = RaySource::kNone;  // as RenderScene numbers it (objects())
-  glm::dvec3 point{0.0};       // world space, on the surface
-  glm::dvec3 pointError{0.0};  // bound on the error of `point`
-  glm::dvec3 normal{0.0};      // unit, outward (for a plane: its +y side)
-  bool fromInside = false;     // the ray was inside the solid
+  glm::dvec3 point{0.0};                    // world space, on the surface
+  glm::dvec3 pointError{0.0};               // bound on the error of `point`
+  glm::dvec3 normal{0.0};                   // unit, outward (for a plane: its +y side)
+  bool fromInside = false;                  // the ray was inside the solid
 };
 
 // The bounded objects binned by their direction from a camera's eye
@@ -243,13 +243,12 @@ class RenderScene {
                       Candidate& bestCandidate) const;
   // The hit on object `index` that `candidate` found along `ray`, written
   // into `hit` in place: returned by value, it was copied into an optional
-  // with wide loads that waited on finishHit's narrow stores.
-  void finishHit(std::uint32_t index, const Ray& ray, const Candidate& candidate, Hit& hit) const;
-  // finishHit into a new optional.
-  std::optional<Hit> finishedHit(std::uint32_t index, const Ray& ray,
-                                 const Candidate& candidate) const {
+  // with wide loads that waited on the narrow stores that made it.
+  void hitOn(std::uint32_t index, const Ray& ray, const Candidate& candidate, Hit& hit) const;
+  // The same hit in a new optional.
+  std::optional<Hit> hitOn(std::uint32_t index, const Ray& ray, const Candidate& candidate) const {
     std::optional<Hit> hit;
-    finishHit(index, ray, candidate, hit.emplace());
+    hitOn(index, ray, candidate, hit.emplace());
     return hit;
   }
   // The constructor's steps after the BVH: the records (objects_,
@@ -276,7 +275,7 @@ class RenderScene {
   std::vector<std::uint32_t> bounded_;       // BVH item -> object
   std::vector<std::uint32_t> planes_;        // unbounded objects, tested for every ray
   // Per plane (as planes_: objects 0 to its size less 1), its world normal:
-  // the same at every point, so made once, by the expression finishHit uses
+  // the same at every point, so made once, by the expression hitOn uses
   // for other objects.
   std::vector<glm::dvec3> planeNormals_;
   std::vector<RenderLight> lights_;

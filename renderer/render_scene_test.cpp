@@ -421,7 +421,7 @@ TEST(PlaneHits, TheSearchesMeetPlanesAsBruteForceDoes) {
   EXPECT_GT(met, scene::testing::randomCases(200000) / 10);
 }
 
-// A plane's normal is made once, per plane (RenderScene::finishHit): with
+// A plane's normal is made once, per plane (RenderScene::hitOn): with
 // several planes between other objects, each hit carries the normal of the
 // plane it met, the inverse transpose's image of +y.
 TEST(PlaneHits, EachCarriesTheNormalOfItsOwnPlane) {

@@ -365,7 +365,7 @@ bool intersectObject(uint index, dvec3 origin, dvec3 direction, uint source, boo
   return false;
 }
 
-Hit finishHit(uint index, dvec3 origin, dvec3 direction, Candidate c) {
+Hit hitOn(uint index, dvec3 origin, dvec3 direction, Candidate c) {
   int kind = objectKind(index);
   dvec3 o = toLocalPoint(index, origin);
   dvec3 d = toLocalVector(index, direction);
@@ -518,7 +518,7 @@ bool closestHit(dvec3 origin, dvec3 direction, uint source, bool inward, out Hit
   Candidate c;
   hit.object = kNone;
   if (!searchScene(origin, direction, source, inward, infinity(), false, best, c)) return false;
-  hit = finishHit(best, origin, direction, c);
+  hit = hitOn(best, origin, direction, c);
   return true;
 }
 
