@@ -9,8 +9,8 @@
 #include <set>
 #include <utility>
 
-#include "libscene/formats/gltf/gltf_import_context.h"
 #include "libscene/formats/gltf/gltf_json_scan.h"
+#include "libscene/formats/gltf/gltf_labels.h"
 #include "libscene/formats/gltf/gltf_mapping.h"
 #include "libscene/text/number.h"
 #include "libscene/text/text_lines.h"

@@ -1,8 +1,7 @@
 // What the parts of the glTF import share once tinygltf has read the model
 // (the node walk, cameras and lights, materials, meshes): the model and our
 // own extras, the scene they fill, where diagnostics go and what a loss is;
-// and the labels by which a message names the file's nodes and meshes,
-// since glTF has no lines to point at.
+// and the labels of the file's nodes and meshes (gltf_labels.h).
 #pragma once
 
 #include <tiny_gltf.h>
@@ -11,6 +10,7 @@
 #include <string>
 
 #include "libscene/formats/gltf/gltf_document.h"
+#include "libscene/formats/gltf/gltf_labels.h"
 #include "scenefile/diagnostic.h"
 #include "scenefile/scene.h"
 
@@ -24,11 +24,6 @@ struct ImportContext {
   // What the scene cannot carry over: a warning, or an error under noLoss.
   Severity loss;
 };
-
-// " 'name'" for a message, cut to one line's worth; "" for no name.
-std::string quoted(const std::string& name);
-std::string nodeLabel(const tinygltf::Model& model, int node);
-std::string meshLabel(const tinygltf::Model& model, int mesh);
 
 // The light that a node's KHR_lights_punctual points at: -1 when it has
 // none, -2 when its index is not one.
