@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "libscene/formats/pov/pov_keywords.h"
+#include "libscene/formats/pov/pov_limits.h"
 #include "libscene/formats/pov/pov_names.h"
-#include "libscene/formats/pov/pov_reader.h"
 #include "libscene/text/number.h"
 #include "libscene/text/reader_support.h"
 
@@ -47,12 +47,12 @@ void PovEvaluator::directive() {
   if (name == "default") return defaultsBlock();
   if (name == "fopen" || name == "read" || name == "write" || name == "fclose") {
     refuse(d.span, "'#" + std::string(name) + "' reads or writes files: refused",
-           "sfconvert reads no file but the scene itself");
+           "this reader reads no file but the scene itself");
   }
   if (name == "if" || name == "ifdef" || name == "ifndef" || name == "switch" || name == "while" ||
       name == "for" || name == "macro") {
     unsupported(d.span, "'#" + std::string(name) + "'",
-                "sfconvert runs no loop, macro or condition; {0} skips it to its #end");
+                "this reader runs no loop, macro or condition; {0} skips it to its #end");
     skipDirectiveBlock();
     return;
   }
@@ -79,7 +79,7 @@ void PovEvaluator::include() {
            "'#include \"" + std::string(name.text.substr(0, 60)) +
                "\"' would read another file: refused",
            "only POV-Ray's standard include files (colors.inc, textures.inc, ...) may be "
-           "included; sfconvert knows colors.inc's colours without reading it");
+           "included; this reader knows colors.inc's colours without reading it");
   }
   if (povIncludeDeclaresColours(name.text)) coloursIncluded_ = true;
   if (name.text != "colors.inc") otherIncludes_.push_back(std::string(name.text));
@@ -328,9 +328,9 @@ void PovEvaluator::unknownIdentifier(const PovToken& word) {
     throw PovParseError{};
   }
   if (fromOtherInclude(w)) {
-    unsupported(word.span, "'" + std::string(w) + "' (declared in no file sfconvert reads)",
+    unsupported(word.span, "'" + std::string(w) + "' (declared in no file this reader reads)",
                 "it may come from " + otherIncludes_.front() +
-                    ", whose declarations sfconvert does not read");
+                    ", whose declarations this reader does not read");
     throw PovParseError{};
   }
   Diagnostic& d = out_.error(DiagnosticCode::PovUnknownIdentifier, word.span,

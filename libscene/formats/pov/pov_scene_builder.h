@@ -1,15 +1,15 @@
 // The scene built from what a POV-Ray file's statements gathered: a
-// left-handed world mirrored into sfrender's right-handed one, the camera
+// left-handed world mirrored into the renderer's right-handed one, the camera
 // matrix and view from POV-Ray's camera vectors, each object's material
 // from its texture over #default, and the exact values of the
-// `// sfconvert:` comments wherever they still describe the statement
+// exact-value comments wherever they still describe the statement
 // they stand before. Every value the model cannot hold is reported.
 #pragma once
 
 #include <vector>
 
+#include "libscene/formats/pov/pov_import.h"
 #include "libscene/formats/pov/pov_lexer.h"
-#include "libscene/formats/pov/pov_reader.h"
 #include "libscene/formats/pov/pov_scene_parts.h"
 
 namespace scene {

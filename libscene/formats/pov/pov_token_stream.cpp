@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "libscene/formats/pov/pov_keywords.h"
+#include "libscene/formats/pov/pov_limits.h"
 #include "libscene/formats/pov/pov_names.h"
-#include "libscene/formats/pov/pov_reader.h"
 
 namespace scene {
 
@@ -63,11 +63,11 @@ void PovTokenStream::checkFileReading(const PovToken& t) {
     out_.error(DiagnosticCode::PovRefused, t.span,
                "'" + std::string(t.text) + " \"" + std::string(peek().text.substr(0, 60)) +
                    "\"' would read another file: refused")
-        .hint = "sfconvert reads no file but the scene itself";
+        .hint = "this reader reads no file but the scene itself";
   }
 }
 
-// A file is refused for what it would read even where sfconvert skips.
+// A file is refused for what it would read even where this reader skips.
 void PovTokenStream::checkDirectiveWhileSkipping(const PovToken& t) {
   if (t.text == "include" && peek().kind == PovTokenKind::String &&
       !isPovStandardInclude(peek().text)) {
