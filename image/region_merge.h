@@ -33,8 +33,11 @@ float displayFromLinear(float linear);
 // window, hold 32-bit floating-point RGB (the values exactly as rendered),
 // and together they must cover the display window; where two overlap (a file
 // named twice too), they must agree. Nothing, with why in `error`, when they
-// do not.
-std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
-                                               std::int64_t maxPixels, std::string& error);
+// do not; `*unreadable`, where given, tells a file that could not be read
+// (an I/O error) from files that do not make one image.
+std::optional<render::Image>
+mergeImageRegions(const std::vector<std::filesystem::path> &files,
+                  std::int64_t maxPixels, std::string &error,
+                  bool *unreadable = nullptr);
 
-}  // namespace tools
+} // namespace tools

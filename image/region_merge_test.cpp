@@ -271,6 +271,23 @@ TEST_F(MergeRegions, ReadsRegularFilesOnly) {
   EXPECT_EQ(error, "cannot read '" + folder_.string() + "': it is a directory");
 }
 
+// A file that cannot be read is told apart from files that do not make one
+// image: sfrender ends the one with an I/O error, the other as invalid input.
+TEST_F(MergeRegions, TellsAnUnreadableFileFromOneThatDoesNotFit) {
+  std::string error;
+  bool unreadable = false;
+  EXPECT_FALSE(mergeImageRegions({folder_ / "missing.exr"}, kLimit, error, &unreadable));
+  EXPECT_TRUE(unreadable) << error;
+  EXPECT_FALSE(mergeImageRegions({"/dev/zero"}, kLimit, error, &unreadable));
+  EXPECT_TRUE(unreadable) << error;
+  render::Image whole = gradient(7, 5);
+  EXPECT_FALSE(
+      mergeImageRegions({write(rows(whole, 0, 2), "top.exr")}, kLimit, error, &unreadable));
+  EXPECT_FALSE(unreadable) << error;
+  EXPECT_FALSE(mergeImageRegions({write(rows(whole, 0, 5), "big.exr")}, 34, error, &unreadable));
+  EXPECT_FALSE(unreadable) << error;
+}
+
 // Tiles are OpenEXR, and only OpenEXR's reader sees a tile's bytes:
 // another format, even holding floats, is refused by its content.
 TEST_F(MergeRegions, ReadsOpenExrOnly) {

@@ -31,6 +31,15 @@ void ToolOutput::fileError(std::string_view file, std::string_view message) cons
                << ' ' << message << '\n';
 }
 
+int ToolOutput::report(const ToolFailure& failure) const {
+  if (!failure.file.empty()) {
+    fileError(failure.file, failure.message);
+  } else if (!failure.message.empty()) {
+    error(failure.message, failure.hint);
+  }
+  return toInt(failure.code);
+}
+
 void ToolOutput::warning(std::string_view message) const {
   if (flags_.quiet) return;
   streams_.err << tool_ << ": " << style_.severity(scene::Severity::Warning, "warning:") << ' '

@@ -16,6 +16,7 @@
 #include "scenefile/scene.h"
 #include "tools/common/command_line.h"
 #include "tools/common/diagnostic_printer.h"
+#include "tools/common/tool_failure.h"
 #include "tools/common/tool_streams.h"
 
 namespace tools {
@@ -41,6 +42,9 @@ class ToolOutput {
   // "FILE: error: MESSAGE", for a file that cannot be read or written; FILE
   // as it is safe to show (printableText).
   void fileError(std::string_view file, std::string_view message) const;
+  // The failure as error() or fileError() prints it (nothing more when it
+  // was told already), and its exit status: where a tool's failures end.
+  int report(const ToolFailure& failure) const;
   // "TOOL: warning: MESSAGE", unless quiet.
   void warning(std::string_view message) const;
   // "TOOL: MESSAGE", unless quiet: what the tool did ("wrote out.png").

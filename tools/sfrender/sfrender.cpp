@@ -153,9 +153,9 @@ struct SceneAndTarget {
 // the destructors nor the system's reclaiming of the pages at exit keep
 // the process waiting; joined when it goes. Without a thread it frees them
 // there and then.
-class FreedAside {
+class ReleasedScene {
  public:
-  FreedAside(scene::Scene scene, render::RenderScene compiled) {
+  ReleasedScene(scene::Scene scene, render::RenderScene compiled) {
     auto held = std::make_unique<Held>(Held{std::move(scene), std::move(compiled)});
     try {
       thread_ = std::thread([held = std::move(held)]() mutable {
@@ -166,11 +166,11 @@ class FreedAside {
       // No thread: what it held is freed here, on the way out.
     }
   }
-  ~FreedAside() {
+  ~ReleasedScene() {
     if (thread_.joinable()) thread_.join();
   }
-  FreedAside(const FreedAside&) = delete;
-  FreedAside& operator=(const FreedAside&) = delete;
+  ReleasedScene(const ReleasedScene&) = delete;
+  ReleasedScene& operator=(const ReleasedScene&) = delete;
 
  private:
   struct Held {
@@ -180,16 +180,16 @@ class FreedAside {
   std::thread thread_;
 };
 
-class Renderer {
+class RenderJob {
  public:
   // `sharedGpu`, where given, is the batch's GPU device: opened by the first
   // scene that renders on the GPU and used by the rest, so that a batch
   // starts the device once and loads the driver once (render::GpuDevice).
   // `planned`, where given, is the image a batch without -o read ahead for
   // this scene (image_target.h), which its outputs were checked by.
-  Renderer(SfrenderOptions& o, ToolOutput& output, const AvailableMemoryProbe& memory, Stage& stage,
-           std::unique_ptr<render::GpuDevice>* sharedGpu = nullptr,
-           const std::optional<fs::path>* planned = nullptr)
+  RenderJob(SfrenderOptions& o, ToolOutput& output, const AvailableMemoryProbe& memory,
+            Stage& stage, std::unique_ptr<render::GpuDevice>* sharedGpu = nullptr,
+            const std::optional<fs::path>* planned = nullptr)
       : o_(o),
         output_(output),
         memory_(memory),
@@ -197,15 +197,17 @@ class Renderer {
         sharedGpu_(sharedGpu),
         planned_(planned) {}
 
-  int run();
+  // Reads, renders and writes the scene: nothing when its image is
+  // written, else why not.
+  MaybeFailure run();
 
  private:
-  std::optional<int> readScene();
+  MaybeFailure readScene();
   void chooseTarget();
-  std::optional<int> targetRefusal();
-  std::optional<int> resourceRefusal();
-  std::optional<int> chooseRegion();
-  int writeImage(const render::Image& image, const render::RenderStatistics& statistics);
+  MaybeFailure targetRefusal();
+  MaybeFailure resourceRefusal();
+  MaybeFailure chooseRegion();
+  MaybeFailure writeImage(const render::Image& image, const render::RenderStatistics& statistics);
 
   SfrenderOptions& o_;
   ToolOutput& output_;
@@ -218,7 +220,7 @@ class Renderer {
 };
 
 // Step 1: the scene, from the file, standard input or the built-in one.
-std::optional<int> Renderer::readScene() {
+MaybeFailure RenderJob::readScene() {
   if (o_.input.empty()) {
     job_.scene = render::defaultScene();
     return std::nullopt;
@@ -229,11 +231,11 @@ std::optional<int> Renderer::readScene() {
   DiagnosticFormat format = DiagnosticFormat::Text;
   if (text.tooLarge()) {
     DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format)).print(text.refused);
-    return toInt(ExitCode::InvalidInput);
+    return toldFailure(ExitCode::InvalidInput);
   }
   if (!text.text) {
-    output_.fileError(shown, "cannot read the file: " + printableText(text.readError));
-    return toInt(ExitCode::IoError);
+    return fileFailure(ExitCode::IoError, shown,
+                       "cannot read the file: " + printableText(text.readError));
   }
   // A big scene file is read on the render's threads too.
   scene::ReadOptions read = o_.read;
@@ -249,13 +251,13 @@ std::optional<int> Renderer::readScene() {
   sources.capture(shown, *text.text, result.diagnostics);
   DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format), &sources)
       .print(result.diagnostics);
-  if (!result.ok()) return toInt(ExitCode::InvalidInput);
+  if (!result.ok()) return toldFailure(ExitCode::InvalidInput);
   output_.detail("read " + printableText(shown) + " (" + sceneContents(result.scene) + ")");
   job_.scene = std::move(result.scene);
   return std::nullopt;
 }
 
-void Renderer::chooseTarget() {
+void RenderJob::chooseTarget() {
   if (isStandardStream(o_.output)) {
     job_.toStdout = true;
   } else if (!o_.output.empty()) {
@@ -270,26 +272,24 @@ void Renderer::chooseTarget() {
 // Whether the image can go where it is to go, found out before the first
 // ray: the name (not the input, an image format) and the place (the folder
 // there and writable, the target no folder or device, room for a PPM).
-std::optional<int> Renderer::targetRefusal() {
+MaybeFailure RenderJob::targetRefusal() {
   if (job_.toStdout) {
     // A PPM: what --bits and --alpha ask of it holds as for a file.
     if (std::optional<std::string> refusal =
             imageOptionsRefusal({ppmFormat()}, ppmFormat(), o_.image)) {
-      output_.error("cannot write standard output as asked: " + *refusal);
-      return toInt(ExitCode::Usage);
+      return toolFailure(ExitCode::Usage, "cannot write standard output as asked: " + *refusal);
     }
     if (!output_.streams().outIsTerminal) return std::nullopt;
-    output_.error("standard output is a terminal, and the image is binary",
-                  "redirect it to a file or a pipe (-o - > image.ppm), or name the image");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, "standard output is a terminal, and the image is binary",
+                       "redirect it to a file or a pipe (-o - > image.ppm), or name the image");
   }
   const fs::path& target = job_.target;
   // Before the extension's check, so that an OUTPUT_FILE naming its own
   // instruction file is told so, not that .txt is no image format.
   if (writesOverInput(o_.input, target.string())) {
-    output_.error("the output '" + printableText(target.string()) +
-                  "' is the input file; sfrender never writes over its input");
-    return toInt(ExitCode::InvalidInput);
+    return toolFailure(ExitCode::InvalidInput,
+                       "the output '" + printableText(target.string()) +
+                           "' is the input file; sfrender never writes over its input");
   }
   if (job_.fromOutputFile && !hasImageExtension(target)) {
     // The file's mistake, at its line and column, like any other.
@@ -297,36 +297,33 @@ std::optional<int> Renderer::targetRefusal() {
     checkOutputFileFormat(job_.scene, scene::Severity::Error, diagnostics);
     DiagnosticPrinter(output_.err(), output_.diagnosticStyle(DiagnosticFormat::Short))
         .print(diagnostics);
-    return toInt(ExitCode::InvalidInput);
+    return toldFailure(ExitCode::InvalidInput);
   }
   if (planned_ && *planned_ != target) {
     // The file changed between the batch's look ahead and its render.
-    output_.error("'" + printableText(o_.input) + "' changed since the batch began: its image " +
-                      "would now go to '" + printableText(target.string()) + "'",
-                  "run the batch again");
-    return toInt(ExitCode::InvalidInput);
+    return toolFailure(ExitCode::InvalidInput,
+                       "'" + printableText(o_.input) + "' changed since the batch began: its " +
+                           "image would now go to '" + printableText(target.string()) + "'",
+                       "run the batch again");
   }
   if (std::optional<std::string> refusal = imageRefusal(target, o_.image)) {
-    output_.error(printableText(*refusal));
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, printableText(*refusal));
   }
   if (o_.noClobber && pathExists(target)) {
-    output_.fileError(target.string(), kNoClobberMessage);
-    return toInt(ExitCode::IoError);
+    return fileFailure(ExitCode::IoError, target.string(), kNoClobberMessage);
   }
   std::string error;
   if (!checkCanWrite(target, false,
                      ppmFileSize(imageWidth(settings_), imageHeight(settings_), target, o_.image),
                      error)) {
-    output_.fileError(target.string(), "cannot write the image: " + error);
-    return toInt(ExitCode::IoError);
+    return fileFailure(ExitCode::IoError, target.string(), "cannot write the image: " + error);
   }
   return std::nullopt;
 }
 
 // Whether the render fits in memory and its threads start: refused before
 // it starts rather than killed, or aborted, half-way.
-std::optional<int> Renderer::resourceRefusal() {
+MaybeFailure RenderJob::resourceRefusal() {
   render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
       job_.scene.objects.size(), job_.scene.lights.size(), imageWidth(settings_),
       imageHeight(settings_), settings_.coverage);
@@ -338,15 +335,14 @@ std::optional<int> Renderer::resourceRefusal() {
   }
   if (std::optional<std::string> refusal =
           render::renderMemoryRefusal(estimate, memory_ ? memory_() : std::nullopt)) {
-    output_.error(*refusal);
-    return toInt(ExitCode::OutOfResources);
+    return toolFailure(ExitCode::OutOfResources, *refusal);
   }
   int threads = renderThreadCount(settings_.threads);
   stage_.set("starting " + std::to_string(threads) + " threads");
   if (std::optional<std::string> failure = threadStartFailure(threads)) {
-    output_.error("cannot start " + std::to_string(threads) + " threads: " + *failure +
-                  "; ask for fewer with --threads");
-    return toInt(ExitCode::OutOfResources);
+    return toolFailure(ExitCode::OutOfResources, "cannot start " + std::to_string(threads) +
+                                                     " threads: " + *failure +
+                                                     "; ask for fewer with --threads");
   }
   output_.detail(
       "rendering " + std::to_string(settings_.width) + "x" + std::to_string(settings_.height) +
@@ -358,19 +354,17 @@ std::optional<int> Renderer::resourceRefusal() {
 
 // --region or --tile, against the image's size once it is known (the
 // scene's aspect ratio may set it).
-std::optional<int> Renderer::chooseRegion() {
+MaybeFailure RenderJob::chooseRegion() {
   if (!o_.region.empty()) {
     settings_.region = parseRegion(o_.region).value_or(render::PixelRegion{});
     if (std::optional<std::string> refusal =
             regionRefusal(settings_.region, settings_.width, settings_.height)) {
-      output_.error("--region: " + *refusal);
-      return toInt(ExitCode::Usage);
+      return toolFailure(ExitCode::Usage, "--region: " + *refusal);
     }
   } else if (!o_.tile.empty()) {
     TileChoice tile = parseTile(o_.tile).value_or(TileChoice{});
     if (std::optional<std::string> refusal = tileRefusal(tile, settings_.height)) {
-      output_.error("--tile: " + *refusal);
-      return toInt(ExitCode::Usage);
+      return toolFailure(ExitCode::Usage, "--tile: " + *refusal);
     }
     settings_.region = render::imageTile(settings_.width, settings_.height, tile.index, tile.count);
   }
@@ -378,21 +372,22 @@ std::optional<int> Renderer::chooseRegion() {
 }
 
 // Step 3: the file, whole or not at all, or standard output.
-int Renderer::writeImage(const render::Image& image, const render::RenderStatistics& statistics) {
+MaybeFailure RenderJob::writeImage(const render::Image& image,
+                                   const render::RenderStatistics& statistics) {
   std::string written;
   if (job_.toStdout) {
     stage_.set("writing to standard output");
     output_.streams().out << ppmImageBytes(image, o_.image);
     if (!flushStandardOutput("sfrender", output_.streams().out, output_.err())) {
-      return toInt(ExitCode::IoError);
+      return toldFailure(ExitCode::IoError);
     }
     written = "standard output";
   } else {
     stage_.set("writing " + printableText(job_.target.string()));
     std::string writeError;
     if (!writeImageFile(image, job_.target, writeError, o_.image, !o_.noClobber)) {
-      output_.fileError(job_.target.string(), "cannot write the image: " + writeError);
-      return toInt(ExitCode::IoError);
+      return fileFailure(ExitCode::IoError, job_.target.string(),
+                         "cannot write the image: " + writeError);
     }
     written = printableText(job_.target.string());
   }
@@ -415,43 +410,41 @@ int Renderer::writeImage(const render::Image& image, const render::RenderStatist
   }
   output_.info("wrote " + written + " (" + size + (o_.input.empty() ? ", the default scene" : "") +
                ")");
-  return toInt(ExitCode::Success);
+  return std::nullopt;
 }
 
-int Renderer::run() {
+MaybeFailure RenderJob::run() {
   settings_ = o_.settings;
   settings_.width = o_.width.value_or(settings_.width);
   settings_.height = o_.height.value_or(settings_.height);
   settings_.verticalFovDegrees = o_.fov.value_or(settings_.verticalFovDegrees);
   if (std::optional<std::string> overLimit = settingOverLimit(settings_, o_.limits)) {
-    output_.error(*overLimit);
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, *overLimit);
   }
   // A usage error, told before the scene is read and compiled.
   if (settings_.device == render::RenderDevice::Gpu && render::samplesAdaptively(settings_)) {
-    output_.error("--adaptive is not done on the gpu; leave it out or use --device cpu");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage,
+                       "--adaptive is not done on the gpu; leave it out or use --device cpu");
   }
   if (isStandardStream(o_.input) && o_.output.empty()) {
-    output_.error("the scene comes from standard input, so the image needs a name",
-                  "name it with -o FILE, or -o - for a PPM on standard output");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage,
+                       "the scene comes from standard input, so the image needs a name",
+                       "name it with -o FILE, or -o - for a PPM on standard output");
   }
-  if (std::optional<int> status = readScene()) return *status;
+  if (MaybeFailure failure = readScene()) return failure;
   output_.step("reading");
   applySceneView(job_.scene, o_, settings_);
   if (std::optional<std::string> overLimit = settingOverLimit(settings_, o_.limits)) {
-    output_.error(*overLimit + " (at the scene's aspect ratio)");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, *overLimit + " (at the scene's aspect ratio)");
   }
-  if (std::optional<int> refused = chooseRegion()) return *refused;
+  if (MaybeFailure failure = chooseRegion()) return failure;
   chooseTarget();
-  if (std::optional<int> refused = targetRefusal()) return *refused;
+  if (MaybeFailure failure = targetRefusal()) return failure;
   fitRenderToImage(job_.toStdout ? fs::path("standard output.ppm") : job_.target, o_.image,
                    settings_);
   // Step 2: render, with a progress bar on a terminal, if it fits in memory
   // and its threads start.
-  if (std::optional<int> refused = resourceRefusal()) return *refused;
+  if (MaybeFailure failure = resourceRefusal()) return failure;
   stage_.set("preparing the scene");
   // The lights' direction grids serve the CPU path only.
   render::RenderScene compiled(job_.scene, renderThreadCount(settings_.threads),
@@ -480,87 +473,79 @@ int Renderer::run() {
     }
     image = render::renderImage(compiled, settings_, &statistics, progress);
   } catch (const render::DeviceUnavailable& e) {
-    output_.error(std::string("cannot render on the gpu: ") + e.what() +
-                  "; install a Vulkan driver with shaderFloat64 (mesa-vulkan-drivers gives "
-                  "lavapipe) or use --device cpu");
-    return toInt(ExitCode::OutOfResources);
+    return toolFailure(ExitCode::OutOfResources,
+                       std::string("cannot render on the gpu: ") + e.what() +
+                           "; install a Vulkan driver with shaderFloat64 (mesa-vulkan-drivers "
+                           "gives lavapipe) or use --device cpu");
   }
   output_.step("rendering");
   // The scene and its compiled form are freed while the image is written:
   // at 1,000,000 objects their destructors took 8 ms, and the heap they
   // leave, handed back to the system, 25 ms more at the process's exit.
-  FreedAside aside(std::move(job_.scene), std::move(compiled));
+  ReleasedScene aside(std::move(job_.scene), std::move(compiled));
   return writeImage(image, statistics);
 }
 
 // --merge: the regions in o.inputs, one image in o.output (region_merge.h).
-int mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& stage) {
+MaybeFailure mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& stage) {
   if (o.inputs.empty()) {
-    output.error("--merge needs the regions to merge", "sfrender --merge tile-*.exr -o image.png");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, "--merge needs the regions to merge",
+                       "sfrender --merge tile-*.exr -o image.png");
   }
   if (o.output.empty() || isStandardStream(o.output)) {
-    output.error("--merge needs -o FILE, the image to write");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, "--merge needs -o FILE, the image to write");
   }
   if (o.image.alpha) {
-    output.error("--merge puts RGB regions together; --alpha is for a render");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage,
+                       "--merge puts RGB regions together; --alpha is for a render");
   }
   if (std::optional<std::string> refusal = imageRefusal(o.output, o.image)) {
-    output.error(printableText(*refusal));
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, printableText(*refusal));
   }
   OutputPlan plan;
   for (const std::string& input : o.inputs) plan.addInput(input);
   plan.addOutput(o.output, {});
   if (std::optional<OutputClash> clash = plan.firstClash()) {
-    output.error("the output '" + printableText(o.output) + "' is the input file '" +
-                 printableText(plan.input(clash->other)) +
-                 "'; sfrender never writes over its input");
-    return toInt(ExitCode::InvalidInput);
+    return toolFailure(ExitCode::InvalidInput, "the output '" + printableText(o.output) +
+                                                   "' is the input file '" +
+                                                   printableText(plan.input(clash->other)) +
+                                                   "'; sfrender never writes over its input");
   }
   if (o.noClobber && pathExists(o.output)) {
-    output.fileError(o.output, kNoClobberMessage);
-    return toInt(ExitCode::IoError);
+    return fileFailure(ExitCode::IoError, o.output, kNoClobberMessage);
   }
   stage.set("merging " + std::to_string(o.inputs.size()) + " regions");
   std::vector<fs::path> files(o.inputs.begin(), o.inputs.end());
   std::string error;
-  std::optional<render::Image> image = mergeImageRegions(files, o.limits.maxPixels, error);
+  bool unreadable = false;
+  std::optional<render::Image> image =
+      mergeImageRegions(files, o.limits.maxPixels, error, &unreadable);
   if (!image) {
-    output.error(printableText(error));
-    return toInt(error.rfind("cannot read", 0) == 0 ? ExitCode::IoError : ExitCode::InvalidInput);
+    return toolFailure(unreadable ? ExitCode::IoError : ExitCode::InvalidInput,
+                       printableText(error));
   }
   output.step("merging");
   if (!writeImageFile(*image, o.output, error, o.image, !o.noClobber)) {
-    output.fileError(o.output, "cannot write the image: " + error);
-    return toInt(ExitCode::IoError);
+    return fileFailure(ExitCode::IoError, o.output, "cannot write the image: " + error);
   }
   output.info("wrote " + printableText(o.output) + " (" + std::to_string(image->width) + "x" +
               std::to_string(image->height) + ", from " + std::to_string(o.inputs.size()) +
               " regions)");
-  return toInt(ExitCode::Success);
+  return std::nullopt;
 }
 
 // The image of each scene of a batch: -o's pattern expanded, or without
 // -o each scene's own (read ahead), checked together before the first
-// render (output_plan.h). Nothing, with the error told, when the batch
-// cannot go ahead: a usage error.
-std::optional<std::vector<std::optional<fs::path>>> batchTargets(const SfrenderOptions& o,
-                                                                 ToolOutput& output) {
+// render (output_plan.h), into `targets`; a usage error when the batch
+// cannot go ahead.
+MaybeFailure batchTargets(const SfrenderOptions& o, std::vector<std::optional<fs::path>>& targets) {
   std::string error;
-  std::vector<std::optional<fs::path>> targets;
   if (!o.output.empty()) {
     std::optional<std::vector<std::string>> expanded = batchOutputs(o.output, o.inputs, error);
-    if (!expanded) {
-      output.error(error);
-      return std::nullopt;
-    }
+    if (!expanded) return toolFailure(ExitCode::Usage, error);
     targets.assign(expanded->begin(), expanded->end());
   } else if (std::optional<std::string> refusal = batchInputsRefusal(o.inputs)) {
-    output.error(*refusal);
-    return std::nullopt;
+    return toolFailure(ExitCode::Usage, *refusal);
   } else {
     scene::ReadOptions read = o.read;
     read.threads = static_cast<unsigned>(renderThreadCount(o.settings.threads));
@@ -572,37 +557,40 @@ std::optional<std::vector<std::optional<fs::path>>> batchTargets(const SfrenderO
     if (targets[i]) plan.addOutput(targets[i]->string(), o.inputs[i]);
   }
   if (std::optional<OutputClash> clash = plan.firstClash()) {
-    output.error(
+    return toolFailure(
+        ExitCode::Usage,
         plan.describe(*clash) + "; a batch writes each image once, and never over an input",
         clash->overInput   ? "write the images to a folder of their own, such as -o "
                              "'out/{stem}.png'"
         : o.output.empty() ? "name the images with -o, such as -o '{dir}/{stem}.png'"
                            : "use {dir} or {name} in -o");
-    return std::nullopt;
   }
-  return targets;
+  return std::nullopt;
 }
 
 // Several scenes: each rendered as if alone, the batch going on past one
-// that fails, then the summary; the status is the first failure's.
-int renderBatch(const SfrenderOptions& o, ToolOutput& output,
-                const AvailableMemoryProbe& availableMemory, Stage& stage) {
-  std::optional<std::vector<std::optional<fs::path>>> targets = batchTargets(o, output);
-  if (!targets) return toInt(ExitCode::Usage);
-  int rendered = 0, status = toInt(ExitCode::Success);
+// that fails (its failure reported where it ends), then the summary; the
+// batch ends with the first failure's status.
+MaybeFailure renderBatch(const SfrenderOptions& o, ToolOutput& output,
+                         const AvailableMemoryProbe& availableMemory, Stage& stage) {
+  std::vector<std::optional<fs::path>> targets;
+  if (MaybeFailure failure = batchTargets(o, targets)) return failure;
+  int rendered = 0;
+  MaybeFailure first;
   std::unique_ptr<render::GpuDevice> gpu;
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
     SfrenderOptions one = o;
     one.input = o.inputs[i];
     // With -o each image is named; without, each scene's own is checked
     // against what was read ahead.
-    if (!o.output.empty()) one.output = (*targets)[i]->string();
-    const std::optional<fs::path>* planned = o.output.empty() ? &(*targets)[i] : nullptr;
-    int result = Renderer(one, output, availableMemory, stage, &gpu, planned).run();
-    if (result == toInt(ExitCode::Success)) {
+    if (!o.output.empty()) one.output = targets[i]->string();
+    const std::optional<fs::path>* planned = o.output.empty() ? &targets[i] : nullptr;
+    if (MaybeFailure failure =
+            RenderJob(one, output, availableMemory, stage, &gpu, planned).run()) {
+      output.report(*failure);
+      if (!first) first = toldFailure(failure->code);
+    } else {
       ++rendered;
-    } else if (status == toInt(ExitCode::Success)) {
-      status = result;
     }
   }
   if (!o.common.quiet || rendered < static_cast<int>(o.inputs.size())) {
@@ -610,7 +598,24 @@ int renderBatch(const SfrenderOptions& o, ToolOutput& output,
                                  "scenes rendered")
                  << "\n";
   }
-  return status;
+  return first;
+}
+
+// What the command line asks: a merge, a batch or one scene.
+MaybeFailure runCommand(SfrenderOptions& options, ToolOutput& output,
+                        const AvailableMemoryProbe& availableMemory, Stage& stage) {
+  if (options.merge) return mergeRegions(options, output, stage);
+  if (options.inputs.size() > 1) return renderBatch(options, output, availableMemory, stage);
+  if (!options.inputs.empty()) options.input = options.inputs.front();
+  if (!options.input.empty() && hasPlaceholder(options.output)) {
+    // One scene of a batch (a Slurm task's slice may hold one): the pattern
+    // names its image, and no summary follows.
+    std::string error;
+    std::optional<std::string> named = expandOutputPattern(options.output, options.input, error);
+    if (!named) return toolFailure(ExitCode::Usage, error);
+    options.output = *named;
+  }
+  return RenderJob(options, output, availableMemory, stage).run();
 }
 
 int renderToFile(int argc, const char* const* argv, const ToolStreams& streams,
@@ -621,21 +626,8 @@ int renderToFile(int argc, const char* const* argv, const ToolStreams& streams,
     return toInt(*stop);
   }
   ToolOutput output("sfrender", streams, options.common);
-  if (options.merge) return mergeRegions(options, output, stage);
-  if (options.inputs.size() > 1) return renderBatch(options, output, availableMemory, stage);
-  if (!options.inputs.empty()) options.input = options.inputs.front();
-  if (!options.input.empty() && hasPlaceholder(options.output)) {
-    // One scene of a batch (a Slurm task's slice may hold one): the pattern
-    // names its image, and no summary follows.
-    std::string error;
-    std::optional<std::string> named = expandOutputPattern(options.output, options.input, error);
-    if (!named) {
-      output.error(error);
-      return toInt(ExitCode::Usage);
-    }
-    options.output = *named;
-  }
-  return Renderer(options, output, availableMemory, stage).run();
+  MaybeFailure failure = runCommand(options, output, availableMemory, stage);
+  return failure ? output.report(*failure) : toInt(ExitCode::Success);
 }
 
 }  // namespace

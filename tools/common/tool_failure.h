@@ -1,0 +1,42 @@
+// A failure on the tools' side as a value: the exit status it ends the run
+// with and what the tool says of it. Each step that can fail returns one
+// (nothing when it went ahead), and one place per tool prints it and turns
+// it into the exit status (ToolOutput::report), as CLI11's errors carry
+// theirs; no status is read back from a message's words.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "tools/common/exit_code.h"
+
+namespace tools {
+
+struct ToolFailure {
+  ExitCode code = ExitCode::InvalidInput;
+  // "TOOL: error: MESSAGE", or "FILE: error: MESSAGE" when `file` is set.
+  // Empty when what went wrong is printed already: the input's diagnostics.
+  std::string message;
+  // "  hint: HINT" under "TOOL: error: MESSAGE", when not empty.
+  std::string hint;
+  // The file the message is about, named where the tool would be.
+  std::string file;
+};
+
+// What a step that can fail returns: nothing when it went ahead.
+using MaybeFailure = std::optional<ToolFailure>;
+
+inline ToolFailure toolFailure(ExitCode code, std::string message, std::string hint = {}) {
+  return ToolFailure{code, std::move(message), std::move(hint), {}};
+}
+
+inline ToolFailure fileFailure(ExitCode code, std::string file, std::string message) {
+  return ToolFailure{code, std::move(message), {}, std::move(file)};
+}
+
+// A failure whose diagnostics are printed already: its exit status alone.
+inline ToolFailure toldFailure(ExitCode code) {
+  return ToolFailure{code, {}, {}, {}};
+}
+
+}  // namespace tools
