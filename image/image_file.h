@@ -22,23 +22,22 @@ std::vector<ImageFormat> writableImageFormats();
 
 // Whether files with this name's extension can be written: ".ppm" here and
 // every other through OpenImageIO (whose module must load and take it).
-bool canWriteImage(const std::filesystem::path &path);
+bool canWriteImage(const std::filesystem::path& path);
 
 // Why an image cannot be written to `path` as `options` ask, as a sentence
 // for "sfrender: error: ": an extension no writer takes (with the list of
 // those that do), OpenImageIO's module that could not be loaded (from where
 // and why; .ppm needs none), or a --bits or --alpha the format cannot hold;
 // nothing when it can.
-std::optional<std::string> imageRefusal(const std::filesystem::path &path,
-                                        const ImageOptions &options = {});
+std::optional<std::string> imageRefusal(const std::filesystem::path& path,
+                                        const ImageOptions& options = {});
 
 // The render that the image at `path` needs: the coverage for --alpha, and
 // for a 16-bit integer image, retracing to its levels (and a tolerance of
 // half of one), so that each level is what full tracing gives, as for 8
 // bits (docs/RENDERING.md, "Cost").
-void fitRenderToImage(const std::filesystem::path &path,
-                      const ImageOptions &options,
-                      render::RenderSettings &settings);
+void fitRenderToImage(const std::filesystem::path& path, const ImageOptions& options,
+                      render::RenderSettings& settings);
 
 // The formats sfrender writes, for --help: from OpenImageIO's module, or
 // .ppm alone with why the module could not be loaded.
@@ -47,9 +46,8 @@ std::string imageFormatHelp();
 // The bytes of a width x height image written to `path` when it is a ".ppm"
 // (the header and three channels a pixel, one or two bytes each); 0 for
 // another format, whose size is known only once written.
-std::uint64_t ppmFileSize(int width, int height,
-                          const std::filesystem::path &path,
-                          const ImageOptions &options = {});
+std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& path,
+                          const ImageOptions& options = {});
 
 // Writes the image: integer formats get the display values (clamped to
 // [0, 1], rounded to the nearest level, no gamma) tagged sRGB; EXR and HDR
@@ -62,15 +60,13 @@ std::uint64_t ppmFileSize(int width, int height,
 // disk the old file stays as it was.
 // With `replace` false (--no-clobber), an existing file is kept and the
 // write fails.
-bool writeImageFile(const render::Image &image,
-                    const std::filesystem::path &path, std::string &error,
-                    const ImageOptions &options = {}, bool replace = true);
+bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
+                    std::string& error, const ImageOptions& options = {}, bool replace = true);
 
 // The bytes of the image as binary PPM (P6, 8 or 16 bits as options.bits
 // says): what a ".ppm" file holds, and what `sfrender -o -` writes to
 // standard output.
-std::string ppmImageBytes(const render::Image &image,
-                          const ImageOptions &options = {});
+std::string ppmImageBytes(const render::Image& image, const ImageOptions& options = {});
 
 // A region of an image read back from a file (sfrender --merge): its data
 // and display windows, and its first three channels as floats, row by row.
@@ -80,9 +76,8 @@ struct ImageRegionFile {
 };
 
 // What a region to merge must be, for the messages that refuse one.
-inline constexpr const char *kRegionsAreFloatExr =
-    "regions to merge are 32-bit float EXR, which hold the render exactly "
-    "(render them with -o "
+inline constexpr const char* kRegionsAreFloatExr =
+    "regions to merge are 32-bit float EXR, which hold the render exactly (render them with -o "
     "NAME.exr and no --bits)";
 
 // Reads the OpenEXR file at `path` through OpenImageIO's module as a region to
@@ -94,16 +89,14 @@ inline constexpr const char *kRegionsAreFloatExr =
 // `error`: "cannot read 'PATH': ..." when the file could not be read (and
 // `*unreadable`, where given, set), "'PATH' ..." when it holds what cannot
 // be merged.
-bool readImageRegion(const std::filesystem::path &path, ImageRegionFile &file,
-                     std::int64_t maxPixels, std::string &error,
-                     bool *unreadable = nullptr);
+bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file,
+                     std::int64_t maxPixels, std::string& error, bool* unreadable = nullptr);
 
 // The same through `read`, the module's reader (oiio_module.h), for a
 // program that links the module's code in (the fuzz target).
-bool readImageRegionWith(SfrenderOiioRead read,
-                         const std::filesystem::path &path,
-                         ImageRegionFile &file, std::int64_t maxPixels,
-                         std::string &error, bool *unreadable = nullptr);
+bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& path,
+                         ImageRegionFile& file, std::int64_t maxPixels, std::string& error,
+                         bool* unreadable = nullptr);
 
 // The linear value of a display value: the sRGB decoding (IEC 61966-2-1),
 // extended past [0, 1] as in scRGB (IEC 61966-2-2) and extended sRGB: the
@@ -112,4 +105,4 @@ bool readImageRegionWith(SfrenderOiioRead read,
 // stands for anything larger.
 float srgbToLinear(float value);
 
-} // namespace tools
+}  // namespace tools

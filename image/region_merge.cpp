@@ -40,28 +40,24 @@ float bisectDisplay(float linear) {
 }
 
 std::string windowText(int x, int y, int width, int height) {
-  return std::to_string(width) + "x" + std::to_string(height) + " at " +
-         std::to_string(x) + "," + std::to_string(y);
+  return std::to_string(width) + "x" + std::to_string(height) + " at " + std::to_string(x) + "," +
+         std::to_string(y);
 }
 
 // Copies one file's pixels into `whole`, counting what each pixel got in
 // `filled`; false with `error` when a pixel it overlaps disagrees.
-bool placeRegion(const ImageRegionFile &file, const std::string &name,
-                 render::Image &whole, std::vector<float> &linear,
-                 std::vector<unsigned char> &filled, std::string &error) {
-  const SfrenderImageRegion &r = file.region;
+bool placeRegion(const ImageRegionFile& file, const std::string& name, render::Image& whole,
+                 std::vector<float>& linear, std::vector<unsigned char>& filled,
+                 std::string& error) {
+  const SfrenderImageRegion& r = file.region;
   for (int row = 0; row < r.height; ++row) {
     for (int column = 0; column < r.width; ++column) {
-      std::size_t to =
-          static_cast<std::size_t>(r.y - r.fullY + row) * whole.width +
-          static_cast<std::size_t>(r.x - r.fullX + column);
-      const float *from =
-          &file.rgb[3 * (static_cast<std::size_t>(row) * r.width + column)];
-      if (filled[to] &&
-          std::memcmp(&linear[3 * to], from, 3 * sizeof(float)) != 0) {
+      std::size_t to = static_cast<std::size_t>(r.y - r.fullY + row) * whole.width +
+                       static_cast<std::size_t>(r.x - r.fullX + column);
+      const float* from = &file.rgb[3 * (static_cast<std::size_t>(row) * r.width + column)];
+      if (filled[to] && std::memcmp(&linear[3 * to], from, 3 * sizeof(float)) != 0) {
         error = name + " and an earlier region differ at pixel " +
-                std::to_string(r.x - r.fullX + column) + "," +
-                std::to_string(r.y - r.fullY + row);
+                std::to_string(r.x - r.fullX + column) + "," + std::to_string(r.y - r.fullY + row);
         return false;
       }
       std::memcpy(&linear[3 * to], from, 3 * sizeof(float));
@@ -71,39 +67,31 @@ bool placeRegion(const ImageRegionFile &file, const std::string &name,
   return true;
 }
 
-} // namespace
+}  // namespace
 
 float displayFromLinear(float linear) {
-  if (std::isnan(linear))
-    return 0.0f;
-  if (linear < 0.0f)
-    return -displayFromLinear(-linear);
-  if (linear == 0.0f)
-    return 0.0f;
+  if (std::isnan(linear)) return 0.0f;
+  if (linear < 0.0f) return -displayFromLinear(-linear);
+  if (linear == 0.0f) return 0.0f;
   // The inverse of the decoding in double, then to the exact float by a few
   // steps: the first float whose decoding reaches `linear`.
   double l = std::min(static_cast<double>(linear), 1e30);
-  float d = static_cast<float>(
-      l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055);
+  float d = static_cast<float>(l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055);
   constexpr float kLargest = std::numeric_limits<float>::max();
-  for (int step = 0; step < 16 && srgbToLinear(d) < linear; ++step)
-    d = std::nextafter(d, kLargest);
-  for (int step = 0;
-       step < 16 && d > 0.0f && srgbToLinear(std::nextafter(d, 0.0f)) >= linear;
+  for (int step = 0; step < 16 && srgbToLinear(d) < linear; ++step) d = std::nextafter(d, kLargest);
+  for (int step = 0; step < 16 && d > 0.0f && srgbToLinear(std::nextafter(d, 0.0f)) >= linear;
        ++step) {
     d = std::nextafter(d, 0.0f);
   }
-  bool first = srgbToLinear(d) >= linear &&
-               (d == 0.0f || srgbToLinear(std::nextafter(d, 0.0f)) < linear);
+  bool first =
+      srgbToLinear(d) >= linear && (d == 0.0f || srgbToLinear(std::nextafter(d, 0.0f)) < linear);
   return first ? d : bisectDisplay(linear);
 }
 
-std::optional<render::Image>
-mergeImageRegions(const std::vector<std::filesystem::path> &files,
-                  std::int64_t maxPixels, std::string &error,
-                  bool *unreadable) {
-  if (unreadable)
-    *unreadable = false;
+std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
+                                               std::int64_t maxPixels, std::string& error,
+                                               bool* unreadable) {
+  if (unreadable) *unreadable = false;
   if (files.empty()) {
     error = "no regions to merge";
     return std::nullopt;
@@ -113,16 +101,14 @@ mergeImageRegions(const std::vector<std::filesystem::path> &files,
   std::vector<unsigned char> filled;
   SfrenderImageRegion display{};
   for (std::size_t i = 0; i < files.size(); ++i) {
-    const std::filesystem::path &path = files[i];
+    const std::filesystem::path& path = files[i];
     std::string name = "'" + path.string() + "'";
     ImageRegionFile file;
-    if (!readImageRegion(path, file, maxPixels, error, unreadable))
-      return std::nullopt;
-    const SfrenderImageRegion &r = file.region;
+    if (!readImageRegion(path, file, maxPixels, error, unreadable)) return std::nullopt;
+    const SfrenderImageRegion& r = file.region;
     if (!r.floating || r.bits != 32) {
       error = name + " holds " + std::to_string(r.bits) + "-bit " +
-              (r.floating ? "floating-point" : "integer") + " values; " +
-              kRegionsAreFloatExr;
+              (r.floating ? "floating-point" : "integer") + " values; " + kRegionsAreFloatExr;
       return std::nullopt;
     }
     // By place, not by name: a file named twice is two regions, which
@@ -135,34 +121,27 @@ mergeImageRegions(const std::vector<std::filesystem::path> &files,
       linear.assign(3 * pixels, 0.0f);
       filled.assign(pixels, 0);
     } else if (r.fullX != display.fullX || r.fullY != display.fullY ||
-               r.fullWidth != display.fullWidth ||
-               r.fullHeight != display.fullHeight) {
-      error = name + " is a region of a " +
-              windowText(r.fullX, r.fullY, r.fullWidth, r.fullHeight) +
-              " image, '" + files.front().string() + "' of a " +
-              windowText(display.fullX, display.fullY, display.fullWidth,
-                         display.fullHeight) +
-              " one";
+               r.fullWidth != display.fullWidth || r.fullHeight != display.fullHeight) {
+      error =
+          name + " is a region of a " + windowText(r.fullX, r.fullY, r.fullWidth, r.fullHeight) +
+          " image, '" + files.front().string() + "' of a " +
+          windowText(display.fullX, display.fullY, display.fullWidth, display.fullHeight) + " one";
       return std::nullopt;
     }
-    if (!placeRegion(file, name, whole, linear, filled, error))
-      return std::nullopt;
+    if (!placeRegion(file, name, whole, linear, filled, error)) return std::nullopt;
   }
   for (std::size_t p = 0; p < filled.size(); ++p) {
-    if (filled[p])
-      continue;
+    if (filled[p]) continue;
     error = "no region holds pixel " + std::to_string(p % whole.width) + "," +
-            std::to_string(p / whole.width) + " of the " +
-            std::to_string(whole.width) + "x" + std::to_string(whole.height) +
-            " image";
+            std::to_string(p / whole.width) + " of the " + std::to_string(whole.width) + "x" +
+            std::to_string(whole.height) + " image";
     return std::nullopt;
   }
   whole.fullWidth = whole.width;
   whole.fullHeight = whole.height;
   whole.rgb.resize(linear.size());
-  for (std::size_t i = 0; i < linear.size(); ++i)
-    whole.rgb[i] = displayFromLinear(linear[i]);
+  for (std::size_t i = 0; i < linear.size(); ++i) whole.rgb[i] = displayFromLinear(linear[i]);
   return whole;
 }
 
-} // namespace tools
+}  // namespace tools

@@ -35,9 +35,8 @@ float displayFromLinear(float linear);
 // named twice too), they must agree. Nothing, with why in `error`, when they
 // do not; `*unreadable`, where given, tells a file that could not be read
 // (an I/O error) from files that do not make one image.
-std::optional<render::Image>
-mergeImageRegions(const std::vector<std::filesystem::path> &files,
-                  std::int64_t maxPixels, std::string &error,
-                  bool *unreadable = nullptr);
+std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
+                                               std::int64_t maxPixels, std::string& error,
+                                               bool* unreadable = nullptr);
 
-} // namespace tools
+}  // namespace tools
