@@ -193,6 +193,61 @@ int bandRows(int height) {
   return std::max(rows, static_cast<int>(kGroupSize));
 }
 
+// Draws one band of rows (p.rowBase on, `bandHeight` rows of `width`) and
+// waits for it; gives the kernel's time, by the timestamp `queries` where
+// the device has them (not null), else by the clock.
+double dispatchBand(const VulkanContext& context, const Pipeline& pipeline, const Buffer& params,
+                    const GpuParams& p, int width, int bandHeight, VkQueryPool queries) {
+  const bool timed = queries != VK_NULL_HANDLE;
+  VkCommandBuffer commands = context.beginCommands();
+  vkCmdUpdateBuffer(commands, params.buffer, 0, sizeof p, &p);
+  barrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+  if (timed) {
+    vkCmdResetQueryPool(commands, queries, 0, 2);
+    vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
+  }
+  pipeline.record(commands);
+  vkCmdDispatch(commands, (static_cast<std::uint32_t>(width) + kGroupSize - 1) / kGroupSize,
+                (static_cast<std::uint32_t>(bandHeight) + kGroupSize - 1) / kGroupSize, 1);
+  if (timed) vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
+  auto bandStart = std::chrono::steady_clock::now();
+  context.submitAndWait(commands);
+  if (!timed) return secondsSince(bandStart);
+  std::uint64_t ticks[2] = {0, 0};
+  check(vkGetQueryPoolResults(context.device(), queries, 0, 2, sizeof ticks, ticks,
+                              sizeof(std::uint64_t),
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "reading the timestamps");
+  return static_cast<double>(ticks[1] - ticks[0]) * context.timestampPeriod() * 1e-9;
+}
+
+// The kernel's colours and counts of `pixels` pixels (`outputBytes` each),
+// copied through the host-visible `readback`, one after the other, into
+// `out`.
+void readBack(const VulkanContext& context, const Buffer& colours, const Buffer& counts,
+              const Buffer& readback, VkDeviceSize outputBytes, std::size_t pixels,
+              KernelOutput& out) {
+  VkCommandBuffer commands = context.beginCommands();
+  barrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  VkBufferCopy first{0, 0, outputBytes};
+  VkBufferCopy second{0, outputBytes, outputBytes};
+  vkCmdCopyBuffer(commands, colours.buffer, readback.buffer, 1, &first);
+  vkCmdCopyBuffer(commands, counts.buffer, readback.buffer, 1, &second);
+  barrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  context.submitAndWait(commands);
+  void* mapped = nullptr;
+  check(vkMapMemory(context.device(), readback.memory, 0, readback.size, 0, &mapped),
+        "mapping the readback buffer");
+  out.colours.resize(pixels * 4);
+  out.counts.resize(pixels * 4);
+  std::memcpy(out.colours.data(), mapped, pixels * 16);
+  std::memcpy(out.counts.data(), static_cast<char*>(mapped) + outputBytes, pixels * 16);
+  vkUnmapMemory(context.device(), readback.memory);
+}
+
 // Runs render.comp over `region` of the image in bands; the device's
 // resources are freed on every path out.
 KernelOutput runKernel(const RenderScene& scene, const RenderSettings& settings,
@@ -251,54 +306,13 @@ KernelOutput runKernel(const RenderScene& scene, const RenderSettings& settings,
       if (cancel && cancel->requested()) throw RenderCancelled();
       p.rowBase = band * rows;
       int bandHeight = std::min(rows, region.height() - p.rowBase);
-      VkCommandBuffer commands = context.beginCommands();
-      vkCmdUpdateBuffer(commands, params.buffer, 0, sizeof p, &p);
-      barrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-      if (timed) {
-        vkCmdResetQueryPool(commands, queries, 0, 2);
-        vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, 0);
-      }
-      pipeline.record(commands);
-      vkCmdDispatch(commands,
-                    (static_cast<std::uint32_t>(region.width()) + kGroupSize - 1) / kGroupSize,
-                    (static_cast<std::uint32_t>(bandHeight) + kGroupSize - 1) / kGroupSize, 1);
-      if (timed) vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 1);
-      auto bandStart = std::chrono::steady_clock::now();
-      context.submitAndWait(commands);
-      if (timed) {
-        std::uint64_t ticks[2] = {0, 0};
-        check(vkGetQueryPoolResults(context.device(), queries, 0, 2, sizeof ticks, ticks,
-                                    sizeof(std::uint64_t),
-                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-              "reading the timestamps");
-        out.kernelSeconds +=
-            static_cast<double>(ticks[1] - ticks[0]) * context.timestampPeriod() * 1e-9;
-      } else {
-        out.kernelSeconds += secondsSince(bandStart);
-      }
+      out.kernelSeconds +=
+          dispatchBand(context, pipeline, params, p, region.width(), bandHeight, queries);
       if (progress) progress(band + 1, bands);
     }
 
     auto readStart = std::chrono::steady_clock::now();
-    VkCommandBuffer commands = context.beginCommands();
-    barrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-    VkBufferCopy first{0, 0, outputBytes};
-    VkBufferCopy second{0, outputBytes, outputBytes};
-    vkCmdCopyBuffer(commands, colours.buffer, readback.buffer, 1, &first);
-    vkCmdCopyBuffer(commands, counts.buffer, readback.buffer, 1, &second);
-    barrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
-    context.submitAndWait(commands);
-    void* mapped = nullptr;
-    check(vkMapMemory(context.device(), readback.memory, 0, readback.size, 0, &mapped),
-          "mapping the readback buffer");
-    out.colours.resize(pixels * 4);
-    out.counts.resize(pixels * 4);
-    std::memcpy(out.colours.data(), mapped, pixels * 16);
-    std::memcpy(out.counts.data(), static_cast<char*>(mapped) + outputBytes, pixels * 16);
-    vkUnmapMemory(context.device(), readback.memory);
+    readBack(context, colours, counts, readback, outputBytes, pixels, out);
     out.readbackSeconds = secondsSince(readStart);
   } catch (...) {
     release();
