@@ -161,6 +161,40 @@ const char* axisName(Axis axis) {
   return "";
 }
 
+// A key during a grab, rotation or scale: the axis, the amount typed, or
+// the operation confirmed or cancelled.
+void handleOperationKey(BuilderState& state, int key) {
+  switch (key) {
+    case kKeyEscape:
+      cancelOperation(state);
+      return;
+    case kKeyEnter:
+      confirmOperation(state);
+      return;
+    case 'X':
+      state.axis = Axis::X;
+      break;
+    case 'Y':
+      state.axis = Axis::Y;
+      break;
+    case 'Z':
+      state.axis = Axis::Z;
+      break;
+    case kKeyBackspace:
+      if (!state.typed.empty()) state.typed.pop_back();
+      break;
+    default:
+      if (state.axis != Axis::None && ((key >= '0' && key <= '9') || key == '.' || key == '-') &&
+          state.typed.size() < 24) {
+        state.typed.push_back(static_cast<char>(key));
+      }
+      break;
+  }
+  // Changing the axis puts the others back as they were.
+  setSelectedMatrix(state, state.original);
+  updatePreview(state);
+}
+
 void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files);
 void handleMouseButtonUnrecorded(BuilderState& state, MouseButton button, bool pressed, double x,
                                  double y);
@@ -290,35 +324,7 @@ void handleKeyUnrecorded(BuilderState& state, int key, const FileSystem& files) 
     return;
   }
   if (state.operation != Operation::None) {
-    switch (key) {
-      case kKeyEscape:
-        cancelOperation(state);
-        return;
-      case kKeyEnter:
-        confirmOperation(state);
-        return;
-      case 'X':
-        state.axis = Axis::X;
-        break;
-      case 'Y':
-        state.axis = Axis::Y;
-        break;
-      case 'Z':
-        state.axis = Axis::Z;
-        break;
-      case kKeyBackspace:
-        if (!state.typed.empty()) state.typed.pop_back();
-        break;
-      default:
-        if (state.axis != Axis::None && ((key >= '0' && key <= '9') || key == '.' || key == '-') &&
-            state.typed.size() < 24) {
-          state.typed.push_back(static_cast<char>(key));
-        }
-        break;
-    }
-    // Changing the axis puts the others back as they were.
-    setSelectedMatrix(state, state.original);
-    updatePreview(state);
+    handleOperationKey(state, key);
     return;
   }
   switch (key) {
