@@ -360,14 +360,6 @@ std::vector<ImageFormat> writableImageFormats() {
   return writableFormats().formats;
 }
 
-float srgbToLinear(float value) {
-  double magnitude = std::abs(static_cast<double>(value));
-  double linear =
-      magnitude <= 0.04045 ? magnitude / 12.92 : std::pow((magnitude + 0.055) / 1.055, 2.4);
-  constexpr double kLargest = std::numeric_limits<float>::max();
-  return static_cast<float>(std::copysign(std::min(linear, kLargest), value));
-}
-
 std::optional<std::string> imageRefusal(const std::filesystem::path& path,
                                         const ImageOptions& options) {
   // .ppm and .png need no module, unless to list the formats that take

@@ -12,7 +12,8 @@
 #include "image/image_formats.h"
 #include "image/oiio_module.h"
 #include "image/quantize.h"
-#include "renderer/render.h"
+#include "renderer/image.h"
+#include "renderer/render_settings.h"
 
 namespace tools {
 
@@ -98,11 +99,7 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
                          ImageRegionFile& file, std::int64_t maxPixels, std::string& error,
                          bool* unreadable = nullptr);
 
-// The linear value of a display value: the sRGB decoding (IEC 61966-2-1),
-// extended past [0, 1] as in scRGB (IEC 61966-2-2) and extended sRGB: the
-// power segment goes on above 1, and a negative value decodes to minus the
-// decoding of its magnitude. Within the float range: the largest float
-// stands for anything larger.
-float srgbToLinear(float value);
+// The linear value of a display value, as float images store it.
+using render::srgbToLinear;
 
 }  // namespace tools

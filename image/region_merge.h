@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/render.h"
+#include "renderer/image.h"
 
 namespace tools {
 
