@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "renderer/render.h"
+#include "renderer/image.h"
 #include "renderer/render_scene.h"
 #include "renderer/saturating.h"
 
