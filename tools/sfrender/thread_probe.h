@@ -1,5 +1,5 @@
 // Whether the threads a render asks for can be started. The renderer starts
-// its own (renderer/render.cpp) and has no way back from one that fails:
+// its own (renderer/cpu_render.cpp) and has no way back from one that fails:
 // std::thread's constructor throws, and the threads already running, still
 // joinable, end the program in std::terminate. sfrender therefore starts
 // the same number first, all alive at once, and ends them before rendering.
