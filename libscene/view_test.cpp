@@ -166,7 +166,7 @@ TEST(View, OneRangeHoldsForTheValidatorAndEveryWriter) {
       EXPECT_NEAR(back.scene.view->verticalFovDegrees, view.verticalFovDegrees, 1e-6);
       ASSERT_TRUE(back.scene.view->aspectRatio);
       // POV-Ray's image is whole pixels, 480 rows at the ratio, as
-      // sfrender's: a ratio beyond 32768:480 is that of the nearest size.
+      // The renderer's: a ratio beyond 32768:480 is that of the nearest size.
       if (row.format == Format::Pov) continue;
       EXPECT_NEAR(*back.scene.view->aspectRatio / *view.aspectRatio, 1.0, 1e-9);
     }

@@ -20,7 +20,7 @@ inline constexpr double kMaxConditionNumber = 1e12;
 /// Relative tolerance under which two camera vectors count as parallel.
 inline constexpr double kParallelTolerance = 1e-9;
 
-/// A View's vertical field of view, in degrees: what sfrender renders, and
+/// A View's vertical field of view, in degrees: what the renderer renders, and
 /// what every format holds and reads back (a POV-Ray camera's vectors or a
 /// glTF yfov in radians stay well within a double's range).
 inline constexpr double kMinFovDegrees = 0.001;

@@ -182,9 +182,9 @@ TEST(DiagnosticCodes, TheDocsCiteOnlyCurrentNames) {
   }
 }
 
-// Every code a file can draw from sfcheck appears in the expected
+// Every code a file can draw from a check appears in the expected
 // diagnostics of the corpus; the conversion codes are pinned by
-// writers_test.cpp and gltf_writer_test.cpp, which sfcheck never reports.
+// writers_test.cpp and gltf_writer_test.cpp, which a check never reports.
 TEST(DiagnosticCodes, EveryCheckCodeIsExercisedByTheCorpus) {
   const std::set<DiagnosticCode> conversionOnly = {
       DiagnosticCode::LossMaterial,           DiagnosticCode::LossCameraRoll,

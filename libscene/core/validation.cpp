@@ -295,7 +295,7 @@ void checkView(const View& view, SourceSpan where, DiagnosticList& out) {
               "the camera's vertical field of view of " + formatNumber(fov) +
                   " degrees is outside " + formatNumber(kMinFovDegrees) + " to " +
                   formatNumber(kMaxFovDegrees))
-        .hint = "sfrender renders no other, and no format holds much narrower or wider views";
+        .hint = "the renderer renders no other, and no format holds much narrower or wider views";
   }
   if (view.aspectRatio &&
       !(*view.aspectRatio >= kMinAspectRatio && *view.aspectRatio <= kMaxAspectRatio)) {

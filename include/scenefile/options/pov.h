@@ -19,7 +19,7 @@ struct PovReadOptions {
   friend bool operator==(const PovReadOptions&, const PovReadOptions&) = default;
 };
 
-/// Options of the POV-Ray writer: the sfrender settings whose picture the
+/// Options of the POV-Ray writer: the render settings whose picture the
 /// file reproduces.
 struct PovWriteOptions {
   /// The vertical field of view in degrees; unset takes the scene's View,

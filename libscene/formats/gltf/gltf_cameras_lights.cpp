@@ -62,7 +62,7 @@ void CamerasAndLights::reportFov(int camera) {
     if (c.perspective.yfov < std::numbers::pi) {
       c_.out.report(c_.loss, DiagnosticCode::GltfIgnored, {},
                     "the camera's vertical field of view of " + formatNumber(c.perspective.yfov) +
-                        " radians is outside what sfrender renders (" +
+                        " radians is outside what the renderer renders (" +
                         formatNumber(kMinFovDegrees) + " to " + formatNumber(kMaxFovDegrees) +
                         " degrees), and is dropped");
     }
@@ -71,7 +71,7 @@ void CamerasAndLights::reportFov(int camera) {
   View& view = c_.scene.view.emplace();
   view.verticalFovDegrees = degrees;
   // The document's check reports every aspect ratio as dropped from a scene
-  // file; one out of a View's range is not kept for sfrender either.
+  // file; one out of a View's range is not kept for the renderer either.
   double aspect = c.perspective.aspectRatio;
   if (aspect >= kMinAspectRatio && aspect <= kMaxAspectRatio) view.aspectRatio = aspect;
   Diagnostic& d = c_.out.note(DiagnosticCode::CameraFov, {},

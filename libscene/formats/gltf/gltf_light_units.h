@@ -20,13 +20,13 @@ inline constexpr double kLuxPerUnit = 683.0 * std::numbers::pi;
 // The surface at which a scene light and its glTF light are matched: a
 // COLOUR (and baseColorFactor) of 0.8, Blender's default base colour and the
 // grey of the examples' floors. Matching for white instead leaves every
-// darker surface brighter in a PBR viewer than in sfrender, which multiplies
+// darker surface brighter in a PBR viewer than in the renderer, which multiplies
 // display values where the viewer multiplies linear ones.
 inline constexpr double kReferenceSurface = 0.8;
 
 // The illuminance (lux, per channel) at which a surface of the reference
 // colour facing the light shows in a PBR viewer the display value that
-// sfrender gives it under a scene light of colour `colour`:
+// the renderer gives it under a scene light of colour `colour`:
 // srgbToLinear(s * c) / s * kLuxPerUnit for each channel c, s the surface.
 glm::dvec3 illuminanceFromColour(const glm::dvec3& colour);
 // The inverse: the scene light colour that gives that illuminance.

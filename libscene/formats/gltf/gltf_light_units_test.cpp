@@ -12,7 +12,7 @@ namespace scene::gltf {
 namespace {
 
 TEST(GltfLightUnits, AReferenceSurfaceShowsTheSameDisplayValueInBothRenderers) {
-  // sfrender shows a surface of COLOUR s facing a LIGHT of colour L (default
+  // The renderer shows a surface of COLOUR s facing a LIGHT of colour L (default
   // AMBIENT + DIFFUSE = 1) at s * L; Blender's Cycles shows linear
   // s * E / kLuxPerUnit, sRGB-encoded.
   for (double l : {0.05, 0.35, 0.8, 1.0, 1.2}) {

@@ -421,7 +421,7 @@ void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize,
       out.report(lossSeverity, DiagnosticCode::PlaneMadeFinite, object.span,
                  label + " is infinite; glTF gets a square of half-size " +
                      formatNumber(planeSize) + " in the plane's own space")
-          .hint = "the kind rides in extras, so sfconvert reads it back as an infinite PLANE";
+          .hint = "the kind rides in extras, so the glTF reader reads it back as an infinite PLANE";
     }
     if (m.colour.x > 1.0 || m.colour.y > 1.0 || m.colour.z > 1.0) {
       out.report(lossSeverity, DiagnosticCode::GltfValueClamped, object.span,

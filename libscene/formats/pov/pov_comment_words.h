@@ -1,4 +1,4 @@
-// The words of an exact `// sfconvert:` comment (pov_writer.h lists its
+// The words of an exact-value comment (pov_writer.h lists its
 // forms), read one by one: a keyword, any word, a number, a vector, a
 // matrix. Each read says whether it matched; a comment that does not match
 // its form is set aside and the statement is read instead.

@@ -38,7 +38,7 @@ FormatInfo povFormat() {
   row.startsWith = "a directive such as #version or a statement such as camera {";
   // The language has no signature: a .pov that says nothing else is one.
   row.readsUnrecognisedByExtension = true;
-  // Materials and the view are written exactly (with `// sfconvert:`
+  // Materials and the view are written exactly (with exact-value
   // comments for what the syntax cannot hold) and read back.
   row.holds = {.materials = true, .transformLists = true, .outputFile = true, .view = true};
   row.recognise = recognisePov;

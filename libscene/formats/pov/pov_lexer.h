@@ -1,7 +1,7 @@
 // The tokens of POV-Ray's scene language, one at a time, with their spans.
 //
 // Comments of both kinds are skipped (block comments nest, as in POV-Ray);
-// the `// sfconvert: ...` comments that carry exact values are kept aside
+// the comments that carry exact values (kPovExactComment) are kept aside
 // and tied to the token that follows them. Tokens are made on demand, so a
 // large file costs no memory for its tokens; a token limit bounds the time.
 #pragma once
@@ -17,7 +17,9 @@
 namespace scene {
 
 // The comment prefix under which the POV-Ray writer carries exact values
-// (pov_writer.h lists the forms).
+// (pov_writer.h lists the forms). These are the file format's words, kept
+// as the files already written carry them: it names the tool that wrote
+// them, and conversions stay byte for byte what they were.
 inline constexpr std::string_view kPovExactComment = "// sfconvert:";
 
 enum class PovTokenKind : std::uint8_t {
@@ -35,7 +37,7 @@ struct PovToken {
   double number = 0.0;
   SourceSpan span;
   std::size_t offset = 0;  // of the token's first byte in the text
-  // The `// sfconvert:` comment right before this token (its text after the
+  // The exact-value comment right before this token (its text after the
   // prefix), or -1: an index into PovLexer::exactComments().
   int exactComment = -1;
 

@@ -156,14 +156,14 @@ void PovModifierReader::materialBlock(const PovToken& keyword, PovMaterialPatch&
       }
       patch.merge(declared->patch);
     } else if (!declared && fromOtherInclude(peek().text)) {
-      // T_Stone1 of stones.inc, Glass of glass.inc: names sfconvert does
+      // T_Stone1 of stones.inc, Glass of glass.inc: names this reader does
       // not know. The object keeps the rest of its texture.
       PovToken name = take();
       unsupported(name.span,
                   "the " + std::string(w) + " '" + std::string(name.text) +
-                      "' (declared in no file sfconvert reads)",
+                      "' (declared in no file this reader reads)",
                   "it may come from " + firstOtherInclude() +
-                      ", whose declarations sfconvert does not read; {0} "
+                      ", whose declarations this reader does not read; {0} "
                       "keeps the object without it");
       skipToBlockEnd();
     }
@@ -205,7 +205,7 @@ void PovModifierReader::pigmentItem(PovMaterialPatch& patch) {
     if (t.isWord("image_map") || t.isWord("bump_map") || t.isWord("material_map")) {
       PovToken word = take();
       refuse(word.span, "'" + std::string(word.text) + "' reads an image file: refused",
-             "sfconvert reads no file but the scene itself");
+             "this reader reads no file but the scene itself");
     }
     if (isPovPattern(t.text)) {
       PovToken word = take();
@@ -228,7 +228,7 @@ void PovModifierReader::finishItem(PovMaterialPatch& patch) {
     PovValue v = colour();
     if (w == "emission") {
       if (v.v[0] != 0.0 || v.v[1] != 0.0 || v.v[2] != 0.0) {
-        loss(t.span, "emission is dropped: sfrender's surfaces do not glow");
+        loss(t.span, "emission is dropped: the renderer's surfaces do not glow");
       }
       return;
     }
@@ -265,7 +265,7 @@ void PovModifierReader::finishItem(PovMaterialPatch& patch) {
   } else if (w == "fresnel") {
     optionalFloat();
     loss(t.span,
-         "fresnel is dropped: sfrender weighs reflection by Fresnel only for "
+         "fresnel is dropped: the renderer weighs reflection by Fresnel only for "
          "transparent objects");
   } else {
     Diagnostic& d = out_.error(DiagnosticCode::PovSyntax, t.span,

@@ -1,4 +1,4 @@
-// What POV-Ray's standard include files give a scene that sfconvert knows
+// What POV-Ray's standard include files give a scene that this reader knows
 // without reading them: the colour names of colors.inc, and the names of
 // the standard include files themselves.
 #pragma once

@@ -325,7 +325,7 @@ TEST(PovReader, NamesFromIncludeFilesItDoesNotReadAreUnsupported) {
   PovImport strict = read(text);
   Diagnostic d = expectOne(strict.read.diagnostics, DiagnosticCode::PovUnsupported, 5, 25);
   EXPECT_EQ(d.message,
-            "the texture 'T_Stone1' (declared in no file sfconvert reads) is not supported "
+            "the texture 'T_Stone1' (declared in no file this reader reads) is not supported "
             "(line 5)");
   ReadOptions skip;
   skip.pov.skipUnsupported = true;

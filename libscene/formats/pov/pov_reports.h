@@ -32,7 +32,7 @@ class PovReports {
   // What the scene model cannot hold [pov-loss]: a warning, or an error
   // under noLoss.
   void loss(SourceSpan span, std::string message, std::string hint = {});
-  // What POV-Ray reads and sfrender has no use for [pov-ignored]: a note.
+  // What POV-Ray reads and the renderer has no use for [pov-ignored]: a note.
   void ignored(SourceSpan span, std::string message, std::string hint = {},
                std::vector<Remedy> remedies = {});
   // What would read or write a file [pov-refused]; the statement is

@@ -131,7 +131,7 @@ void PovSceneBuilder::build() {
         checkOutputFileName(std::string(*name), exact.span, refused);
         if (refused.hasErrors()) {
           ignored(exact.span,
-                  "the sfconvert comment's output_file is no name an instruction file holds, "
+                  "the exact-value comment's output_file is no name an instruction file holds, "
                   "and is ignored");
           continue;
         }
@@ -166,14 +166,14 @@ void PovSceneBuilder::finishCamera(const PovCameraState& c, SourceSpan span) {
   glm::dvec3 up = upPart / upLength;
   glm::dvec3 right = glm::cross(forward, up);
   double rightLength = glm::dot(c.right, right);
-  // sfrender's image plane is square to forward, with right = forward x up.
+  // The renderer's image plane is square to forward, with right = forward x up.
   double skew = glm::length(c.right - rightLength * right) / glm::length(c.right);
   double tilt = std::abs(glm::dot(c.up, forward)) / glm::length(c.up);
   if (skew > 1e-9 || tilt > 1e-9) {
     loss(span,
          "the camera's direction, up and right are not at right angles: the picture "
-         "is sheared in POV-Ray, not in sfrender",
-         "sfrender uses direction, and up made square to it");
+         "is sheared in POV-Ray, not in the renderer",
+         "the renderer uses direction, and up made square to it");
   }
   camera.matrix = glm::dmat4(1.0);
   camera.matrix[0] = glm::dvec4(right, 0.0);
@@ -187,7 +187,7 @@ void PovSceneBuilder::finishCamera(const PovCameraState& c, SourceSpan span) {
   checkCameraMatrix(camera.matrix, span, out_);
 }
 
-// The exact camera of a file sfconvert wrote, when the comment still
+// The exact camera of a file the POV-Ray writer wrote, when the comment still
 // describes the camera that POV-Ray's statement gives.
 void PovSceneBuilder::exactCamera(Camera& camera, const glm::dvec3& forward, const glm::dvec3& up,
                                   int index) {
@@ -216,7 +216,7 @@ void PovSceneBuilder::exactCamera(Camera& camera, const glm::dvec3& forward, con
   }
   if (!ok) {
     ignored(camera.span,
-            "the sfconvert comment before the camera does not describe it: the "
+            "the exact-value comment before the camera does not describe it: the "
             "camera is read from the statement");
     return;
   }
@@ -244,7 +244,7 @@ void PovSceneBuilder::exactLight(Light& light, int index) {
             sameBits(m[3][2], light.matrix[3][2]) && sameBits(m[3][3], 1.0);
   if (!ok) {
     ignored(light.span,
-            "the sfconvert comment before the light does not describe it: the "
+            "the exact-value comment before the light does not describe it: the "
             "light is read from the statement");
     return;
   }
@@ -287,7 +287,7 @@ void PovSceneBuilder::exactObject(Object& object, int index) {
   ok = ok && words.done() && (!hasTransforms || sameBits(composeTransform(ops), matrix));
   if (!ok) {
     ignored(object.span,
-            "the sfconvert comment before the object does not describe it: the "
+            "the exact-value comment before the object does not describe it: the "
             "object is read from the statement");
     return;
   }
@@ -306,7 +306,7 @@ Material PovSceneBuilder::material(const PovPendingObject& pending, const Object
   checkColour(m.colour, RecordRole::Object, spans, out_);
   if (*p.filter > 0.0) {
     loss(object.span, "filter " + formatNumber(*p.filter) +
-                          " becomes plain transparency: sfrender's light through an object "
+                          " becomes plain transparency: the renderer's light through an object "
                           "is not tinted by its colour");
   }
   // +0 + -0 is +0: without a filter, transmit as written keeps a -0.
@@ -354,7 +354,7 @@ Material PovSceneBuilder::material(const PovPendingObject& pending, const Object
 void PovSceneBuilder::reportView(SourceSpan span) {
   const PovCameraView& view = result_.view;
   // A view out of range is dropped, as the glTF reader drops one: the scene
-  // is still good, only sfrender cannot show what POV-Ray would.
+  // is still good, only the renderer cannot show what POV-Ray would.
   View read{view.verticalFovDegrees, view.aspectRatio, span};
   DiagnosticList range;
   checkView(read, span, range);

@@ -71,7 +71,7 @@ struct PovPendingObject {
   PovMaterialPatch patch;
   SourceSpan span;
   std::size_t end = 0;    // the offset of the brace that closes it
-  int exactComment = -1;  // its `// sfconvert:` comment (PovToken::exactComment)
+  int exactComment = -1;  // its exact-value comment (PovToken::exactComment)
 };
 
 struct PovPendingLight {

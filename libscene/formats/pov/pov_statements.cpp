@@ -99,7 +99,7 @@ void PovStatementReader::statement() {
     if (word == "global_settings") {
       PovToken keyword = take();
       ignored(keyword.span, "global_settings is ignored",
-              "sfrender's ambient term is AMBIENT times each light's colour, and "
+              "the renderer's ambient term is AMBIENT times each light's colour, and "
               "{0} sets the bounces",
               {{Setting::Depth, ""}});
       skipBlockAfter();
@@ -225,14 +225,14 @@ void PovStatementReader::cameraItem(const PovToken& word, PovCameraState& c,
              w == "panoramic" || w == "spherical" || w == "cylinder" || w == "mesh_camera" ||
              w == "user_defined") {
     unsupported(word.span, "the " + std::string(w) + " camera",
-                "sfrender's camera is a pinhole; {0} reads it as perspective");
+                "the renderer's camera is a pinhole; {0} reads it as perspective");
     if (w == "cylinder") floatValue("the cylinder camera's type");
     if (w == "mesh_camera" || w == "user_defined") skipBlockAfter();
   } else if (w == "aperture" || w == "blur_samples" || w == "confidence" || w == "variance") {
     expression();
     if (w == "blur_samples" && acceptSymbol(',')) expression();
     loss(word.span,
-         "focal blur (" + std::string(w) + ") is dropped: sfrender's camera is a pinhole");
+         "focal blur (" + std::string(w) + ") is dropped: the renderer's camera is a pinhole");
   } else if (w == "focal_point") {
     vectorValue(w);
   } else if (w == "normal" || w == "bokeh") {
@@ -312,7 +312,7 @@ void PovStatementReader::light() {
                w == "fade_power" || w == "adaptive" || w == "jitter" || w == "area_illumination") {
       std::optional<double> v = w == "jitter" ? optionalFloat() : floatValue(w);
       if ((w == "fade_distance" || w == "fade_power") && v && *v != 0.0) {
-        loss(word.span, std::string(w) + " is dropped: sfrender's lights do not fade");
+        loss(word.span, std::string(w) + " is dropped: the renderer's lights do not fade");
       }
     } else if (w == "area_light") {
       vectorValue("area_light's first axis");
@@ -325,7 +325,7 @@ void PovStatementReader::light() {
       loss(word.span, "an area light becomes a point light");
     } else if (w == "circular" || w == "orient") {
     } else if (w == "shadowless") {
-      loss(word.span, "a shadowless light casts shadows in sfrender");
+      loss(word.span, "a shadowless light casts shadows in the renderer");
     } else if (w == "media_interaction" || w == "media_attenuation") {
       optionalFloat();
     } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
@@ -349,7 +349,7 @@ void PovStatementReader::background() {
   expectSymbol('}', "to close background");
   if (c.v[0] != 0.0 || c.v[1] != 0.0 || c.v[2] != 0.0) {
     loss(keyword.span, "the background colour is dropped: a scene file has none",
-         "sfrender's background is black");
+         "the renderer's background is black");
   }
 }
 
@@ -545,7 +545,7 @@ void PovStatementReader::objectModifiers(PovPendingObject& object, const PovToke
     } else if (w == "no_shadow" || w == "no_image" || w == "no_reflection") {
       loss(word.span, std::string(w) +
                           " is dropped: every object shows, reflects and casts "
-                          "shadows in sfrender");
+                          "shadows in the renderer");
     } else if (w == "photons" || w == "radiosity") {
       ignored(word.span, std::string(w) + " is ignored");
       skipBlockAfter();

@@ -6,6 +6,7 @@
 #include <glm/mat3x3.hpp>
 #include <limits>
 #include <numbers>
+#include <string_view>
 
 #include "libscene/formats/pov/pov_keywords.h"
 #include "libscene/text/number.h"
@@ -15,6 +16,17 @@
 namespace scene {
 
 namespace {
+
+// The words of the header every file starts with: which render the file
+// reproduces and how to run POV-Ray for it. They are the file format's, kept
+// as the files already written carry them, tool names and flags included, so
+// that conversions stay byte for byte what they were.
+constexpr std::string_view kHeaderWrittenBy = "// Written by sfconvert: the picture of sfrender ";
+constexpr std::string_view kHeaderFov = "--fov ";
+constexpr std::string_view kHeaderWidth = " --width ";
+constexpr std::string_view kHeaderHeight = " --height ";
+constexpr std::string_view kHeaderRenderIt =
+    ".\n// Render it with linear output, as sfrender writes:\n//   povray +W";
 
 // The flat colours: object n + 1 (0 is the black of nothing hit) multiplied
 // by an odd constant modulo a power of two, a bijection that scatters
@@ -112,18 +124,18 @@ void reportLosses(const Object& object, std::size_t index, Severity severity, Di
                    " is written as POV-Ray's transmit, which renders differently")
         .hint =
         "POV-Ray dims the surface by the transmitted part and lets light through to "
-        "shadows; sfrender adds the refracted light to the whole surface, and every object "
+        "shadows; the renderer adds the refracted light to the whole surface, and every object "
         "casts a full shadow";
     if (object.kind == ObjectKind::Plane) {
       out.report(severity, DiagnosticCode::LossPov, object.span,
                  "the transparent " + objectName(object, index) +
-                     " is a sheet in sfrender but a solid half-space in POV-Ray")
-          .hint = "POV-Ray refracts into the half-space; sfrender passes light through unbent";
+                     " is a sheet in the renderer but a solid half-space in POV-Ray")
+          .hint = "POV-Ray refracts into the half-space; the renderer passes light through unbent";
     }
     if (m.reflectivity > 0.0) {
       out.report(severity, DiagnosticCode::LossPov, object.span,
                  objectName(object, index) +
-                     " both reflects and refracts: sfrender weighs the two by Schlick's "
+                     " both reflects and refracts: the renderer weighs the two by Schlick's "
                      "Fresnel term, POV-Ray adds them as given");
     }
   }
@@ -133,8 +145,8 @@ bool finite(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// The sfrender settings a file is written for: the options' where they say,
-// else the scene's View, else sfrender's defaults (60 degrees, 640 x 480).
+// The render settings a file is written for: the options' where they say,
+// else the scene's View, else the renderer's defaults (60 degrees, 640 x 480).
 struct PovSettings {
   double verticalFovDegrees = 60.0;
   int width = 640;
@@ -153,7 +165,7 @@ PovSettings povSettings(const Scene& scene, const ConversionOptions& conversion)
     settings.width = options.width;
     settings.height = options.height;
   } else if (scene.view && scene.view->aspectRatio) {
-    // 480 rows, as sfrender's default, at the file's aspect ratio.
+    // 480 rows, as the renderer's default, at the file's aspect ratio.
     double width = std::round(settings.height * *scene.view->aspectRatio);
     settings.width = static_cast<int>(std::clamp(width, 1.0, 32768.0));
   }
@@ -182,12 +194,12 @@ bool appendCamera(std::string& out, const Scene& scene, const PovSettings& optio
   appendNumber(out, options.verticalFovDegrees);
   out += " width " + std::to_string(options.width) + " height " + std::to_string(options.height);
   out += '\n';
-  // sfrender's pinhole (renderer/render.h): forward and up orthonormalised,
+  // The renderer's pinhole camera: forward and up orthonormalised,
   // right = forward x up. POV-Ray's ray through image point (u, v) in
   // [-1/2, 1/2]^2 is direction + u * right + v * up, so right and up are the
   // image plane's width and height at distance 1. Given as vectors without
   // look_at or angle, POV-Ray uses them as they are: no handedness rule
-  // applies, and the picture is sfrender's, not its mirror image.
+  // applies, and the picture is the renderer's, not its mirror image.
   glm::dvec3 eye(camera.matrix[3]);
   // Axes of length 1e-300 or 1e300 are valid: unitDirection scales them.
   glm::dvec3 forward = unitDirection(-glm::dvec3(camera.matrix[2]));
@@ -332,13 +344,16 @@ std::optional<std::string> writePovScene(const Scene& scene, const ConversionOpt
 
   std::string text;
   text.reserve(512 + 256 * (scene.lights.size() + scene.objects.size()));
-  std::string settings = "--fov " + formatNumber(options.verticalFovDegrees) + " --width " +
-                         std::to_string(options.width) + " --height " +
-                         std::to_string(options.height);
-  text += "// Written by sfconvert: the picture of sfrender " + settings;
+  text += kHeaderWrittenBy;
+  text += kHeaderFov;
+  text += formatNumber(options.verticalFovDegrees);
+  text += kHeaderWidth;
+  text += std::to_string(options.width);
+  text += kHeaderHeight;
+  text += std::to_string(options.height);
   if (options.flat) text += ",\n// flat: each object unlit in a colour of its own";
-  text += ".\n// Render it with linear output, as sfrender writes:\n//   povray +W" +
-          std::to_string(options.width) + " +H" + std::to_string(options.height) +
+  text += kHeaderRenderIt;
+  text += std::to_string(options.width) + " +H" + std::to_string(options.height) +
           " -A File_Gamma=1.0 +Iscene.pov\n";
   text += "// The '" + std::string(kPovExactComment) +
           "' comments carry exact values for reading back.\n";
@@ -363,7 +378,7 @@ std::optional<std::string> writePovScene(const Scene& scene, const ConversionOpt
                "the lights' colours sum beyond the largest double: POV-Ray's ambient_light is "
                "clamped to " +
                    formatNumber(kLargest))
-        .hint = "objects with AMBIENT above 0 render darker in POV-Ray than in sfrender";
+        .hint = "objects with AMBIENT above 0 render darker in POV-Ray than in the renderer";
     if (options.noLoss) return std::nullopt;
   }
   text += "global_settings { assumed_gamma 1.0 max_trace_level " +
