@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """The library speaks in its own words: no source of libscene/ or
-include/scenefile/ names a tool's flag (--max-file-size, -o) in a string or
-a comment. A diagnostic that a setting can cure names it as data
-(scene::Remedy), and each front end says it in its own terms
-(docs/DIAGNOSTICS.md, "Remedies").
+include/scenefile/ names a tool (sfcheck, sfconvert, sfrender, sfbuild)
+anywhere, nor a tool's flag (--max-file-size, -o) in a string or a comment.
+A diagnostic that a setting can cure names it as data (scene::Remedy), and
+each front end says it in its own terms (docs/DIAGNOSTICS.md, "Remedies").
+
+Tests (*_test.cpp) are held to the same rule, but may quote the POV-Ray
+format's exact-value marker, which the files they read and write carry.
 
     check_library_words.py SOURCE_DIR
 """
@@ -15,11 +18,25 @@ import sys
 # A flag starts a word: after a space, a quote, a bracket or a backquote.
 FLAG = re.compile(r"(?:^|(?<=[\s\"'(`\[]))(--[a-z][a-z0-9-]*|-o\b)")
 
-# Text a writer puts in its output, which conversions keep byte for byte:
-# the POV-Ray writer's first comment says which render the file reproduces.
-OUTPUT_TEXT = {("libscene/formats/pov/pov_writer.cpp", '"--fov "'),
-               ("libscene/formats/pov/pov_writer.cpp", '" --width "'),
-               ("libscene/formats/pov/pov_writer.cpp", '" --height "')}
+# A tool's name is a word of its own, in code, strings and comments.
+TOOL = re.compile(r"\bsf(?:check|convert|render|build)\b")
+
+# The file format's words, which the files the POV-Ray writer wrote carry and
+# every conversion keeps byte for byte: its header (which render the file
+# reproduces) and the marker of its exact-value comments. Each is one named
+# literal, exempt where it is defined and nowhere else.
+OUTPUT_TEXT = {
+    ("libscene/formats/pov/pov_writer.cpp",
+     r'"// Written by sfconvert: the picture of sfrender "'),
+    ("libscene/formats/pov/pov_writer.cpp", r'"--fov "'),
+    ("libscene/formats/pov/pov_writer.cpp", r'" --width "'),
+    ("libscene/formats/pov/pov_writer.cpp", r'" --height "'),
+    ("libscene/formats/pov/pov_writer.cpp",
+     r'".\n// Render it with linear output, as sfrender writes:\n//   povray +W"'),
+    ("libscene/formats/pov/pov_lexer.h", r'"// sfconvert:"'),
+}
+# What a test may quote: the marker that starts each exact-value comment.
+TEST_TEXT = "// sfconvert:"
 
 
 def words(text):
@@ -66,18 +83,29 @@ def main():
                      if p.suffix in (".h", ".cpp", ".def"))
     for path in sources:
         name = path.relative_to(root).as_posix()
-        for line, piece in words(path.read_text(encoding="utf-8", errors="replace")):
-            if (name, piece) in OUTPUT_TEXT:
-                continue
+        text = path.read_text(encoding="utf-8", errors="replace")
+        # Exempt literals are blanked (newlines kept, so line numbers hold).
+        for exempt_name, literal in OUTPUT_TEXT:
+            if exempt_name == name:
+                text = text.replace(literal, '""')
+        if name.endswith("_test.cpp"):
+            text = text.replace(TEST_TEXT, "")
+        for number, source_line in enumerate(text.splitlines(), 1):
+            for tool in TOOL.findall(source_line):
+                print(f"FAIL: {name}:{number} names the tool {tool}: {source_line.strip()}",
+                      file=sys.stderr)
+                failures += 1
+        for line, piece in words(text):
             for flag in FLAG.findall(piece):
                 print(f"FAIL: {name}:{line} names the flag {flag}: {piece.strip()}",
                       file=sys.stderr)
                 failures += 1
     if failures:
-        print(f"FAIL: {failures} flags named in the library; give a diagnostic a "
-              "scene::Remedy and say it in the front end", file=sys.stderr)
+        print(f"FAIL: {failures} tools or flags named in the library; say it in the "
+              "library's terms, give a diagnostic a scene::Remedy and let the front "
+              "end say the setting", file=sys.stderr)
         return 1
-    print(f"{len(sources)} library sources name no flag")
+    print(f"{len(sources)} library sources name no tool and no flag")
     return 0
 
 
