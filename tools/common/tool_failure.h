@@ -17,7 +17,7 @@ struct ToolFailure {
   // "TOOL: error: MESSAGE", or "FILE: error: MESSAGE" when `file` is set.
   // Empty when what went wrong is printed already: the input's diagnostics.
   std::string message;
-  // "  hint: HINT" under "TOOL: error: MESSAGE", when not empty.
+  // "  hint: HINT" under the message, when not empty.
   std::string hint;
   // The file the message is about, named where the tool would be.
   std::string file;

@@ -34,6 +34,8 @@ void ToolOutput::fileError(std::string_view file, std::string_view message) cons
 int ToolOutput::report(const ToolFailure& failure) const {
   if (!failure.file.empty()) {
     fileError(failure.file, failure.message);
+    // Unstyled, as under a file's error it has always printed.
+    if (!failure.hint.empty()) streams_.err << "  hint: " << failure.hint << '\n';
   } else if (!failure.message.empty()) {
     error(failure.message, failure.hint);
   }

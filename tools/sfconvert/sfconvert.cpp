@@ -81,14 +81,16 @@ class Converter {
         stage_(stage),
         format_(diagnosticFormatFromName(o.format).value_or(DiagnosticFormat::Text)) {}
 
-  int run();
+  // Reads, converts and writes the scene: nothing when it is written, else
+  // why not.
+  MaybeFailure run();
 
  private:
-  std::optional<int> plan();
-  std::optional<int> planBuffer();
-  std::optional<scene::ReadResult> read(int& status);
+  MaybeFailure plan();
+  MaybeFailure planBuffer();
+  MaybeFailure read(std::optional<scene::ReadResult>& parsed);
   scene::ConversionOptions conversionOptions() const;
-  int write(const scene::ConvertedFiles& converted, const scene::Scene& scene);
+  MaybeFailure write(const scene::ConvertedFiles& converted, const scene::Scene& scene);
   void print(const scene::DiagnosticList& list) const;
 
   // Inputs up to this size are kept until the conversion's diagnostics are
@@ -113,34 +115,33 @@ void Converter::print(const scene::DiagnosticList& list) const {
   DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format_), &sources_).print(list);
 }
 
-// The output format and where each file goes, or the exit status of a
-// command line that cannot work.
-std::optional<int> Converter::plan() {
+// The output format and where each file goes, or why the command line
+// cannot work.
+MaybeFailure Converter::plan() {
   plan_.toStdout = isStandardStream(o_.output);
   std::optional<scene::Format> format = outputFormat(o_, o_.output);
   if (!format) {
-    output_.error("cannot tell the output format of '" + printableText(o_.output) + "'",
-                  "use " + extensionList() + ", or --to " + scene::formatNames());
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage,
+                       "cannot tell the output format of '" + printableText(o_.output) + "'",
+                       "use " + extensionList() + ", or --to " + scene::formatNames());
   }
   plan_.format = *format;
   if (plan_.toStdout && scene::formatInfo(*format).binary && output_.streams().outIsTerminal) {
-    output_.error("standard output is a terminal, and " +
-                      std::string(scene::formatInfo(*format).singular) + " is binary",
-                  "redirect it to a file or a pipe (> out.glb), or name the output file");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage,
+                       "standard output is a terminal, and " +
+                           std::string(scene::formatInfo(*format).singular) + " is binary",
+                       "redirect it to a file or a pipe (> out.glb), or name the output file");
   }
   if (!plan_.toStdout && writesOverInput(o_.input, o_.output)) {
-    output_.error("the output '" + printableText(o_.output) +
-                  "' is the input file; sfconvert never writes over its input");
-    return toInt(ExitCode::InvalidInput);
+    return toolFailure(ExitCode::InvalidInput,
+                       "the output '" + printableText(o_.output) +
+                           "' is the input file; sfconvert never writes over its input");
   }
-  if (std::optional<int> refused = planBuffer()) return refused;
+  if (MaybeFailure failure = planBuffer()) return failure;
   if (o_.noClobber && !plan_.toStdout) {
     for (const std::filesystem::path& path : {std::filesystem::path(o_.output), plan_.bufferPath}) {
       if (!path.empty() && pathExists(path)) {
-        output_.fileError(path.string(), kNoClobberMessage);
-        return toInt(ExitCode::IoError);
+        return fileFailure(ExitCode::IoError, path.string(), kNoClobberMessage);
       }
     }
   }
@@ -148,44 +149,41 @@ std::optional<int> Converter::plan() {
 }
 
 // The buffer lies beside the .gltf that names it (bufferPathOf).
-std::optional<int> Converter::planBuffer() {
+MaybeFailure Converter::planBuffer() {
   if (!o_.externalBuffers) return std::nullopt;
   if (plan_.format != scene::Format::Gltf || plan_.toStdout) {
-    output_.error("--external-buffers needs a .gltf output file");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, "--external-buffers needs a .gltf output file");
   }
   plan_.bufferPath = bufferPathOf(o_.output);
   plan_.bufferFile = plan_.bufferPath.filename().string();
   if (writesOverInput(o_.input, plan_.bufferPath.string())) {
-    output_.error("the buffer file '" + printableText(plan_.bufferPath.string()) +
-                  "' is the input file; sfconvert never writes over its input");
-    return toInt(ExitCode::InvalidInput);
+    return toolFailure(ExitCode::InvalidInput,
+                       "the buffer file '" + printableText(plan_.bufferPath.string()) +
+                           "' is the input file; sfconvert never writes over its input");
   }
   OutputPlan outputs;
   outputs.addOutput(o_.output, o_.input);
   outputs.addOutput(plan_.bufferPath.string(), o_.input);
   if (outputs.firstClash()) {
-    output_.error("the buffer file '" + printableText(plan_.bufferPath.string()) +
-                  "' is the output itself; name the output NAME.gltf");
-    return toInt(ExitCode::Usage);
+    return toolFailure(ExitCode::Usage, "the buffer file '" +
+                                            printableText(plan_.bufferPath.string()) +
+                                            "' is the output itself; name the output NAME.gltf");
   }
   return std::nullopt;
 }
 
-std::optional<scene::ReadResult> Converter::read(int& status) {
+MaybeFailure Converter::read(std::optional<scene::ReadResult>& parsed) {
   std::string shown = inputDisplayName(o_.input);
   stage_.set("reading " + printableText(shown));
   scene::ReadOptions readOptions = o_.read;
   InputText text = readInputText(o_.input, readOptions, &output_.streams().in);
   if (text.tooLarge()) {
     print(text.refused);
-    status = toInt(ExitCode::InvalidInput);
-    return std::nullopt;
+    return toldFailure(ExitCode::InvalidInput);
   }
   if (!text.text) {
-    output_.fileError(shown, "cannot read the file: " + printableText(text.readError));
-    status = toInt(ExitCode::IoError);
-    return std::nullopt;
+    return fileFailure(ExitCode::IoError, shown,
+                       "cannot read the file: " + printableText(text.readError));
   }
   readOptions.sceneFile.transposedMatrices = o_.transpose;
   readOptions.noLoss = o_.noLoss;
@@ -198,8 +196,7 @@ std::optional<scene::ReadResult> Converter::read(int& status) {
   if (!result.ok()) {
     if (format_ == DiagnosticFormat::Text) sources_.capture(shown, *text.text, result.diagnostics);
     print(result.diagnostics);
-    status = toInt(ExitCode::InvalidInput);
-    return std::nullopt;
+    return toldFailure(ExitCode::InvalidInput);
   }
   std::optional<scene::Format> detected = scene::detectFormat(*text.text, shown);
   // The conversion's warnings point into the input too: a small input is
@@ -218,7 +215,8 @@ std::optional<scene::ReadResult> Converter::read(int& status) {
                  std::string(detected ? scene::formatInfo(*detected).singular : "a scene") + ", " +
                  sceneContents(result.scene) + ")");
   output_.step("reading");
-  return result;
+  parsed = std::move(result);
+  return std::nullopt;
 }
 
 scene::ConversionOptions Converter::conversionOptions() const {
@@ -248,17 +246,17 @@ scene::ConversionOptions Converter::conversionOptions() const {
   return options;
 }
 
-int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene& scene) {
+MaybeFailure Converter::write(const scene::ConvertedFiles& converted, const scene::Scene& scene) {
   std::string what =
       std::string(scene::formatInfo(plan_.format).singular) + ", " + sceneContents(scene);
   if (plan_.toStdout) {
     stage_.set("writing to standard output");
     output_.streams().out << converted.main;
     if (!flushStandardOutput("sfconvert", output_.streams().out, output_.err())) {
-      return toInt(ExitCode::IoError);
+      return toldFailure(ExitCode::IoError);
     }
     output_.info("wrote standard output (" + what + ")");
-    return toInt(ExitCode::Success);
+    return std::nullopt;
   }
   stage_.set("writing " + printableText(o_.output));
   // The buffer first, so that the .gltf never names a buffer not there;
@@ -269,12 +267,12 @@ int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene&
   std::string writeError;
   std::filesystem::path failed;
   if (!writeFilesAtomically(files, writeError, &failed, !o_.noClobber)) {
-    output_.fileError(failed.string(), "cannot write the file: " + writeError);
+    ToolFailure failure =
+        fileFailure(ExitCode::IoError, failed.string(), "cannot write the file: " + writeError);
     if (namesStandardOutput(o_.output)) {
-      output_.err() << "  hint: sfconvert writes regular files; name the output - for standard "
-                       "output\n";
+      failure.hint = "sfconvert writes regular files; name the output - for standard output";
     }
-    return toInt(ExitCode::IoError);
+    return failure;
   }
   output_.step("writing");
   std::string wrote = "wrote " + printableText(o_.output) + " (" + what + ")";
@@ -287,14 +285,13 @@ int Converter::write(const scene::ConvertedFiles& converted, const scene::Scene&
                  ": an instruction file holds no blank, control character or character that "
                  "is not ASCII in a name");
   }
-  return toInt(ExitCode::Success);
+  return std::nullopt;
 }
 
-int Converter::run() {
-  if (std::optional<int> refused = plan()) return *refused;
-  int status = 0;
-  std::optional<scene::ReadResult> result = read(status);
-  if (!result) return status;
+MaybeFailure Converter::run() {
+  if (MaybeFailure failure = plan()) return failure;
+  std::optional<scene::ReadResult> result;
+  if (MaybeFailure failure = read(result)) return failure;
   stage_.set("converting");
   std::optional<scene::ConvertedFiles> converted = scene::convertSceneToFiles(
       result->scene, plan_.format, conversionOptions(), result->diagnostics);
@@ -303,25 +300,20 @@ int Converter::run() {
     keptText_ = std::string();
   }
   print(result->diagnostics);
-  if (!converted) return toInt(ExitCode::InvalidInput);
+  if (!converted) return toldFailure(ExitCode::InvalidInput);
   output_.step("converting");
   return write(*converted, result->scene);
 }
 
-int convert(int argc, const char* const* argv, const ToolStreams& streams, Stage& stage) {
-  SfconvertOptions options;
-  std::unique_ptr<CLI::App> app = makeSfconvertCommandLine(options);
-  if (auto stop = parseCommandLine(*app, argc, argv, streams.out, streams.err)) {
-    return toInt(*stop);
-  }
-  ToolOutput output("sfconvert", streams, options.common);
+// What the command line asks: one conversion, or a batch's.
+MaybeFailure runCommand(SfconvertOptions& options, ToolOutput& output, Stage& stage) {
   if (options.outputPattern.empty()) {
     if (options.files.size() != 2) {
-      output.error(options.files.size() < 2 ? "missing OUTPUT"
-                                            : "several inputs need -o, a pattern such as "
-                                              "'out/{stem}.gltf'",
-                   "run 'sfconvert --help' for the options");
-      return toInt(ExitCode::Usage);
+      return toolFailure(ExitCode::Usage,
+                         options.files.size() < 2 ? "missing OUTPUT"
+                                                  : "several inputs need -o, a pattern such as "
+                                                    "'out/{stem}.gltf'",
+                         "run 'sfconvert --help' for the options");
     }
     options.input = options.files[0];
     options.output = options.files[1];
@@ -330,10 +322,7 @@ int convert(int argc, const char* const* argv, const ToolStreams& streams, Stage
   std::string error;
   std::optional<std::vector<std::string>> outputs =
       batchOutputs(options.outputPattern, options.files, error);
-  if (!outputs) {
-    output.error(error);
-    return toInt(ExitCode::Usage);
-  }
+  if (!outputs) return toolFailure(ExitCode::Usage, error);
   // Every file the batch writes, buffers included, checked together (one
   // input is checked as `sfconvert IN OUT` is, by its conversion).
   OutputPlan plan;
@@ -347,29 +336,45 @@ int convert(int argc, const char* const* argv, const ToolStreams& streams, Stage
   }
   std::optional<OutputClash> clash = options.files.size() > 1 ? plan.firstClash() : std::nullopt;
   if (clash) {
-    output.error(plan.describe(*clash) + "; a batch writes each file once, and never over an input",
-                 clash->overInput ? "write the outputs to a folder of their own, such as -o "
-                                    "'out/{stem}.sf'"
-                                  : "use {dir} or {name} in -o");
-    return toInt(ExitCode::Usage);
+    return toolFailure(
+        ExitCode::Usage,
+        plan.describe(*clash) + "; a batch writes each file once, and never over an input",
+        clash->overInput ? "write the outputs to a folder of their own, such as -o "
+                           "'out/{stem}.sf'"
+                         : "use {dir} or {name} in -o");
   }
-  int converted = 0, status = toInt(ExitCode::Success);
+  // Each file converted as if alone, the batch going on past one that
+  // fails (its failure reported where it ends); the batch ends with the
+  // first failure's status.
+  int converted = 0;
+  MaybeFailure first;
   for (std::size_t i = 0; i < options.files.size(); ++i) {
     SfconvertOptions one = options;
     one.input = options.files[i];
     one.output = (*outputs)[i];
-    int result = Converter(one, output, stage).run();
-    if (result == toInt(ExitCode::Success)) {
+    if (MaybeFailure failure = Converter(one, output, stage).run()) {
+      output.report(*failure);
+      if (!first) first = toldFailure(failure->code);
+    } else {
       ++converted;
-    } else if (status == toInt(ExitCode::Success)) {
-      status = result;
     }
   }
   int total = static_cast<int>(options.files.size());
   if (total > 1 && (!options.common.quiet || converted < total)) {
     output.err() << batchSummary("sfconvert", converted, total, "scenes converted") << "\n";
   }
-  return status;
+  return first;
+}
+
+int convert(int argc, const char* const* argv, const ToolStreams& streams, Stage& stage) {
+  SfconvertOptions options;
+  std::unique_ptr<CLI::App> app = makeSfconvertCommandLine(options);
+  if (auto stop = parseCommandLine(*app, argc, argv, streams.out, streams.err)) {
+    return toInt(*stop);
+  }
+  ToolOutput output("sfconvert", streams, options.common);
+  MaybeFailure failure = runCommand(options, output, stage);
+  return failure ? output.report(*failure) : toInt(ExitCode::Success);
 }
 
 }  // namespace
