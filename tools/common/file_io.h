@@ -52,8 +52,6 @@ class StagedFile {
   int descriptor() const { return fd_; }
   // The temporary's name, for writers that open the file themselves.
   const std::filesystem::path& temporaryPath() const { return temporary_; }
-  // The file that commit() replaces (the link's target when it was a link).
-  const std::filesystem::path& targetPath() const { return target_; }
 
   bool write(std::string_view content, std::string& error);
   // Flushes the temporary to disk, whoever wrote it, and closes it: a crash

@@ -259,25 +259,25 @@ std::string glfwReason() {
   return reason;
 }
 
-// The scene named on the command line, or the exit status.
-std::optional<int> openScene(const sfbuild::SfbuildOptions& o, const tools::ToolOutput& output,
-                             App& app) {
+// The scene named on the command line, or why it cannot be opened.
+tools::MaybeFailure openScene(const sfbuild::SfbuildOptions& o, const tools::ToolOutput& output,
+                              App& app) {
   tools::InputText text = tools::readInputText(o.input, o.read, &output.streams().in);
   tools::DiagnosticStyle style = output.diagnosticStyle(tools::DiagnosticFormat::Text);
   if (text.tooLarge()) {
     tools::DiagnosticPrinter(output.err(), style).print(text.refused);
-    return tools::toInt(tools::ExitCode::InvalidInput);
+    return tools::toldFailure(tools::ExitCode::InvalidInput);
   }
   std::string shown = tools::inputDisplayName(o.input);
   if (!text.text) {
-    output.fileError(shown, "cannot read the file: " + tools::printableText(text.readError));
-    return tools::toInt(tools::ExitCode::IoError);
+    return tools::fileFailure(tools::ExitCode::IoError, shown,
+                              "cannot read the file: " + tools::printableText(text.readError));
   }
   scene::ReadResult result = scene::parseScene(*text.text, shown, o.read);
   tools::SourceExcerpts sources;
   sources.capture(shown, *text.text, result.diagnostics);
   tools::DiagnosticPrinter(output.err(), style, &sources).print(result.diagnostics);
-  if (!result.ok()) return tools::toInt(tools::ExitCode::InvalidInput);
+  if (!result.ok()) return tools::toldFailure(tools::ExitCode::InvalidInput);
   app.state = sfbuild::stateForScene(std::move(result.scene), o.width, o.height);
   return std::nullopt;
 }
@@ -322,8 +322,8 @@ int main(int argc, char** argv) {
   app.quiet = options.common.quiet;
   app.state = sfbuild::initialState(options.width, options.height);
   if (!options.input.empty()) {
-    if (std::optional<int> status = openScene(options, output, app)) {
-      return tools::closeStandardStreams("sfbuild", *status);
+    if (tools::MaybeFailure failure = openScene(options, output, app)) {
+      return tools::closeStandardStreams("sfbuild", output.report(*failure));
     }
   }
   app.state.idView = options.idView;

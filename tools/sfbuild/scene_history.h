@@ -28,8 +28,6 @@ class SceneHistory {
   const scene::Scene* undo();
   const scene::Scene* redo();
 
-  std::size_t undoSteps() const { return undo_.size(); }
-  std::size_t redoSteps() const { return redo_.size(); }
   const scene::Scene& committed() const { return committed_; }
 
  private:
