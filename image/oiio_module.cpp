@@ -127,7 +127,7 @@ OIIO::TypeDesc storedType(int pixelType) {
   }
 }
 
-// What the file says of its numbers (docs/RENDERING.md, "Colour"): sRGB
+// What the file says of its numbers (docs/RENDERING.md, "Image files"): sRGB
 // display values are tagged sRGB, which a PNG writer records as the sRGB
 // chunk (with gAMA and cHRM for readers that know no sRGB) and a TIFF, JPEG
 // or other writer as Exif's ColorSpace; those that can also get the ICC
