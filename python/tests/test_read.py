@@ -30,7 +30,7 @@ TOOL_FLAGS = {"max-file-size": ("", "--max-file-size", False),
               "approximate": ("", "--approximate", False),
               "field-of-view": ("sfrender", "--fov", True),
               "width": ("sfrender", "--width", True), "height": ("sfrender", "--height", True),
-              "depth": ("", "--depth", True), "output-path": ("", "-o", False)}
+              "depth": ("", "--depth", True), "output-path": ("sfrender", "-o", True)}
 
 
 def as_the_tools_say(d):

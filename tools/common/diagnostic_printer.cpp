@@ -43,7 +43,7 @@ SettingFlag settingFlag(scene::Setting setting) {
     case scene::Setting::Depth:
       return {"", "--depth", true};
     case scene::Setting::OutputPath:
-      return {"", "-o", false};
+      return {"sfrender", "-o", true};
   }
   return {"", "", false};
 }

@@ -51,7 +51,7 @@ std::optional<ConvertedFiles> writeSceneFileFormat(const Scene& scene,
   if (scene.outputFile) {
     Diagnostic& d = out.note(DiagnosticCode::DroppedOutputFile, scene.outputFileSpan,
                              "OUTPUT_FILE is not written: a scene file names no output");
-    d.hint = "the renderer takes the output name with {0}";
+    d.hint = "the image's name is then given when rendering ({0})";
     d.remedies = {{Setting::OutputPath, *scene.outputFile}};
   }
   if (out.errorCount() != errorsBefore) return std::nullopt;
