@@ -1,6 +1,6 @@
 #include "image/exr_header.h"
 
-namespace tools {
+namespace image {
 
 namespace {
 
@@ -56,4 +56,4 @@ std::optional<std::string> exrHeaderProblem(std::string_view bytes, std::uint64_
   }
 }
 
-}  // namespace tools
+}  // namespace image

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace tools {
+namespace image {
 
 // OpenEXR allocates the size an attribute declares before reading it, so a
 // file of 300 bytes that declares a string of 1.7 GB costs 1.7 GB. Why the
@@ -22,4 +22,4 @@ std::optional<std::string> exrHeaderProblem(std::string_view bytes, std::uint64_
 // are under 1 KiB) must end within it.
 inline constexpr std::uint64_t kExrHeaderBytes = std::uint64_t{1} << 20;
 
-}  // namespace tools
+}  // namespace image

@@ -17,7 +17,7 @@
 #include "image/png_file.h"
 #include "tools/common/file_io.h"
 
-namespace tools {
+namespace image {
 
 namespace {
 
@@ -467,7 +467,7 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
       return false;
     }
   }
-  StagedFile file;
+  tools::StagedFile file;
   return file.open(path, false, error) && file.write(*bytes, error) && file.finish(error) &&
          file.commit(error, replace);
 }
@@ -490,12 +490,12 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
   };
   // Before OpenImageIO opens it: /dev/zero would be read for ever, a pipe
   // block.
-  if (std::optional<std::string> problem = regularFileProblem(path)) {
+  if (std::optional<std::string> problem = tools::regularFileProblem(path)) {
     return cannotRead(*problem);
   }
   // OpenEXR allocates what an attribute declares (exr_header.h).
   std::string why;
-  std::optional<std::string> head = readWholeFile(path, why, kExrHeaderBytes);
+  std::optional<std::string> head = tools::readWholeFile(path, why, kExrHeaderBytes);
   std::error_code failed;
   std::uintmax_t size = std::filesystem::file_size(path, failed);
   if (!head || failed) {
@@ -534,4 +534,4 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
   return true;
 }
 
-}  // namespace tools
+}  // namespace image

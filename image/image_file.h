@@ -15,7 +15,7 @@
 #include "renderer/image.h"
 #include "renderer/render_settings.h"
 
-namespace tools {
+namespace image {
 
 // The formats sfrender writes: .ppm, and those OpenImageIO's module
 // offers (oiio_module.h), or .ppm alone when the module cannot be loaded.
@@ -102,4 +102,4 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
 // The linear value of a display value, as float images store it.
 using render::srgbToLinear;
 
-}  // namespace tools
+}  // namespace image

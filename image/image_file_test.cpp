@@ -18,7 +18,7 @@
 #include "tools/common/file_io.h"
 #include "tools/tool_test_support.h"
 
-namespace tools {
+namespace image {
 namespace {
 
 namespace fs = std::filesystem;
@@ -69,7 +69,7 @@ ReadBack readBack(const fs::path& file) {
 
 class ImageFileTest : public ::testing::Test {
  protected:
-  void SetUp() override { dir_ = freshTestFolder("sfimage"); }
+  void SetUp() override { dir_ = tools::freshTestFolder("sfimage"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   fs::path write(const std::string& name, const ImageOptions& options,
@@ -226,7 +226,7 @@ TEST_F(ImageFileTest, PngIsTaggedSrgbByItsChunk) {
     for (bool alpha : {false, true}) {
       std::string error;
       std::string name = "p" + std::to_string(bits) + (alpha ? "a" : "") + ".png";
-      std::optional<std::string> bytes = readWholeFile(write(name, {bits, alpha}), error);
+      std::optional<std::string> bytes = tools::readWholeFile(write(name, {bits, alpha}), error);
       ASSERT_TRUE(bytes) << error;
       PngChunks chunks = pngChunks(*bytes);
       auto has = [&](const char* type) {
@@ -296,7 +296,8 @@ TEST_F(ImageFileTest, TiffAndJpegCarryAnSrgbProfile) {
   }
   // Made the same way each time: the profile carries no date of its own.
   std::string error;
-  EXPECT_EQ(readWholeFile(write("a.jpg", {}), error), readWholeFile(write("b.jpg", {}), error));
+  EXPECT_EQ(tools::readWholeFile(write("a.jpg", {}), error),
+            tools::readWholeFile(write("b.jpg", {}), error));
 }
 
 TEST_F(ImageFileTest, TiffAlphaIsStraight) {
@@ -310,7 +311,8 @@ TEST_F(ImageFileTest, SixteenBitPpmIsNetpbms) {
   // .pnm takes 8 bits only; its reader reads sfrender's .ppm, above.)
   render::Image image = testImage(7, 5);
   std::string error;
-  std::optional<std::string> bytes = readWholeFile(write("hand.ppm", {16, false}, image), error);
+  std::optional<std::string> bytes =
+      tools::readWholeFile(write("hand.ppm", {16, false}, image), error);
   ASSERT_TRUE(bytes) << error;
   const std::string header = "P6\n7 5\n65535\n";
   EXPECT_EQ(bytes->compare(0, header.size(), header), 0);
@@ -389,7 +391,7 @@ TEST_F(ImageFileTest, EveryExtensionWritesItsOwnFormat) {
       std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string());
       ASSERT_TRUE(in) << extension;
       EXPECT_EQ(in->format_name(), format.name == "ppm" ? "pnm" : format.name) << extension;
-      std::string bytes = readWholeFile(file, error).value_or("");
+      std::string bytes = tools::readWholeFile(file, error).value_or("");
       std::string want = extension == ".avif"   ? "avif"
                          : extension == ".heic" ? "heic"
                          : extension == ".jp2"  ? "jP  "
@@ -417,8 +419,8 @@ TEST(ImageFile, HandWrittenPpmMatchesOpenImageIO) {
   std::string error;
   ASSERT_TRUE(writeImageFile(image, dir / "hand.ppm", error)) << error;
   ASSERT_TRUE(writeImageFile(image, dir / "oiio.pnm", error)) << error;
-  std::optional<std::string> hand = readWholeFile(dir / "hand.ppm", error);
-  std::optional<std::string> oiio = readWholeFile(dir / "oiio.pnm", error);
+  std::optional<std::string> hand = tools::readWholeFile(dir / "hand.ppm", error);
+  std::optional<std::string> oiio = tools::readWholeFile(dir / "oiio.pnm", error);
   ASSERT_TRUE(hand && oiio);
   EXPECT_EQ(*hand, *oiio);
 
@@ -437,4 +439,4 @@ TEST(ImageFile, HandWrittenPpmMatchesOpenImageIO) {
 }
 
 }  // namespace
-}  // namespace tools
+}  // namespace image

@@ -5,7 +5,7 @@
 #include <cctype>
 #include <sstream>
 
-namespace tools {
+namespace image {
 
 namespace {
 
@@ -221,4 +221,4 @@ std::optional<std::string> imageOptionsRefusal(const std::vector<ImageFormat>& f
   return std::nullopt;
 }
 
-}  // namespace tools
+}  // namespace image

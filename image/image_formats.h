@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tools {
+namespace image {
 
 // One format, with what sfrender stores in it.
 struct ImageFormat {
@@ -64,4 +64,4 @@ std::optional<std::string> imageOptionsRefusal(const std::vector<ImageFormat>& f
                                                const ImageFormat& format,
                                                const ImageOptions& options);
 
-}  // namespace tools
+}  // namespace image

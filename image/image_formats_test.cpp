@@ -11,7 +11,7 @@
 #include "image/image_file.h"
 #include "tools/common/output_file_format.h"
 
-namespace tools {
+namespace image {
 namespace {
 
 const char* const kList =
@@ -80,12 +80,12 @@ TEST(ImageFormats, SfchecksListIsOpenImageIOs) {
   for (const ImageFormat& f : writableImageFormats()) {
     runtime.insert(runtime.end(), f.extensions.begin(), f.extensions.end());
   }
-  std::vector<std::string> fixed(imageExtensions().begin(), imageExtensions().end());
+  std::vector<std::string> fixed(tools::imageExtensions().begin(), tools::imageExtensions().end());
   EXPECT_EQ(fixed, runtime) << "OpenImageIO writes other formats than "
                                "tools/common/output_file_format.cpp lists: update the list";
   for (const std::string& extension : runtime) {
     EXPECT_TRUE(canWriteImage("x" + extension)) << extension;
-    EXPECT_TRUE(hasImageExtension("x" + extension)) << extension;
+    EXPECT_TRUE(tools::hasImageExtension("x" + extension)) << extension;
   }
   // OpenImageIO's, but no file (term, null), or unfit for a render (GIF
   // keeps 256 colours, ICO 256 pixels a side, ZFile one channel), or for
@@ -93,11 +93,11 @@ TEST(ImageFormats, SfchecksListIsOpenImageIOs) {
   for (const char* name :
        {"x.term", "x.null", "x.gif", "x.ico", "x.zfile", "x.pfm", "x.dib", "x"}) {
     EXPECT_FALSE(canWriteImage(name)) << name;
-    EXPECT_FALSE(hasImageExtension(name)) << name;
+    EXPECT_FALSE(tools::hasImageExtension(name)) << name;
   }
-  EXPECT_TRUE(hasImageExtension("a/b.Tiff"));
-  EXPECT_FALSE(hasImageExtension("a.png/b"));
+  EXPECT_TRUE(tools::hasImageExtension("a/b.Tiff"));
+  EXPECT_FALSE(tools::hasImageExtension("a.png/b"));
 }
 
 }  // namespace
-}  // namespace tools
+}  // namespace image

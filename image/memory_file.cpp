@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace tools {
+namespace image {
 
 MemoryFile::~MemoryFile() {
   if (map_) ::munmap(map_, mapped_);
@@ -46,4 +46,4 @@ std::optional<std::string_view> MemoryFile::bytes(std::string& error) {
   return std::string_view(static_cast<const char*>(map_), mapped_);
 }
 
-}  // namespace tools
+}  // namespace image

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace tools {
+namespace image {
 
 // A file made by memfd_create, which a library opens by its name
 // (/proc/self/fd/N) or is handed the descriptor of. Writing to it fails
@@ -35,4 +35,4 @@ class MemoryFile {
   std::size_t mapped_ = 0;
 };
 
-}  // namespace tools
+}  // namespace image

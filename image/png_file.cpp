@@ -7,7 +7,7 @@
 #include <new>
 #include <vector>
 
-namespace tools {
+namespace image {
 
 namespace {
 
@@ -98,4 +98,4 @@ std::string pngFileBytes(const PngLevels& levels, std::string& error) {
   return bytes;
 }
 
-}  // namespace tools
+}  // namespace image

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-namespace tools {
+namespace image {
 
 // The levels of an image in the order PNG stores them: rows from the top,
 // `channels` (3: RGB, 4: RGBA with straight alpha) a pixel, each an 8-bit
@@ -32,4 +32,4 @@ struct PngLevels {
 // advice), or an empty string and the reason in `error`.
 std::string pngFileBytes(const PngLevels& levels, std::string& error);
 
-}  // namespace tools
+}  // namespace image

@@ -2,7 +2,7 @@
 
 #include "renderer/image.h"
 
-namespace tools {
+namespace image {
 
 unsigned char quantizeChannel(float value) {
   return render::eightBitLevel(value);
@@ -16,4 +16,4 @@ std::uint16_t quantizeChannel16(float value) {
   return static_cast<std::uint16_t>(render::levelOf(value, 65535.0));
 }
 
-}  // namespace tools
+}  // namespace image

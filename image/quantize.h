@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace tools {
+namespace image {
 
 // The 8-bit level of a display value: render::eightBitLevel.
 unsigned char quantizeChannel(float value);
@@ -19,4 +19,4 @@ void quantizeChannels(const float* values, std::size_t count, unsigned char* lev
 // The 16-bit level of a display value: render::levelOf(value, 65535).
 std::uint16_t quantizeChannel16(float value);
 
-}  // namespace tools
+}  // namespace image

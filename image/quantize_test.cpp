@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-namespace tools {
+namespace image {
 namespace {
 
 TEST(ImageFile, QuantizesToTheNearestLevelWithoutGamma) {
@@ -85,4 +85,4 @@ TEST(ImageFile, QuantizesInBulkAsOneByOne) {
 }
 
 }  // namespace
-}  // namespace tools
+}  // namespace image

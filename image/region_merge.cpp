@@ -7,7 +7,7 @@
 
 #include "image/image_file.h"
 
-namespace tools {
+namespace image {
 
 namespace {
 
@@ -144,4 +144,4 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
   return whole;
 }
 
-}  // namespace tools
+}  // namespace image

@@ -12,7 +12,7 @@
 
 #include "renderer/image.h"
 
-namespace tools {
+namespace image {
 
 // The display value that sfrender's EXR writer turned into `linear`: the
 // smallest float whose sRGB decoding (srgbToLinear) is `linear`, or, when
@@ -39,4 +39,4 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
                                                std::int64_t maxPixels, std::string& error,
                                                bool* unreadable = nullptr);
 
-}  // namespace tools
+}  // namespace image

@@ -16,7 +16,7 @@
 #include "image/image_file.h"
 #include "tools/common/file_io.h"
 
-namespace tools {
+namespace image {
 namespace {
 
 namespace fs = std::filesystem;
@@ -196,13 +196,13 @@ OIIO::ImageSpec windows(int x, int y, int width, int height, int fullWidth, int 
 fs::path withBox(const fs::path& path, const std::string& name, std::int32_t xMin,
                  std::int32_t yMin, std::int32_t xMax, std::int32_t yMax) {
   std::string error;
-  std::string bytes = readWholeFile(path, error).value_or("");
+  std::string bytes = tools::readWholeFile(path, error).value_or("");
   std::string key = name + std::string(1, '\0') + "box2i" + std::string(1, '\0');
   std::size_t at = bytes.find(key);
   EXPECT_NE(at, std::string::npos) << name;
   std::int32_t box[4] = {xMin, yMin, xMax, yMax};  // little-endian, as EXR's
   std::memcpy(&bytes[at + key.size() + 4], box, sizeof box);
-  EXPECT_TRUE(writeFileAtomically(path, bytes, error)) << error;
+  EXPECT_TRUE(tools::writeFileAtomically(path, bytes, error)) << error;
   return path;
 }
 
@@ -239,12 +239,12 @@ TEST_F(MergeRegions, BoundsWhatATileAsksForBeforeAllocating) {
   // OpenEXR would allocate before reading them.
   {
     fs::path claims = write(one, "claims.exr");
-    std::string bytes = readWholeFile(claims, error).value_or("");
+    std::string bytes = tools::readWholeFile(claims, error).value_or("");
     std::string key = std::string("compression") + '\0' + "compression" + '\0';
     std::size_t at = bytes.find(key);
     ASSERT_NE(at, std::string::npos);
     std::memcpy(&bytes[at + key.size()], "\x00\x00\x00\x70", 4);  // 1,879,048,192
-    ASSERT_TRUE(writeFileAtomically(claims, bytes, error)) << error;
+    ASSERT_TRUE(tools::writeFileAtomically(claims, bytes, error)) << error;
     EXPECT_FALSE(mergeImageRegions({claims}, kLimit, error));
     EXPECT_EQ(error, "'" + claims.string() +
                          "''s OpenEXR attribute 'compression' declares 1879048192 bytes, more "
@@ -343,4 +343,4 @@ TEST_F(MergeRegions, RefusesValuesThatAreNotFinite) {
 }
 
 }  // namespace
-}  // namespace tools
+}  // namespace image

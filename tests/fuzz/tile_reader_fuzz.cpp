@@ -48,9 +48,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
-  tools::ImageRegionFile tile;
+  image::ImageRegionFile tile;
   std::string error;
-  if (!tools::readImageRegionWith(sfrender_oiio_read, file, tile, kMaxPixels, error)) {
+  if (!image::readImageRegionWith(sfrender_oiio_read, file, tile, kMaxPixels, error)) {
     if (error.empty()) fuzz::propertyFailed("a refused tile carries no error", "");
     return 0;
   }
@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              std::to_string(r.fullWidth) + "x" + std::to_string(r.fullHeight));
   }
   for (float value : tile.rgb) {
-    if (!std::isfinite(value) || !std::isfinite(tools::displayFromLinear(value))) {
+    if (!std::isfinite(value) || !std::isfinite(image::displayFromLinear(value))) {
       fuzz::propertyFailed("an accepted tile holds a value that is not finite",
                            std::to_string(value));
     }

@@ -100,7 +100,7 @@ void ProgressiveRender::renderJob(const Job& job) {
       frame.width = image.width;
       frame.height = image.height;
       frame.rgb.resize(image.rgb.size());
-      tools::quantizeChannels(image.rgb.data(), image.rgb.size(), frame.rgb.data());
+      image::quantizeChannels(image.rgb.data(), image.rgb.size(), frame.rgb.data());
       frame.level = static_cast<int>(i);
       frame.levelCount = static_cast<int>(levels_.size());
       frame.settings = level;

@@ -276,7 +276,7 @@ MaybeFailure RenderJob::targetRefusal() {
   if (job_.toStdout) {
     // A PPM: what --bits and --alpha ask of it holds as for a file.
     if (std::optional<std::string> refusal =
-            imageOptionsRefusal({ppmFormat()}, ppmFormat(), o_.image)) {
+            image::imageOptionsRefusal({image::ppmFormat()}, image::ppmFormat(), o_.image)) {
       return toolFailure(ExitCode::Usage, "cannot write standard output as asked: " + *refusal);
     }
     if (!output_.streams().outIsTerminal) return std::nullopt;
@@ -306,16 +306,17 @@ MaybeFailure RenderJob::targetRefusal() {
                            "image would now go to '" + printableText(target.string()) + "'",
                        "run the batch again");
   }
-  if (std::optional<std::string> refusal = imageRefusal(target, o_.image)) {
+  if (std::optional<std::string> refusal = image::imageRefusal(target, o_.image)) {
     return toolFailure(ExitCode::Usage, printableText(*refusal));
   }
   if (o_.noClobber && pathExists(target)) {
     return fileFailure(ExitCode::IoError, target.string(), kNoClobberMessage);
   }
   std::string error;
-  if (!checkCanWrite(target, false,
-                     ppmFileSize(imageWidth(settings_), imageHeight(settings_), target, o_.image),
-                     error)) {
+  if (!checkCanWrite(
+          target, false,
+          image::ppmFileSize(imageWidth(settings_), imageHeight(settings_), target, o_.image),
+          error)) {
     return fileFailure(ExitCode::IoError, target.string(), "cannot write the image: " + error);
   }
   return std::nullopt;
@@ -377,7 +378,7 @@ MaybeFailure RenderJob::writeImage(const render::Image& image,
   std::string written;
   if (job_.toStdout) {
     stage_.set("writing to standard output");
-    output_.streams().out << ppmImageBytes(image, o_.image);
+    output_.streams().out << image::ppmImageBytes(image, o_.image);
     if (!flushStandardOutput("sfrender", output_.streams().out, output_.err())) {
       return toldFailure(ExitCode::IoError);
     }
@@ -385,7 +386,7 @@ MaybeFailure RenderJob::writeImage(const render::Image& image,
   } else {
     stage_.set("writing " + printableText(job_.target.string()));
     std::string writeError;
-    if (!writeImageFile(image, job_.target, writeError, o_.image, !o_.noClobber)) {
+    if (!image::writeImageFile(image, job_.target, writeError, o_.image, !o_.noClobber)) {
       return fileFailure(ExitCode::IoError, job_.target.string(),
                          "cannot write the image: " + writeError);
     }
@@ -440,8 +441,8 @@ MaybeFailure RenderJob::run() {
   if (MaybeFailure failure = chooseRegion()) return failure;
   chooseTarget();
   if (MaybeFailure failure = targetRefusal()) return failure;
-  fitRenderToImage(job_.toStdout ? fs::path("standard output.ppm") : job_.target, o_.image,
-                   settings_);
+  image::fitRenderToImage(job_.toStdout ? fs::path("standard output.ppm") : job_.target, o_.image,
+                          settings_);
   // Step 2: render, with a progress bar on a terminal, if it fits in memory
   // and its threads start.
   if (MaybeFailure failure = resourceRefusal()) return failure;
@@ -499,7 +500,7 @@ MaybeFailure mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& s
     return toolFailure(ExitCode::Usage,
                        "--merge puts RGB regions together; --alpha is for a render");
   }
-  if (std::optional<std::string> refusal = imageRefusal(o.output, o.image)) {
+  if (std::optional<std::string> refusal = image::imageRefusal(o.output, o.image)) {
     return toolFailure(ExitCode::Usage, printableText(*refusal));
   }
   OutputPlan plan;
@@ -519,13 +520,13 @@ MaybeFailure mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& s
   std::string error;
   bool unreadable = false;
   std::optional<render::Image> image =
-      mergeImageRegions(files, o.limits.maxPixels, error, &unreadable);
+      image::mergeImageRegions(files, o.limits.maxPixels, error, &unreadable);
   if (!image) {
     return toolFailure(unreadable ? ExitCode::IoError : ExitCode::InvalidInput,
                        printableText(error));
   }
   output.step("merging");
-  if (!writeImageFile(*image, o.output, error, o.image, !o.noClobber)) {
+  if (!image::writeImageFile(*image, o.output, error, o.image, !o.noClobber)) {
     return fileFailure(ExitCode::IoError, o.output, "cannot write the image: " + error);
   }
   output.info("wrote " + printableText(o.output) + " (" + std::to_string(image->width) + "x" +

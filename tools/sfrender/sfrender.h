@@ -45,7 +45,7 @@ struct SfrenderOptions {
   // --region x0,y0,x1,y1 and --tile i/N, as given (checked when parsed).
   std::string region;
   std::string tile;
-  ImageOptions image;  // --bits, --alpha
+  image::ImageOptions image;  // --bits, --alpha
   bool stats = false;
   bool noClobber = false;
   RenderLimits limits;

@@ -129,7 +129,7 @@ std::unique_ptr<CLI::App> makeSfrenderCommandLine(SfrenderOptions& o) {
                 "transparent");
   // The formats OpenImageIO writes, found when --help is printed; CLI11
   // puts them before the exit statuses.
-  app->footer([] { return imageFormatHelp(); });
+  app->footer([] { return image::imageFormatHelp(); });
   app->add_flag("--stats", o.stats,
                 "print the time, the rays and the rays per second (also when quiet)");
   app->add_flag("--no-clobber", o.noClobber, "never write over an existing file");

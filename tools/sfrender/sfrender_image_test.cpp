@@ -112,7 +112,7 @@ TEST_F(ImageFileTest, BitsAndAlphaAFormatCannotHoldAreUsageErrors) {
 TEST_F(ImageFileTest, HelpListsWhatOpenImageIOWrites) {
   EXPECT_EQ(sfrender({"--help"}), 0);
   std::string help = out_.str();
-  for (const ImageFormat& format : writableImageFormats()) {
+  for (const image::ImageFormat& format : image::writableImageFormats()) {
     for (const std::string& extension : format.extensions) {
       EXPECT_NE(help.find(" " + extension + " "), std::string::npos) << extension << "\n" << help;
     }
