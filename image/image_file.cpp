@@ -425,8 +425,11 @@ std::string ppmImageBytes(const render::Image& image, const ImageOptions& option
   return ppmBytes(image, storedBits(ppmFormat(), options));
 }
 
-bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
-                    std::string& error, const ImageOptions& options, bool replace) {
+namespace {
+
+// writeImageFile's steps, false with why in `error`.
+bool writeImageBytes(const render::Image& image, const std::filesystem::path& path,
+                     std::string& error, const ImageOptions& options, bool replace) {
   if (options.alpha &&
       image.coverage.size() != static_cast<std::size_t>(image.width) * image.height) {
     error = "the render has no coverage for --alpha";
@@ -472,21 +475,33 @@ bool writeImageFile(const render::Image& image, const std::filesystem::path& pat
          file.commit(error, replace);
 }
 
-bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file,
-                     std::int64_t maxPixels, std::string& error, bool* unreadable) {
-  std::optional<OiioModule> oiio = loadOiio(error);
-  if (!oiio) return false;
-  return readImageRegionWith(oiio->read, path, file, maxPixels, error, unreadable);
+}  // namespace
+
+tools::MaybeFailure writeImageFile(const render::Image& image, const std::filesystem::path& path,
+                                   const ImageOptions& options, bool replace) {
+  std::string error;
+  if (writeImageBytes(image, path, error, options, replace)) return std::nullopt;
+  return tools::fileFailure(tools::ExitCode::IoError, path.string(),
+                            "cannot write the image: " + error);
 }
 
-bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& path,
-                         ImageRegionFile& file, std::int64_t maxPixels, std::string& error,
-                         bool* unreadable) {
+tools::Outcome<ImageRegionFile> readImageRegion(const std::filesystem::path& path,
+                                                std::int64_t maxPixels) {
+  std::string error;
+  std::optional<OiioModule> oiio = loadOiio(error);
+  if (!oiio) return tools::toolFailure(tools::ExitCode::InvalidInput, error);
+  return readImageRegionWith(oiio->read, path, maxPixels);
+}
+
+tools::Outcome<ImageRegionFile> readImageRegionWith(SfrenderOiioRead read,
+                                                    const std::filesystem::path& path,
+                                                    std::int64_t maxPixels) {
   std::string name = "'" + path.string() + "'";
   auto cannotRead = [&](const std::string& why) {
-    error = "cannot read " + name + ": " + why;
-    if (unreadable) *unreadable = true;
-    return false;
+    return tools::toolFailure(tools::ExitCode::IoError, "cannot read " + name + ": " + why);
+  };
+  auto cannotMerge = [&](const std::string& what) {
+    return tools::toolFailure(tools::ExitCode::InvalidInput, name + what);
   };
   // Before OpenImageIO opens it: /dev/zero would be read for ever, a pipe
   // block.
@@ -502,19 +517,17 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
     return cannotRead(head ? failed.message() : why);
   }
   if (std::optional<std::string> problem = exrHeaderProblem(*head, size)) {
-    error = name + *problem;
-    return false;
+    return cannotMerge(*problem);
   }
+  ImageRegionFile file;
   char message[512] = "";
   int status = read(path.c_str(), &file.region, nullptr, 0, message, sizeof message);
   if (status < 0) {
-    error = name + " is not an OpenEXR file; " + kRegionsAreFloatExr;
-    return false;
+    return cannotMerge(std::string(" is not an OpenEXR file; ") + kRegionsAreFloatExr);
   }
   if (status == 0) return cannotRead(message);
   if (std::optional<std::string> refusal = regionRefusal(file.region, maxPixels)) {
-    error = name + *refusal;
-    return false;
+    return cannotMerge(*refusal);
   }
   const SfrenderImageRegion checked = file.region;
   file.rgb.assign(std::size_t{3} * static_cast<std::size_t>(checked.width) * checked.height, 0.0f);
@@ -528,10 +541,9 @@ bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& pat
     return cannotRead("it changed while it was read");
   }
   if (std::optional<std::string> value = nonFiniteValue(file)) {
-    error = name + " holds " + *value + "; a render writes finite values only";
-    return false;
+    return cannotMerge(" holds " + *value + "; a render writes finite values only");
   }
-  return true;
+  return file;
 }
 
 }  // namespace image

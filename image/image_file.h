@@ -14,6 +14,7 @@
 #include "image/quantize.h"
 #include "renderer/image.h"
 #include "renderer/render_settings.h"
+#include "tools/common/tool_failure.h"
 
 namespace image {
 
@@ -60,9 +61,10 @@ std::uint64_t ppmFileSize(int width, int height, const std::filesystem::path& pa
 // renamed (file_io.h), so the file appears whole or not at all: on a full
 // disk the old file stays as it was.
 // With `replace` false (--no-clobber), an existing file is kept and the
-// write fails.
-bool writeImageFile(const render::Image& image, const std::filesystem::path& path,
-                    std::string& error, const ImageOptions& options = {}, bool replace = true);
+// write fails. A failure is "cannot write the image: WHY" about `path`,
+// with the status of a file that cannot be written.
+tools::MaybeFailure writeImageFile(const render::Image& image, const std::filesystem::path& path,
+                                   const ImageOptions& options = {}, bool replace = true);
 
 // The bytes of the image as binary PPM (P6, 8 or 16 bits as options.bits
 // says): what a ".ppm" file holds, and what `sfrender -o -` writes to
@@ -86,18 +88,17 @@ inline constexpr const char* kRegionsAreFloatExr =
 // and channels are checked, in arithmetic that cannot overflow, before a
 // pixel is allocated (3 or 4 channels, the data window inside the display
 // window, which holds at most `maxPixels` pixels); and every value read must
-// be finite, as every value a render writes is. False with the message in
-// `error`: "cannot read 'PATH': ..." when the file could not be read (and
-// `*unreadable`, where given, set), "'PATH' ..." when it holds what cannot
-// be merged.
-bool readImageRegion(const std::filesystem::path& path, ImageRegionFile& file,
-                     std::int64_t maxPixels, std::string& error, bool* unreadable = nullptr);
+// be finite, as every value a render writes is. A failure is "cannot read
+// 'PATH': ..." with the status of a file that cannot be read, or "'PATH' ..."
+// with that of invalid input when the file holds what cannot be merged.
+tools::Outcome<ImageRegionFile> readImageRegion(const std::filesystem::path& path,
+                                                std::int64_t maxPixels);
 
 // The same through `read`, the module's reader (oiio_module.h), for a
 // program that links the module's code in (the fuzz target).
-bool readImageRegionWith(SfrenderOiioRead read, const std::filesystem::path& path,
-                         ImageRegionFile& file, std::int64_t maxPixels, std::string& error,
-                         bool* unreadable = nullptr);
+tools::Outcome<ImageRegionFile> readImageRegionWith(SfrenderOiioRead read,
+                                                    const std::filesystem::path& path,
+                                                    std::int64_t maxPixels);
 
 // The linear value of a display value, as float images store it.
 using render::srgbToLinear;

@@ -75,8 +75,8 @@ class ImageFileTest : public ::testing::Test {
   fs::path write(const std::string& name, const ImageOptions& options,
                  const render::Image& image = testImage()) {
     fs::path file = dir_ / name;
-    std::string error;
-    EXPECT_TRUE(writeImageFile(image, file, error, options)) << name << ": " << error;
+    tools::MaybeFailure failure = writeImageFile(image, file, options);
+    EXPECT_FALSE(failure) << name << ": " << failure->message;
     return file;
   }
 
@@ -417,8 +417,8 @@ TEST(ImageFile, HandWrittenPpmMatchesOpenImageIO) {
   fs::path dir = fs::temp_directory_path() / ("sfppm-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::string error;
-  ASSERT_TRUE(writeImageFile(image, dir / "hand.ppm", error)) << error;
-  ASSERT_TRUE(writeImageFile(image, dir / "oiio.pnm", error)) << error;
+  ASSERT_FALSE(writeImageFile(image, dir / "hand.ppm"));
+  ASSERT_FALSE(writeImageFile(image, dir / "oiio.pnm"));
   std::optional<std::string> hand = tools::readWholeFile(dir / "hand.ppm", error);
   std::optional<std::string> oiio = tools::readWholeFile(dir / "oiio.pnm", error);
   ASSERT_TRUE(hand && oiio);

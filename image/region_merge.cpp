@@ -39,16 +39,21 @@ float bisectDisplay(float linear) {
   return floatOfBits(low);
 }
 
+// Files that do not make one image.
+tools::ToolFailure invalidRegions(std::string message) {
+  return tools::toolFailure(tools::ExitCode::InvalidInput, std::move(message));
+}
+
 std::string windowText(int x, int y, int width, int height) {
   return std::to_string(width) + "x" + std::to_string(height) + " at " + std::to_string(x) + "," +
          std::to_string(y);
 }
 
 // Copies one file's pixels into `whole`, counting what each pixel got in
-// `filled`; false with `error` when a pixel it overlaps disagrees.
-bool placeRegion(const ImageRegionFile& file, const std::string& name, render::Image& whole,
-                 std::vector<float>& linear, std::vector<unsigned char>& filled,
-                 std::string& error) {
+// `filled`; a failure when a pixel it overlaps disagrees.
+tools::MaybeFailure placeRegion(const ImageRegionFile& file, const std::string& name,
+                                render::Image& whole, std::vector<float>& linear,
+                                std::vector<unsigned char>& filled) {
   const SfrenderImageRegion& r = file.region;
   for (int row = 0; row < r.height; ++row) {
     for (int column = 0; column < r.width; ++column) {
@@ -56,15 +61,15 @@ bool placeRegion(const ImageRegionFile& file, const std::string& name, render::I
                        static_cast<std::size_t>(r.x - r.fullX + column);
       const float* from = &file.rgb[3 * (static_cast<std::size_t>(row) * r.width + column)];
       if (filled[to] && std::memcmp(&linear[3 * to], from, 3 * sizeof(float)) != 0) {
-        error = name + " and an earlier region differ at pixel " +
-                std::to_string(r.x - r.fullX + column) + "," + std::to_string(r.y - r.fullY + row);
-        return false;
+        return invalidRegions(name + " and an earlier region differ at pixel " +
+                              std::to_string(r.x - r.fullX + column) + "," +
+                              std::to_string(r.y - r.fullY + row));
       }
       std::memcpy(&linear[3 * to], from, 3 * sizeof(float));
       filled[to] = 1;
     }
   }
-  return true;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -88,14 +93,9 @@ float displayFromLinear(float linear) {
   return first ? d : bisectDisplay(linear);
 }
 
-std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
-                                               std::int64_t maxPixels, std::string& error,
-                                               bool* unreadable) {
-  if (unreadable) *unreadable = false;
-  if (files.empty()) {
-    error = "no regions to merge";
-    return std::nullopt;
-  }
+tools::Outcome<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
+                                                std::int64_t maxPixels) {
+  if (files.empty()) return invalidRegions("no regions to merge");
   render::Image whole;
   std::vector<float> linear;
   std::vector<unsigned char> filled;
@@ -103,13 +103,14 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
   for (std::size_t i = 0; i < files.size(); ++i) {
     const std::filesystem::path& path = files[i];
     std::string name = "'" + path.string() + "'";
-    ImageRegionFile file;
-    if (!readImageRegion(path, file, maxPixels, error, unreadable)) return std::nullopt;
+    tools::Outcome<ImageRegionFile> read = readImageRegion(path, maxPixels);
+    if (!read) return read.failure();
+    const ImageRegionFile& file = *read;
     const SfrenderImageRegion& r = file.region;
     if (!r.floating || r.bits != 32) {
-      error = name + " holds " + std::to_string(r.bits) + "-bit " +
-              (r.floating ? "floating-point" : "integer") + " values; " + kRegionsAreFloatExr;
-      return std::nullopt;
+      return invalidRegions(name + " holds " + std::to_string(r.bits) + "-bit " +
+                            (r.floating ? "floating-point" : "integer") + " values; " +
+                            kRegionsAreFloatExr);
     }
     // By place, not by name: a file named twice is two regions, which
     // agree where they overlap.
@@ -122,20 +123,21 @@ std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem
       filled.assign(pixels, 0);
     } else if (r.fullX != display.fullX || r.fullY != display.fullY ||
                r.fullWidth != display.fullWidth || r.fullHeight != display.fullHeight) {
-      error =
+      return invalidRegions(
           name + " is a region of a " + windowText(r.fullX, r.fullY, r.fullWidth, r.fullHeight) +
           " image, '" + files.front().string() + "' of a " +
-          windowText(display.fullX, display.fullY, display.fullWidth, display.fullHeight) + " one";
-      return std::nullopt;
+          windowText(display.fullX, display.fullY, display.fullWidth, display.fullHeight) + " one");
     }
-    if (!placeRegion(file, name, whole, linear, filled, error)) return std::nullopt;
+    if (tools::MaybeFailure failure = placeRegion(file, name, whole, linear, filled)) {
+      return *failure;
+    }
   }
   for (std::size_t p = 0; p < filled.size(); ++p) {
     if (filled[p]) continue;
-    error = "no region holds pixel " + std::to_string(p % whole.width) + "," +
-            std::to_string(p / whole.width) + " of the " + std::to_string(whole.width) + "x" +
-            std::to_string(whole.height) + " image";
-    return std::nullopt;
+    return invalidRegions("no region holds pixel " + std::to_string(p % whole.width) + "," +
+                          std::to_string(p / whole.width) + " of the " +
+                          std::to_string(whole.width) + "x" + std::to_string(whole.height) +
+                          " image");
   }
   whole.fullWidth = whole.width;
   whole.fullHeight = whole.height;

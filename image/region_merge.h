@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "renderer/image.h"
+#include "tools/common/tool_failure.h"
 
 namespace image {
 
@@ -32,11 +33,10 @@ float displayFromLinear(float linear);
 // --max-pixels, as for a render): every file must have the same display
 // window, hold 32-bit floating-point RGB (the values exactly as rendered),
 // and together they must cover the display window; where two overlap (a file
-// named twice too), they must agree. Nothing, with why in `error`, when they
-// do not; `*unreadable`, where given, tells a file that could not be read
-// (an I/O error) from files that do not make one image.
-std::optional<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
-                                               std::int64_t maxPixels, std::string& error,
-                                               bool* unreadable = nullptr);
+// named twice too), they must agree. A failure when they do not: a file
+// that could not be read has the status of an I/O error, files that do not
+// make one image that of invalid input.
+tools::Outcome<render::Image> mergeImageRegions(const std::vector<std::filesystem::path>& files,
+                                                std::int64_t maxPixels);
 
 }  // namespace image

@@ -105,6 +105,12 @@ render::Image rows(const render::Image& whole, int y0, int y1) {
   return region;
 }
 
+// Why the files do not merge; empty when they do.
+std::string mergeFailure(const std::vector<fs::path>& files, std::int64_t maxPixels) {
+  tools::Outcome<render::Image> merged = mergeImageRegions(files, maxPixels);
+  return merged ? "" : merged.failure().message;
+}
+
 class MergeRegions : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -116,8 +122,8 @@ class MergeRegions : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(folder_); }
   fs::path write(const render::Image& image, const std::string& name) {
-    std::string error;
-    EXPECT_TRUE(writeImageFile(image, folder_ / name, error)) << error;
+    tools::MaybeFailure failure = writeImageFile(image, folder_ / name);
+    EXPECT_FALSE(failure) << failure->message;
     return folder_ / name;
   }
   fs::path folder_;
@@ -128,26 +134,25 @@ TEST_F(MergeRegions, GivesTheWholeImageInEveryFormat) {
   std::vector<fs::path> parts = {write(rows(whole, 3, 5), "c.exr"),
                                  write(rows(whole, 0, 2), "a.exr"),
                                  write(rows(whole, 2, 3), "b.exr")};
-  std::string error;
-  std::optional<render::Image> merged = mergeImageRegions(parts, kLimit, error);
-  ASSERT_TRUE(merged) << error;
+  tools::Outcome<render::Image> merged = mergeImageRegions(parts, kLimit);
+  ASSERT_TRUE(merged) << merged.failure().message;
   ASSERT_EQ(merged->width, 7);
   ASSERT_EQ(merged->height, 5);
   EXPECT_EQ(ppmImageBytes(*merged), ppmImageBytes(whole));
   EXPECT_EQ(ppmImageBytes(*merged, {16, false}), ppmImageBytes(whole, {16, false}));
-  ImageRegionFile once, again;
-  ASSERT_TRUE(readImageRegion(write(whole, "whole.exr"), once, kLimit, error)) << error;
-  ASSERT_TRUE(readImageRegion(write(*merged, "merged.exr"), again, kLimit, error)) << error;
-  EXPECT_EQ(once.rgb, again.rgb);
-  EXPECT_EQ(again.region.width, 7);
-  EXPECT_EQ(again.region.fullHeight, 5);
+  tools::Outcome<ImageRegionFile> once = readImageRegion(write(whole, "whole.exr"), kLimit);
+  tools::Outcome<ImageRegionFile> again = readImageRegion(write(*merged, "merged.exr"), kLimit);
+  ASSERT_TRUE(once && again);
+  EXPECT_EQ(once->rgb, again->rgb);
+  EXPECT_EQ(again->region.width, 7);
+  EXPECT_EQ(again->region.fullHeight, 5);
 }
 
 TEST_F(MergeRegions, WritesTheDataAndDisplayWindows) {
-  ImageRegionFile file;
-  std::string error;
-  ASSERT_TRUE(readImageRegion(write(rows(gradient(7, 5), 2, 4), "r.exr"), file, kLimit, error))
-      << error;
+  tools::Outcome<ImageRegionFile> read =
+      readImageRegion(write(rows(gradient(7, 5), 2, 4), "r.exr"), kLimit);
+  ASSERT_TRUE(read) << read.failure().message;
+  const ImageRegionFile& file = *read;
   EXPECT_EQ(file.region.x, 0);
   EXPECT_EQ(file.region.y, 2);
   EXPECT_EQ(file.region.width, 7);
@@ -158,16 +163,14 @@ TEST_F(MergeRegions, WritesTheDataAndDisplayWindows) {
 
 TEST_F(MergeRegions, RefusesAGapAMismatchAndHalves) {
   render::Image whole = gradient(7, 5);
-  std::string error;
-  EXPECT_FALSE(mergeImageRegions(
-      {write(rows(whole, 0, 2), "a.exr"), write(rows(whole, 3, 5), "c.exr")}, kLimit, error));
+  std::string error =
+      mergeFailure({write(rows(whole, 0, 2), "a.exr"), write(rows(whole, 3, 5), "c.exr")}, kLimit);
   EXPECT_EQ(error, "no region holds pixel 0,2 of the 7x5 image");
-  EXPECT_FALSE(mergeImageRegions({folder_ / "a.exr", write(rows(gradient(7, 6), 2, 6), "d.exr")},
-                                 kLimit, error));
+  error = mergeFailure({folder_ / "a.exr", write(rows(gradient(7, 6), 2, 6), "d.exr")}, kLimit);
   EXPECT_NE(error.find("is a region of a 7x6 at 0,0 image"), std::string::npos) << error;
   std::string halfName = "h.exr";
-  ASSERT_TRUE(writeImageFile(rows(whole, 2, 5), folder_ / halfName, error, {16, false}));
-  EXPECT_FALSE(mergeImageRegions({folder_ / "a.exr", folder_ / halfName}, kLimit, error));
+  ASSERT_FALSE(writeImageFile(rows(whole, 2, 5), folder_ / halfName, {16, false}));
+  error = mergeFailure({folder_ / "a.exr", folder_ / halfName}, kLimit);
   EXPECT_NE(error.find("holds 16-bit floating-point values"), std::string::npos) << error;
 }
 
@@ -213,27 +216,27 @@ TEST_F(MergeRegions, BoundsWhatATileAsksForBeforeAllocating) {
   std::string error;
   render::Image one = gradient(1, 1);
   fs::path huge = withBox(write(one, "huge.exr"), "displayWindow", -(1 << 29), 0, (1 << 29) - 1, 0);
-  EXPECT_FALSE(mergeImageRegions({huge}, kLimit, error));
+  error = mergeFailure({huge}, kLimit);
   EXPECT_EQ(error, "'" + huge.string() +
                        "' is a region of a 1073741824x1 image, 1073741824 pixels, more than the "
                        "limit of 67108864; raise it with --max-pixels");
   fs::path wide =
       withBox(write(one, "wide.exr"), "displayWindow", 0, 0, (1 << 16) - 1, (1 << 14) - 1);
-  EXPECT_FALSE(mergeImageRegions({wide}, kLimit, error));
+  error = mergeFailure({wide}, kLimit);
   EXPECT_NE(error.find("more than the limit"), std::string::npos) << error;
   // The same limit as a render's, raised by the same flag.
   render::Image whole = gradient(7, 5);
   fs::path a = write(rows(whole, 0, 5), "a.exr");
-  EXPECT_FALSE(mergeImageRegions({a}, 34, error));
+  error = mergeFailure({a}, 34);
   EXPECT_NE(error.find("7x5 image, 35 pixels, more than the limit of 34"), std::string::npos);
-  EXPECT_TRUE(mergeImageRegions({a}, 35, error)) << error;
+  EXPECT_EQ(mergeFailure({a}, 35), "");
   // Data windows past the display window (OpenEXR itself refuses windows
   // near the edges of an int).
   fs::path outside = withBox(write(one, "outside.exr"), "dataWindow", 1000, 0, 1000, 0);
-  EXPECT_FALSE(mergeImageRegions({outside}, kLimit, error));
+  error = mergeFailure({outside}, kLimit);
   EXPECT_NE(error.find("reach outside its image"), std::string::npos) << error;
   fs::path below = withBox(write(one, "below.exr"), "dataWindow", 0, -5, 0, -5);
-  EXPECT_FALSE(mergeImageRegions({below}, kLimit, error));
+  error = mergeFailure({below}, kLimit);
   EXPECT_NE(error.find("reach outside its image"), std::string::npos) << error;
   // An attribute that declares more bytes than the file holds, which
   // OpenEXR would allocate before reading them.
@@ -245,7 +248,7 @@ TEST_F(MergeRegions, BoundsWhatATileAsksForBeforeAllocating) {
     ASSERT_NE(at, std::string::npos);
     std::memcpy(&bytes[at + key.size()], "\x00\x00\x00\x70", 4);  // 1,879,048,192
     ASSERT_TRUE(tools::writeFileAtomically(claims, bytes, error)) << error;
-    EXPECT_FALSE(mergeImageRegions({claims}, kLimit, error));
+    error = mergeFailure({claims}, kLimit);
     EXPECT_EQ(error, "'" + claims.string() +
                          "''s OpenEXR attribute 'compression' declares 1879048192 bytes, more "
                          "than the " +
@@ -253,39 +256,36 @@ TEST_F(MergeRegions, BoundsWhatATileAsksForBeforeAllocating) {
   }
   fs::path five =
       writeExr(folder_ / "five.exr", windows(0, 0, 2, 1, 2, 1, 5), std::vector<float>(10, 0.5f));
-  EXPECT_FALSE(mergeImageRegions({five}, kLimit, error));
+  error = mergeFailure({five}, kLimit);
   EXPECT_NE(error.find("holds 5 channels"), std::string::npos) << error;
 }
 
 // Only regular files: a device or a pipe is refused before it is opened,
 // at once (reading /dev/zero would never end, a pipe would block).
 TEST_F(MergeRegions, ReadsRegularFilesOnly) {
-  std::string error;
-  EXPECT_FALSE(mergeImageRegions({"/dev/zero"}, kLimit, error));
+  std::string error = mergeFailure({"/dev/zero"}, kLimit);
   EXPECT_EQ(error, "cannot read '/dev/zero': it is a character device, not a regular file");
   fs::path pipe = folder_ / "pipe.exr";
   ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
-  EXPECT_FALSE(mergeImageRegions({pipe}, kLimit, error));
+  error = mergeFailure({pipe}, kLimit);
   EXPECT_EQ(error, "cannot read '" + pipe.string() + "': it is a pipe, not a regular file");
-  EXPECT_FALSE(mergeImageRegions({folder_}, kLimit, error));
+  error = mergeFailure({folder_}, kLimit);
   EXPECT_EQ(error, "cannot read '" + folder_.string() + "': it is a directory");
 }
 
 // A file that cannot be read is told apart from files that do not make one
 // image: sfrender ends the one with an I/O error, the other as invalid input.
 TEST_F(MergeRegions, TellsAnUnreadableFileFromOneThatDoesNotFit) {
-  std::string error;
-  bool unreadable = false;
-  EXPECT_FALSE(mergeImageRegions({folder_ / "missing.exr"}, kLimit, error, &unreadable));
-  EXPECT_TRUE(unreadable) << error;
-  EXPECT_FALSE(mergeImageRegions({"/dev/zero"}, kLimit, error, &unreadable));
-  EXPECT_TRUE(unreadable) << error;
+  auto code = [](tools::Outcome<render::Image> merged) {
+    return merged ? tools::ExitCode::Success : merged.failure().code;
+  };
+  EXPECT_EQ(code(mergeImageRegions({folder_ / "missing.exr"}, kLimit)), tools::ExitCode::IoError);
+  EXPECT_EQ(code(mergeImageRegions({"/dev/zero"}, kLimit)), tools::ExitCode::IoError);
   render::Image whole = gradient(7, 5);
-  EXPECT_FALSE(
-      mergeImageRegions({write(rows(whole, 0, 2), "top.exr")}, kLimit, error, &unreadable));
-  EXPECT_FALSE(unreadable) << error;
-  EXPECT_FALSE(mergeImageRegions({write(rows(whole, 0, 5), "big.exr")}, 34, error, &unreadable));
-  EXPECT_FALSE(unreadable) << error;
+  EXPECT_EQ(code(mergeImageRegions({write(rows(whole, 0, 2), "top.exr")}, kLimit)),
+            tools::ExitCode::InvalidInput);
+  EXPECT_EQ(code(mergeImageRegions({write(rows(whole, 0, 5), "big.exr")}, 34)),
+            tools::ExitCode::InvalidInput);
 }
 
 // Tiles are OpenEXR, and only OpenEXR's reader sees a tile's bytes:
@@ -293,13 +293,12 @@ TEST_F(MergeRegions, TellsAnUnreadableFileFromOneThatDoesNotFit) {
 TEST_F(MergeRegions, ReadsOpenExrOnly) {
   render::Image whole = gradient(7, 5);
   std::string error;
-  ASSERT_TRUE(writeImageFile(rows(whole, 0, 5), folder_ / "t.png", error)) << error;
-  ASSERT_TRUE(writeImageFile(rows(whole, 0, 5), folder_ / "float.tif", error, {32, false}) ||
-              writeImageFile(rows(whole, 0, 5), folder_ / "float.tif", error))
-      << error;
+  ASSERT_FALSE(writeImageFile(rows(whole, 0, 5), folder_ / "t.png"));
+  ASSERT_TRUE(!writeImageFile(rows(whole, 0, 5), folder_ / "float.tif", {32, false}) ||
+              !writeImageFile(rows(whole, 0, 5), folder_ / "float.tif"));
   fs::rename(folder_ / "float.tif", folder_ / "float.exr");
   for (const char* name : {"t.png", "float.exr"}) {
-    EXPECT_FALSE(mergeImageRegions({folder_ / name}, kLimit, error));
+    error = mergeFailure({folder_ / name}, kLimit);
     EXPECT_EQ(error,
               "'" + (folder_ / name).string() + "' is not an OpenEXR file; " + kRegionsAreFloatExr);
   }
@@ -311,11 +310,10 @@ TEST_F(MergeRegions, TakesATileNamedTwice) {
   render::Image whole = gradient(7, 5);
   fs::path top = write(rows(whole, 0, 2), "top.exr");
   fs::path bottom = write(rows(whole, 2, 5), "bottom.exr");
-  std::string error;
   for (const std::vector<fs::path>& files : std::vector<std::vector<fs::path>>{
            {top, bottom, top}, {top, top, bottom}, {bottom, top, bottom, bottom}}) {
-    std::optional<render::Image> merged = mergeImageRegions(files, kLimit, error);
-    ASSERT_TRUE(merged) << error;
+    tools::Outcome<render::Image> merged = mergeImageRegions(files, kLimit);
+    ASSERT_TRUE(merged) << merged.failure().message;
     EXPECT_EQ(ppmImageBytes(*merged), ppmImageBytes(whole));
   }
 }
@@ -336,7 +334,7 @@ TEST_F(MergeRegions, RefusesValuesThatAreNotFinite) {
     std::vector<float> values(7 * 3 * 3, 0.25f);
     values[3 * (7 * 1 + 4) + 2] = c.value;
     fs::path bottom = writeExr(folder_ / "bottom.exr", windows(0, 2, 7, 3, 7, 5), values);
-    EXPECT_FALSE(mergeImageRegions({top, bottom}, kLimit, error));
+    error = mergeFailure({top, bottom}, kLimit);
     EXPECT_EQ(error, "'" + bottom.string() + "' holds " + c.said +
                          " at pixel 4,3 (its B channel); a render writes finite values only");
   }

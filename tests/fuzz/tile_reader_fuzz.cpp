@@ -48,12 +48,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
-  image::ImageRegionFile tile;
-  std::string error;
-  if (!image::readImageRegionWith(sfrender_oiio_read, file, tile, kMaxPixels, error)) {
-    if (error.empty()) fuzz::propertyFailed("a refused tile carries no error", "");
+  tools::Outcome<image::ImageRegionFile> read =
+      image::readImageRegionWith(sfrender_oiio_read, file, kMaxPixels);
+  if (!read) {
+    if (read.failure().message.empty()) fuzz::propertyFailed("a refused tile carries no error", "");
     return 0;
   }
+  const image::ImageRegionFile& tile = *read;
   const SfrenderImageRegion& r = tile.region;
   std::int64_t pixels = std::int64_t{r.width} * r.height;
   if (r.width <= 0 || r.height <= 0 || pixels > kMaxPixels ||

@@ -7,6 +7,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 
 #include "tools/common/exit_code.h"
 
@@ -38,5 +40,29 @@ inline ToolFailure fileFailure(ExitCode code, std::string file, std::string mess
 inline ToolFailure toldFailure(ExitCode code) {
   return ToolFailure{code, {}, {}, {}};
 }
+
+// What a step that makes a value returns: the value, or the failure that
+// kept it from being made, never both (C++20 has no std::expected).
+template <class T>
+class Outcome {
+ public:
+  Outcome(T value) : result_(std::in_place_index<0>, std::move(value)) {}
+  Outcome(ToolFailure failure) : result_(std::in_place_index<1>, std::move(failure)) {}
+
+  bool ok() const { return result_.index() == 0; }
+  explicit operator bool() const { return ok(); }
+  T& operator*() { return std::get<0>(result_); }
+  const T& operator*() const { return std::get<0>(result_); }
+  T* operator->() { return &std::get<0>(result_); }
+  const T* operator->() const { return &std::get<0>(result_); }
+  T valueOr(T fallback) const { return ok() ? **this : std::move(fallback); }
+  // Only when !ok().
+  const ToolFailure& failure() const { return std::get<1>(result_); }
+  // Nothing when ok(): for a step that passes a failure on.
+  MaybeFailure maybeFailure() const { return ok() ? MaybeFailure() : MaybeFailure(failure()); }
+
+ private:
+  std::variant<T, ToolFailure> result_;
+};
 
 }  // namespace tools

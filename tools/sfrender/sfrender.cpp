@@ -385,10 +385,8 @@ MaybeFailure RenderJob::writeImage(const render::Image& image,
     written = "standard output";
   } else {
     stage_.set("writing " + printableText(job_.target.string()));
-    std::string writeError;
-    if (!image::writeImageFile(image, job_.target, writeError, o_.image, !o_.noClobber)) {
-      return fileFailure(ExitCode::IoError, job_.target.string(),
-                         "cannot write the image: " + writeError);
+    if (MaybeFailure failure = image::writeImageFile(image, job_.target, o_.image, !o_.noClobber)) {
+      return failure;
     }
     written = printableText(job_.target.string());
   }
@@ -517,17 +515,15 @@ MaybeFailure mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& s
   }
   stage.set("merging " + std::to_string(o.inputs.size()) + " regions");
   std::vector<fs::path> files(o.inputs.begin(), o.inputs.end());
-  std::string error;
-  bool unreadable = false;
-  std::optional<render::Image> image =
-      image::mergeImageRegions(files, o.limits.maxPixels, error, &unreadable);
+  Outcome<render::Image> image = image::mergeImageRegions(files, o.limits.maxPixels);
   if (!image) {
-    return toolFailure(unreadable ? ExitCode::IoError : ExitCode::InvalidInput,
-                       printableText(error));
+    ToolFailure failure = image.failure();
+    failure.message = printableText(failure.message);
+    return failure;
   }
   output.step("merging");
-  if (!image::writeImageFile(*image, o.output, error, o.image, !o.noClobber)) {
-    return fileFailure(ExitCode::IoError, o.output, "cannot write the image: " + error);
+  if (MaybeFailure failure = image::writeImageFile(*image, o.output, o.image, !o.noClobber)) {
+    return failure;
   }
   output.info("wrote " + printableText(o.output) + " (" + std::to_string(image->width) + "x" +
               std::to_string(image->height) + ", from " + std::to_string(o.inputs.size()) +
