@@ -471,8 +471,11 @@ bool writeImageBytes(const render::Image& image, const std::filesystem::path& pa
     }
   }
   tools::StagedFile file;
-  return file.open(path, false, error) && file.write(*bytes, error) && file.finish(error) &&
-         file.commit(error, replace);
+  tools::MaybeFailure failure = file.open(path, false);
+  if (!failure) failure = file.write(*bytes);
+  if (!failure) failure = file.commit(replace);
+  if (failure) error = failure->message;
+  return !failure;
 }
 
 }  // namespace
@@ -505,16 +508,15 @@ tools::Outcome<ImageRegionFile> readImageRegionWith(SfrenderOiioRead read,
   };
   // Before OpenImageIO opens it: /dev/zero would be read for ever, a pipe
   // block.
-  if (std::optional<std::string> problem = tools::regularFileProblem(path)) {
-    return cannotRead(*problem);
+  if (tools::MaybeFailure problem = tools::regularFileProblem(path)) {
+    return cannotRead(problem->message);
   }
   // OpenEXR allocates what an attribute declares (exr_header.h).
-  std::string why;
-  std::optional<std::string> head = tools::readWholeFile(path, why, kExrHeaderBytes);
+  tools::Outcome<std::string> head = tools::readWholeFile(path, kExrHeaderBytes);
   std::error_code failed;
   std::uintmax_t size = std::filesystem::file_size(path, failed);
   if (!head || failed) {
-    return cannotRead(head ? failed.message() : why);
+    return cannotRead(head ? failed.message() : head.failure().message);
   }
   if (std::optional<std::string> problem = exrHeaderProblem(*head, size)) {
     return cannotMerge(*problem);

@@ -224,10 +224,9 @@ PngChunks pngChunks(const std::string& bytes) {
 TEST_F(ImageFileTest, PngIsTaggedSrgbByItsChunk) {
   for (int bits : {8, 16}) {
     for (bool alpha : {false, true}) {
-      std::string error;
       std::string name = "p" + std::to_string(bits) + (alpha ? "a" : "") + ".png";
-      std::optional<std::string> bytes = tools::readWholeFile(write(name, {bits, alpha}), error);
-      ASSERT_TRUE(bytes) << error;
+      tools::Outcome<std::string> bytes = tools::readWholeFile(write(name, {bits, alpha}));
+      ASSERT_TRUE(bytes) << bytes.failure().message;
       PngChunks chunks = pngChunks(*bytes);
       auto has = [&](const char* type) {
         return std::find(chunks.types.begin(), chunks.types.end(), type) != chunks.types.end();
@@ -295,9 +294,8 @@ TEST_F(ImageFileTest, TiffAndJpegCarryAnSrgbProfile) {
     }
   }
   // Made the same way each time: the profile carries no date of its own.
-  std::string error;
-  EXPECT_EQ(tools::readWholeFile(write("a.jpg", {}), error),
-            tools::readWholeFile(write("b.jpg", {}), error));
+  EXPECT_EQ(tools::readWholeFile(write("a.jpg", {})).valueOr("a"),
+            tools::readWholeFile(write("b.jpg", {})).valueOr("b"));
 }
 
 TEST_F(ImageFileTest, TiffAlphaIsStraight) {
@@ -310,10 +308,8 @@ TEST_F(ImageFileTest, SixteenBitPpmIsNetpbms) {
   // (OpenImageIO 2.4 writes no 16-bit PNM that reads back, which is why
   // .pnm takes 8 bits only; its reader reads sfrender's .ppm, above.)
   render::Image image = testImage(7, 5);
-  std::string error;
-  std::optional<std::string> bytes =
-      tools::readWholeFile(write("hand.ppm", {16, false}, image), error);
-  ASSERT_TRUE(bytes) << error;
+  tools::Outcome<std::string> bytes = tools::readWholeFile(write("hand.ppm", {16, false}, image));
+  ASSERT_TRUE(bytes) << bytes.failure().message;
   const std::string header = "P6\n7 5\n65535\n";
   EXPECT_EQ(bytes->compare(0, header.size(), header), 0);
   EXPECT_EQ(bytes->size(), header.size() + 7 * 5 * 3 * 2);
@@ -384,14 +380,13 @@ TEST_F(ImageFileTest, EveryExtensionWritesItsOwnFormat) {
   render::Image image = testImage();
   image.width = image.height = 32;  // JPEG 2000's least
   image.rgb.assign(3 * 32 * 32, 0.5f);
-  std::string error;
   for (const ImageFormat& format : writableImageFormats()) {
     for (const std::string& extension : format.extensions) {
       fs::path file = write("x" + extension, {}, image);
       std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string());
       ASSERT_TRUE(in) << extension;
       EXPECT_EQ(in->format_name(), format.name == "ppm" ? "pnm" : format.name) << extension;
-      std::string bytes = tools::readWholeFile(file, error).value_or("");
+      std::string bytes = tools::readWholeFile(file).valueOr("");
       std::string want = extension == ".avif"   ? "avif"
                          : extension == ".heic" ? "heic"
                          : extension == ".jp2"  ? "jP  "
@@ -416,11 +411,10 @@ TEST(ImageFile, HandWrittenPpmMatchesOpenImageIO) {
   }
   fs::path dir = fs::temp_directory_path() / ("sfppm-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  std::string error;
   ASSERT_FALSE(writeImageFile(image, dir / "hand.ppm"));
   ASSERT_FALSE(writeImageFile(image, dir / "oiio.pnm"));
-  std::optional<std::string> hand = tools::readWholeFile(dir / "hand.ppm", error);
-  std::optional<std::string> oiio = tools::readWholeFile(dir / "oiio.pnm", error);
+  tools::Outcome<std::string> hand = tools::readWholeFile(dir / "hand.ppm");
+  tools::Outcome<std::string> oiio = tools::readWholeFile(dir / "oiio.pnm");
   ASSERT_TRUE(hand && oiio);
   EXPECT_EQ(*hand, *oiio);
 

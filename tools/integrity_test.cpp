@@ -56,8 +56,7 @@ class IntegrityTest : public ::testing::Test {
   }
 
   std::string read(const std::string& name) const {
-    std::string error;
-    return readWholeFile(path(name), error).value_or("<missing>");
+    return readWholeFile(path(name)).valueOr("<missing>");
   }
 
   // The names in a folder of dir_/work, to see that nothing stayed behind.
@@ -89,15 +88,14 @@ unsigned modeOf(const std::string& file) {
 
 TEST_F(IntegrityTest, NewFilesFollowTheUmaskAndReplacedFilesKeepTheirMode) {
   mode_t before = ::umask(027);
-  std::string error;
-  ASSERT_TRUE(writeFileAtomically(path("new.sf"), "a", error)) << error;
+  ASSERT_FALSE(writeFileAtomically(path("new.sf"), "a"));
   EXPECT_EQ(modeOf(path("new.sf")), 0640u);
   ::umask(022);
-  ASSERT_TRUE(writeFileAtomically(path("other.sf"), "a", error)) << error;
+  ASSERT_FALSE(writeFileAtomically(path("other.sf"), "a"));
   EXPECT_EQ(modeOf(path("other.sf")), 0644u);
   // A file the user made private stays private when it is written again.
   ::chmod(path("new.sf").c_str(), 0600);
-  ASSERT_TRUE(writeFileAtomically(path("new.sf"), "b", error)) << error;
+  ASSERT_FALSE(writeFileAtomically(path("new.sf"), "b"));
   EXPECT_EQ(modeOf(path("new.sf")), 0600u);
   EXPECT_EQ(read("new.sf"), "b");
   ::umask(before);
@@ -106,32 +104,30 @@ TEST_F(IntegrityTest, NewFilesFollowTheUmaskAndReplacedFilesKeepTheirMode) {
 TEST_F(IntegrityTest, WritingALinkReplacesTheFileItLeadsToAndKeepsTheLink) {
   write("real/scene.sf", "old");
   fs::create_symlink("real/scene.sf", path("link.sf"));
-  std::string error;
-  ASSERT_TRUE(writeFileAtomically(path("link.sf"), "new", error)) << error;
+  ASSERT_FALSE(writeFileAtomically(path("link.sf"), "new"));
   EXPECT_TRUE(fs::is_symlink(path("link.sf")));
   EXPECT_EQ(read("real/scene.sf"), "new");
   EXPECT_EQ(files("real"), (std::vector<std::string>{"scene.sf"}));
   // A link to a file not there yet creates it, as the shell's '>' does.
   fs::create_symlink("real/later.sf", path("later.sf"));
-  ASSERT_TRUE(writeFileAtomically(path("later.sf"), "made", error)) << error;
+  ASSERT_FALSE(writeFileAtomically(path("later.sf"), "made"));
   EXPECT_TRUE(fs::is_symlink(path("later.sf")));
   EXPECT_EQ(read("real/later.sf"), "made");
   // A loop of links is no file.
   fs::create_symlink("loop-b", path("loop-a"));
   fs::create_symlink("loop-a", path("loop-b"));
-  EXPECT_FALSE(writeFileAtomically(path("loop-a"), "x", error));
-  EXPECT_EQ(error, "its symbolic links cannot be followed (a loop, or more than 40)");
+  EXPECT_EQ(writeFileAtomically(path("loop-a"), "x").value_or(ToolFailure{}).message,
+            "its symbolic links cannot be followed (a loop, or more than 40)");
 }
 
 TEST_F(IntegrityTest, OnlyRegularFilesAreReplaced) {
   fs::create_directory(path("folder"));
-  std::string error;
-  EXPECT_FALSE(writeFileAtomically(path("folder"), "x", error));
-  EXPECT_EQ(error, "it is a directory");
-  EXPECT_FALSE(writeFileAtomically("/dev/null", "x", error));
-  EXPECT_EQ(error, "it is a character device, not a regular file");
-  EXPECT_FALSE(writeFileAtomically(path("missing/x.sf"), "x", error));
-  EXPECT_EQ(error, "its folder '" + path("missing") + "' does not exist");
+  EXPECT_EQ(writeFileAtomically(path("folder"), "x").value_or(ToolFailure{}).message,
+            "it is a directory");
+  EXPECT_EQ(writeFileAtomically("/dev/null", "x").value_or(ToolFailure{}).message,
+            "it is a character device, not a regular file");
+  EXPECT_EQ(writeFileAtomically(path("missing/x.sf"), "x").value_or(ToolFailure{}).message,
+            "its folder '" + path("missing") + "' does not exist");
   EXPECT_EQ(files(), (std::vector<std::string>{"folder"}));
 }
 
@@ -140,25 +136,25 @@ TEST_F(IntegrityTest, OnlyRegularFilesAreReplaced) {
 TEST_F(IntegrityTest, StandardOutputAsAFileIsNamedForWhatItIs) {
   int ends[2];
   ASSERT_EQ(::pipe(ends), 0);
-  std::string error;
-  EXPECT_FALSE(writeFileAtomically("/proc/self/fd/" + std::to_string(ends[1]), "x", error));
-  EXPECT_EQ(error, "it is a pipe, not a regular file");
+  EXPECT_EQ(writeFileAtomically("/proc/self/fd/" + std::to_string(ends[1]), "x")
+                .value_or(ToolFailure{})
+                .message,
+            "it is a pipe, not a regular file");
   ::close(ends[0]);
   ::close(ends[1]);
   ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
-  EXPECT_FALSE(writeFileAtomically(path("fifo"), "x", error));
-  EXPECT_EQ(error, "it is a pipe, not a regular file");
+  EXPECT_EQ(writeFileAtomically(path("fifo"), "x").value_or(ToolFailure{}).message,
+            "it is a pipe, not a regular file");
   EXPECT_EQ(files(), (std::vector<std::string>{"fifo"}));
 }
 
 // An exception (std::bad_alloc from a writer) between the temporary's
 // creation and its rename must not leave the temporary.
 TEST_F(IntegrityTest, AnExceptionLeavesNoTemporary) {
-  std::string error;
   try {
     StagedFile file;
-    ASSERT_TRUE(file.open(path("out.sf"), false, error)) << error;
-    ASSERT_TRUE(file.write("part", error));
+    ASSERT_FALSE(file.open(path("out.sf"), false));
+    ASSERT_FALSE(file.write("part"));
     throw std::bad_alloc();
   } catch (const std::bad_alloc&) {
   }
@@ -187,22 +183,21 @@ TEST_F(IntegrityTest, SfrenderFindsAnUnwritableTargetBeforeRendering) {
   }
   EXPECT_TRUE(errorSays("it is a directory")) << err_.str();
   EXPECT_EQ(files(), (std::vector<std::string>{"file", "folder.ppm"}));
-  std::string error;
-  EXPECT_FALSE(checkCanWrite(path("huge.ppm"), true, std::uint64_t{1} << 62, error));
+  std::string error =
+      checkCanWrite(path("huge.ppm"), true, std::uint64_t{1} << 62).value_or(ToolFailure{}).message;
   EXPECT_NE(error.find("it needs 4611686018427387904 bytes but the file system has "),
             std::string::npos)
       << error;
-  EXPECT_TRUE(checkCanWrite(path("small.ppm"), true, 100, error)) << error;
+  EXPECT_FALSE(checkCanWrite(path("small.ppm"), true, 100));
   EXPECT_EQ(files(), (std::vector<std::string>{"file", "folder.ppm"}));
 }
 
 TEST_F(IntegrityTest, TemporariesAreUniqueRecognisableAndNeverLeftByAnAbandonedWrite) {
   write("out.ppm", "old");
-  std::string error;
   StagedFile first;
   StagedFile second;
-  ASSERT_TRUE(first.open(path("out.ppm"), true, error)) << error;
-  ASSERT_TRUE(second.open(path("out.ppm"), false, error)) << error;
+  ASSERT_FALSE(first.open(path("out.ppm"), true));
+  ASSERT_FALSE(second.open(path("out.ppm"), false));
   std::string a = first.temporaryPath().filename().string();
   std::string b = second.temporaryPath().filename().string();
   EXPECT_NE(a, b);
@@ -211,18 +206,18 @@ TEST_F(IntegrityTest, TemporariesAreUniqueRecognisableAndNeverLeftByAnAbandonedW
   EXPECT_EQ(a.size(), std::string(".out.ppm.tmp-XXXXXX.ppm").size()) << a;
   EXPECT_EQ(a.substr(a.size() - 4), ".ppm");
   EXPECT_EQ(b.size(), std::string(".out.ppm.tmp-XXXXXX").size()) << b;
-  ASSERT_TRUE(first.write("first", error));
-  ASSERT_TRUE(second.write("second", error));
+  ASSERT_FALSE(first.write("first"));
+  ASSERT_FALSE(second.write("second"));
   // Until the rename, the target is the old file.
   EXPECT_EQ(read("out.ppm"), "old");
-  ASSERT_TRUE(first.commit(error)) << error;
+  ASSERT_FALSE(first.commit());
   EXPECT_EQ(read("out.ppm"), "first");
   {
     StagedFile abandoned;
-    ASSERT_TRUE(abandoned.open(path("out.ppm"), false, error));
-    ASSERT_TRUE(abandoned.write("never", error));
+    ASSERT_FALSE(abandoned.open(path("out.ppm"), false));
+    ASSERT_FALSE(abandoned.write("never"));
   }
-  ASSERT_TRUE(second.commit(error)) << error;
+  ASSERT_FALSE(second.commit());
   EXPECT_EQ(read("out.ppm"), "second");
   EXPECT_EQ(files(), (std::vector<std::string>{"out.ppm"}));
 }
@@ -263,12 +258,11 @@ TEST_F(IntegrityTest, NamesUpToTheLongestTheFileSystemTakesAreWritten) {
       std::string name = nameOfBytes(bytes, character, ".png");
       SCOPED_TRACE(std::to_string(bytes) + " bytes of " + character);
       ASSERT_EQ(name.size(), bytes);
-      std::string error;
-      ASSERT_TRUE(writeFileAtomically(path(name), "new", error)) << error;
+      ASSERT_FALSE(writeFileAtomically(path(name), "new"));
       EXPECT_EQ(read(name), "new");
       StagedFile first, second;
-      ASSERT_TRUE(first.open(path(name), true, error)) << error;
-      ASSERT_TRUE(second.open(path(name), false, error)) << error;
+      ASSERT_FALSE(first.open(path(name), true));
+      ASSERT_FALSE(second.open(path(name), false));
       std::string a = first.temporaryPath().filename().string();
       std::string b = second.temporaryPath().filename().string();
       EXPECT_NE(a, b);
@@ -278,7 +272,7 @@ TEST_F(IntegrityTest, NamesUpToTheLongestTheFileSystemTakesAreWritten) {
       EXPECT_EQ(a.substr(a.size() - 4), ".png");
       EXPECT_EQ(a.substr(0, 2), "." + name.substr(0, 1));
       EXPECT_NE(b.find(".tmp-"), std::string::npos);
-      ASSERT_TRUE(first.write("first", error) && first.commit(error)) << error;
+      ASSERT_FALSE(first.write("first") || first.commit());
       EXPECT_EQ(read(name), "first");
     }
   }
@@ -288,16 +282,15 @@ TEST_F(IntegrityTest, NamesUpToTheLongestTheFileSystemTakesAreWritten) {
 
 TEST_F(IntegrityTest, FilesThatBelongTogetherAreRenamedOnlyWhenAllAreWritten) {
   write("pair.bin", "old bin");
-  std::string error;
-  fs::path failed;
   // The second cannot be written, so the first is not renamed either.
-  EXPECT_FALSE(writeFilesAtomically(
-      {{path("pair.bin"), "new bin"}, {path("missing/pair.gltf"), "new gltf"}}, error, &failed));
-  EXPECT_EQ(failed, path("missing/pair.gltf"));
+  MaybeFailure failure = writeFilesAtomically(
+      {{path("pair.bin"), "new bin"}, {path("missing/pair.gltf"), "new gltf"}});
+  ASSERT_TRUE(failure);
+  EXPECT_EQ(failure->file, path("missing/pair.gltf"));
+  EXPECT_EQ(failure->code, ExitCode::IoError);
   EXPECT_EQ(read("pair.bin"), "old bin");
   EXPECT_EQ(files(), (std::vector<std::string>{"pair.bin"}));
-  ASSERT_TRUE(
-      writeFilesAtomically({{path("pair.bin"), "new bin"}, {path("pair.gltf"), "gltf"}}, error));
+  ASSERT_FALSE(writeFilesAtomically({{path("pair.bin"), "new bin"}, {path("pair.gltf"), "gltf"}}));
   EXPECT_EQ(read("pair.bin"), "new bin");
   EXPECT_EQ(read("pair.gltf"), "gltf");
 }

@@ -33,13 +33,11 @@ class StreamsAndFlags : public ::testing::Test {
 
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& content) const {
-    std::string error;
-    EXPECT_TRUE(writeFileAtomically(path(name), content, error)) << error;
+    EXPECT_FALSE(writeFileAtomically(path(name), content));
     return path(name);
   }
   std::string read(const std::string& name) const {
-    std::string error;
-    return readWholeFile(path(name), error).value_or("<missing>");
+    return readWholeFile(path(name)).valueOr("<missing>");
   }
   // A tool on `args` with `input` as its standard input; `streams` may make
   // standard output a terminal.
@@ -129,16 +127,14 @@ TEST_F(StreamsAndFlags, NoClobberKeepsAnExistingOutput) {
 TEST_F(StreamsAndFlags, NoClobberHoldsAtTheRenameItself) {
   // A file made after the check but before the rename is kept too.
   write("late.sf", "late");
-  std::string error;
-  fs::path failed;
   std::vector<FileToWrite> files = {{path("late.sf"), "new"}};
-  EXPECT_FALSE(writeFilesAtomically(files, error, &failed, false));
+  EXPECT_TRUE(writeFilesAtomically(files, false));
   StagedFile staged;
-  ASSERT_TRUE(staged.open(path("later.sf"), false, error));
-  ASSERT_TRUE(staged.write("new", error));
+  ASSERT_FALSE(staged.open(path("later.sf"), false));
+  ASSERT_FALSE(staged.write("new"));
   write("later.sf", "made meanwhile");
-  EXPECT_FALSE(staged.commit(error, false));
-  EXPECT_EQ(error, "the file exists, and --no-clobber keeps it");
+  EXPECT_EQ(staged.commit(false).value_or(ToolFailure{}).message,
+            "the file exists, and --no-clobber keeps it");
   EXPECT_EQ(read("later.sf"), "made meanwhile");
 }
 

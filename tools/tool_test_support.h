@@ -98,8 +98,7 @@ class ToolTest : public ::testing::Test {
   }
 
   std::string read(const std::string& name) const {
-    std::string error;
-    return readWholeFile(path(name), error).value_or("<missing>");
+    return readWholeFile(path(name)).valueOr("<missing>");
   }
 
   // Files in the folder, to see that nothing half-written stayed behind.

@@ -21,15 +21,13 @@ std::optional<std::pair<py::bytes, std::string>> writeFiles(const py::list& file
     PyBytes_AsStringAndSize(data.ptr(), &buffer, &size);
     toWrite.push_back({std::filesystem::path(path), {buffer, static_cast<std::size_t>(size)}});
   }
-  std::string error;
-  std::filesystem::path failed;
-  bool written = false;
+  tools::MaybeFailure failure;
   {
     py::gil_scoped_release release;
-    written = tools::writeFilesAtomically(toWrite, error, &failed);
+    failure = tools::writeFilesAtomically(toWrite);
   }
-  if (written) return std::nullopt;
-  return std::make_pair(py::bytes(failed.string()), error);
+  if (!failure) return std::nullopt;
+  return std::make_pair(py::bytes(failure->file), failure->message);
 }
 
 std::optional<std::string> outputClash(const py::list& inputs, const py::list& outputs) {

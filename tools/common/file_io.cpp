@@ -23,6 +23,14 @@ namespace tools {
 
 namespace {
 
+ToolFailure cannotRead(const std::filesystem::path& path, std::string why) {
+  return fileFailure(ExitCode::IoError, path.string(), std::move(why));
+}
+
+ToolFailure cannotWrite(const std::filesystem::path& path, std::string why) {
+  return fileFailure(ExitCode::IoError, path.string(), std::move(why));
+}
+
 // Files from this size on have the later half of their buffer's pages
 // faulted in on a thread of their own while the reading fills the first.
 constexpr std::size_t kPrefaultFrom = std::size_t{16} << 20;
@@ -67,18 +75,11 @@ class PrefaultedPages {
 
 }  // namespace
 
-std::optional<std::string> readWholeFile(const std::filesystem::path& path, std::string& error,
-                                         std::uint64_t maxBytes) {
+Outcome<std::string> readWholeFile(const std::filesystem::path& path, std::uint64_t maxBytes) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    error = "it is a directory";
-    return std::nullopt;
-  }
+  if (std::filesystem::is_directory(path, ec)) return cannotRead(path, "it is a directory");
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    error = std::strerror(errno);
-    return std::nullopt;
-  }
+  if (fd < 0) return cannotRead(path, std::strerror(errno));
   std::string content;
   struct stat info {};
   if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) {
@@ -94,9 +95,9 @@ std::optional<std::string> readWholeFile(const std::filesystem::path& path, std:
     ssize_t n = ::read(fd, buffer, sizeof buffer);
     if (n < 0) {
       if (errno == EINTR) continue;
-      error = std::strerror(errno);
+      int failure = errno;
       ::close(fd);
-      return std::nullopt;
+      return cannotRead(path, std::strerror(failure));
     }
     if (n == 0) break;
     content.append(buffer, static_cast<std::size_t>(n));
@@ -116,18 +117,19 @@ namespace fs = std::filesystem;
 // rename() that fails with EEXIST instead of replacing the target. Where
 // the file system has no RENAME_NOREPLACE (EINVAL), a hard link does the
 // same (link() never replaces), and the temporary's name goes after.
-bool renameWithoutReplacing(const fs::path& from, const fs::path& to, std::string& error) {
-  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return true;
+MaybeFailure renameWithoutReplacing(const fs::path& from, const fs::path& to) {
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) {
+    return std::nullopt;
+  }
   int failure = errno;
   if (failure == EINVAL || failure == ENOSYS) {
     if (::link(from.c_str(), to.c_str()) == 0) {
       ::unlink(from.c_str());
-      return true;
+      return std::nullopt;
     }
     failure = errno;
   }
-  error = failure == EEXIST ? kNoClobberMessage : std::strerror(failure);
-  return false;
+  return cannotWrite(to, failure == EEXIST ? kNoClobberMessage : std::strerror(failure));
 }
 
 // The permissions of a new file: 0666 less the umask. umask() can only be
@@ -227,7 +229,7 @@ void StagedFile::discard() {
   temporary_.clear();
 }
 
-bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& error) {
+MaybeFailure StagedFile::open(const fs::path& target, bool keepExtension) {
   discard();
   finished_ = committed_ = false;
   target_ = target;
@@ -237,12 +239,10 @@ bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& e
   struct stat info {};
   if (::stat(target.c_str(), &info) == 0) {
     if (std::optional<std::string> problem = notRegularFile(info.st_mode)) {
-      error = *problem;
-      return false;
+      return cannotWrite(target, *problem);
     }
   } else if (errno == ELOOP) {
-    error = kLinkLoop;
-    return false;
+    return cannotWrite(target, kLinkLoop);
   }
   // Through a link, the file it leads to is replaced (or created) and the
   // link stays.
@@ -250,19 +250,16 @@ bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& e
   if (fs::is_symlink(fs::symlink_status(target, ec))) {
     std::optional<fs::path> end = scene::followLinks(target);
     if (!end) {
-      error = kLinkLoop;
-      return false;
+      return cannotWrite(target, kLinkLoop);
     }
     target_ = *end;
   }
   fs::file_status file = fs::status(target_, ec);
   if (fs::is_directory(file)) {
-    error = "it is a directory";
-    return false;
+    return cannotWrite(target, "it is a directory");
   }
   if (fs::exists(file) && !fs::is_regular_file(file)) {
-    error = "it is not a regular file";
-    return false;
+    return cannotWrite(target, "it is not a regular file");
   }
   mode_ =
       fs::exists(file) ? static_cast<unsigned>(file.permissions() & fs::perms::all) : newFileMode();
@@ -274,8 +271,7 @@ bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& e
   buffer.push_back('\0');
   fd_ = ::mkostemps(buffer.data(), static_cast<int>(name.suffix), O_CLOEXEC);
   if (fd_ < 0) {
-    error = folderProblem(target_.parent_path(), errno);
-    return false;
+    return cannotWrite(target, folderProblem(target_.parent_path(), errno));
   }
   // Keeping the name allocates: if that fails, the file just created must
   // not outlive the exception (discard() knows it only by this name).
@@ -287,86 +283,74 @@ bool StagedFile::open(const fs::path& target, bool keepExtension, std::string& e
     fd_ = -1;
     throw;
   }
-  return true;
+  return std::nullopt;
 }
 
-bool StagedFile::write(std::string_view content, std::string& error) {
+MaybeFailure StagedFile::write(std::string_view content) {
   const char* data = content.data();
   std::size_t left = content.size();
   while (left > 0) {
     ssize_t n = ::write(fd_, data, left);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      error = std::strerror(errno);
-      return false;
-    }
+    if (n < 0) return cannotWrite(target_, std::strerror(errno));
     data += n;
     left -= static_cast<std::size_t>(n);
   }
-  return true;
+  return std::nullopt;
 }
 
-bool StagedFile::finish(std::string& error) {
+MaybeFailure StagedFile::finish() {
   // mkstemp made the file private; give it the mode the target had or a
   // new file would get. fsync flushes the file, whichever descriptor wrote it.
   if (::fchmod(fd_, static_cast<mode_t>(mode_)) != 0 || ::fsync(fd_) != 0) {
-    error = std::strerror(errno);
-    return false;
+    return cannotWrite(target_, std::strerror(errno));
   }
   int status = ::close(fd_);
   fd_ = -1;
-  if (status != 0) {
-    error = std::strerror(errno);
-    return false;
-  }
+  if (status != 0) return cannotWrite(target_, std::strerror(errno));
   finished_ = true;
-  return true;
+  return std::nullopt;
 }
 
-bool StagedFile::commit(std::string& error, bool replace) {
-  if (!finished_ && !finish(error)) return false;
+MaybeFailure StagedFile::commit(bool replace) {
+  if (!finished_) {
+    if (MaybeFailure failure = finish()) return failure;
+  }
   if (!replace) {
-    if (!renameWithoutReplacing(temporary_, target_, error)) return false;
+    if (MaybeFailure failure = renameWithoutReplacing(temporary_, target_)) return failure;
   } else if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
-    error = std::strerror(errno);
-    return false;
+    return cannotWrite(target_, std::strerror(errno));
   }
   committed_ = true;
   syncFolder(target_.parent_path());
-  return true;
+  return std::nullopt;
 }
 
-bool writeFileAtomically(const fs::path& path, std::string_view content, std::string& error) {
-  return writeFilesAtomically({FileToWrite{path, content}}, error);
+MaybeFailure writeFileAtomically(const fs::path& path, std::string_view content) {
+  return writeFilesAtomically({FileToWrite{path, content}});
 }
 
-bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& error,
-                          fs::path* failed, bool replace) {
+MaybeFailure writeFilesAtomically(const std::vector<FileToWrite>& files, bool replace) {
   if (!replace) {
     // Refused before any is written, so that none of a set lands.
     for (const FileToWrite& file : files) {
-      if (pathExists(file.path)) {
-        error = kNoClobberMessage;
-        if (failed) *failed = file.path;
-        return false;
-      }
+      if (pathExists(file.path)) return cannotWrite(file.path, kNoClobberMessage);
     }
   }
   std::vector<StagedFile> staged(files.size());
   for (std::size_t i = 0; i < files.size(); ++i) {
-    if (!staged[i].open(files[i].path, false, error) || !staged[i].write(files[i].content, error) ||
-        !staged[i].finish(error)) {
-      if (failed) *failed = files[i].path;
-      return false;
-    }
+    MaybeFailure failure = staged[i].open(files[i].path, false);
+    if (!failure) failure = staged[i].write(files[i].content);
+    if (!failure) failure = staged[i].finish();
+    // Named as given, not as the end of its links.
+    if (failure) return cannotWrite(files[i].path, failure->message);
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
-    if (!staged[i].commit(error, replace)) {
-      if (failed) *failed = files[i].path;
-      return false;
+    if (MaybeFailure failure = staged[i].commit(replace)) {
+      return cannotWrite(files[i].path, failure->message);
     }
   }
-  return true;
+  return std::nullopt;
 }
 
 bool pathExists(const fs::path& path) {
@@ -374,29 +358,31 @@ bool pathExists(const fs::path& path) {
   return fs::symlink_status(path, ec).type() != fs::file_type::not_found && !ec;
 }
 
-bool checkCanWrite(const fs::path& target, bool keepExtension, std::uint64_t bytes,
-                   std::string& error) {
+MaybeFailure checkCanWrite(const fs::path& target, bool keepExtension, std::uint64_t bytes) {
   StagedFile probe;
-  if (!probe.open(target, keepExtension, error)) return false;
+  if (MaybeFailure failure = probe.open(target, keepExtension)) return failure;
   struct statvfs room {};
   if (bytes > 0 && ::fstatvfs(probe.descriptor(), &room) == 0) {
     std::uint64_t blocks = ::geteuid() == 0 ? room.f_bfree : room.f_bavail;
     std::uint64_t free = blocks * room.f_frsize;
     if (free < bytes) {
-      error = "it needs " + std::to_string(bytes) + " bytes but the file system has " +
-              std::to_string(free) + " free";
-      return false;
+      return cannotWrite(target, "it needs " + std::to_string(bytes) +
+                                     " bytes but the file system has " + std::to_string(free) +
+                                     " free");
     }
   }
-  return true;  // the probe's temporary goes with it
+  return std::nullopt;  // the probe's temporary goes with it
 }
 
-std::optional<std::string> regularFileProblem(const fs::path& path) {
+MaybeFailure regularFileProblem(const fs::path& path) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) {
-    return errno == ELOOP ? std::string(kLinkLoop) : std::string(std::strerror(errno));
+    return cannotRead(path, errno == ELOOP ? kLinkLoop : std::strerror(errno));
   }
-  return notRegularFile(info.st_mode);
+  if (std::optional<std::string> problem = notRegularFile(info.st_mode)) {
+    return cannotRead(path, *problem);
+  }
+  return std::nullopt;
 }
 
 }  // namespace tools

@@ -9,6 +9,11 @@
 // at any moment (even by SIGKILL), finds the old file or the new one, never a
 // part; a killed run leaves at most its temporary. Two runs never share a
 // temporary: mkstemp creates it exclusively.
+//
+// A failure here is a ToolFailure with the status of a file that cannot be
+// read or written (ExitCode::IoError), the file's name in `file` and the
+// reason alone in `message` ("it is a directory"), which each caller puts
+// in its own sentence.
 #pragma once
 
 #include <cstdint>
@@ -19,14 +24,16 @@
 #include <string_view>
 #include <vector>
 
+#include "tools/common/tool_failure.h"
+
 namespace tools {
 
-// The file's bytes, or nothing with the reason in `error`. Reading stops
-// after `maxBytes` + 1 bytes, which tells a caller with a limit that the file
-// (a pipe, or a file that grew since its size was looked at) is over it
+// The file's bytes, or why they could not be read. Reading stops after
+// `maxBytes` + 1 bytes, which tells a caller with a limit that the file (a
+// pipe, or a file that grew since its size was looked at) is over it
 // without reading it all.
-std::optional<std::string> readWholeFile(
-    const std::filesystem::path& path, std::string& error,
+Outcome<std::string> readWholeFile(
+    const std::filesystem::path& path,
     std::uint64_t maxBytes = std::numeric_limits<std::uint64_t>::max());
 
 // A file being written under a temporary name beside its target, which gets
@@ -47,21 +54,21 @@ class StagedFile {
   // extension, for a writer that opens it by name and chooses the format by
   // the extension (sfrender's images no longer do: they are made in memory
   // first, image_file.h).
-  bool open(const std::filesystem::path& target, bool keepExtension, std::string& error);
+  MaybeFailure open(const std::filesystem::path& target, bool keepExtension);
   // The temporary, open for writing, for writers that take a descriptor.
   int descriptor() const { return fd_; }
   // The temporary's name, for writers that open the file themselves.
   const std::filesystem::path& temporaryPath() const { return temporary_; }
 
-  bool write(std::string_view content, std::string& error);
+  MaybeFailure write(std::string_view content);
   // Flushes the temporary to disk, whoever wrote it, and closes it: a crash
   // after the rename must not leave a renamed but empty file.
-  bool finish(std::string& error);
+  MaybeFailure finish();
   // Renames the finished temporary over the target. With `replace` false
   // (--no-clobber), an existing target is kept and commit fails, decided
   // in the same step as the rename (RENAME_NOREPLACE), so that a file
   // made meanwhile by another program is not replaced either.
-  bool commit(std::string& error, bool replace = true);
+  MaybeFailure commit(bool replace = true);
 
  private:
   void discard();
@@ -75,10 +82,8 @@ class StagedFile {
 };
 
 // Writes `content` to `path` through a StagedFile: a reader sees the old file
-// or the new one, never a part. False, with the reason in `error` and no
-// file left over, on failure.
-bool writeFileAtomically(const std::filesystem::path& path, std::string_view content,
-                         std::string& error);
+// or the new one, never a part. On failure, no file is left over.
+MaybeFailure writeFileAtomically(const std::filesystem::path& path, std::string_view content);
 
 struct FileToWrite {
   std::filesystem::path path;
@@ -90,10 +95,9 @@ struct FileToWrite {
 // one right after the other in the given order, so that the moment in which
 // a kill leaves the new first file beside the old second one is that of one
 // rename() call, not that of a whole write.
-// `failed`, when given, gets the name of the file that could not be written.
+// A failure names the file that could not be written, as given.
 // With `replace` false (--no-clobber), none is written over an existing file.
-bool writeFilesAtomically(const std::vector<FileToWrite>& files, std::string& error,
-                          std::filesystem::path* failed = nullptr, bool replace = true);
+MaybeFailure writeFilesAtomically(const std::vector<FileToWrite>& files, bool replace = true);
 
 // Whether something is at `path` (a file, a folder, a link even to nothing),
 // which --no-clobber keeps.
@@ -107,15 +111,15 @@ inline constexpr const char* kNoClobberMessage = "the file exists, and --no-clob
 // long job (a render) to learn before it starts that its output has no
 // folder, a read-only one, or is a folder or a device. With `bytes` > 0,
 // also whether the file system has that much room left (for root, the
-// blocks kept for root count). False, with the reason in `error`.
-bool checkCanWrite(const std::filesystem::path& target, bool keepExtension, std::uint64_t bytes,
-                   std::string& error);
+// blocks kept for root count).
+MaybeFailure checkCanWrite(const std::filesystem::path& target, bool keepExtension,
+                           std::uint64_t bytes);
 
 // Why `path` cannot be read as a file: it does not exist, or it (the end of
 // its links) is a folder, a device, a pipe or a socket, which could never
 // end (/dev/zero) or block (a pipe) a reader; nothing when it is a regular
 // file. The rule of every file a tool reads by a name it was given, as the
 // glTF reader's for a buffer's file.
-std::optional<std::string> regularFileProblem(const std::filesystem::path& path);
+MaybeFailure regularFileProblem(const std::filesystem::path& path);
 
 }  // namespace tools

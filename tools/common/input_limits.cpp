@@ -81,7 +81,12 @@ InputText readInputText(const std::string& file, const scene::ReadOptions& optio
         return input;
       }
     }
-    text = readWholeFile(file, input.readError, options.maxFileSize);
+    Outcome<std::string> read = readWholeFile(file, options.maxFileSize);
+    if (!read) {
+      input.readError = read.failure().message;
+      return input;
+    }
+    text = std::move(*read);
   }
   if (!text) return input;
   // Not a regular file, or one that grew: its whole size is unknown.

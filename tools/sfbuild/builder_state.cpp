@@ -474,9 +474,8 @@ std::optional<std::string> saveScene(BuilderState& state, const FileSystem& file
     state.lastSave = "could not save " + name + ": the scene holds a value that is not finite";
     return {};
   }
-  std::string error;
-  if (!files.write(name, *text, error)) {
-    state.lastSave = "could not save " + name + ": " + error;
+  if (tools::MaybeFailure failure = files.write(name, *text)) {
+    state.lastSave = "could not save " + name + ": " + failure->message;
     return {};
   }
   state.nextSaveNumber = n + 1;

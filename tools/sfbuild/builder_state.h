@@ -14,6 +14,7 @@
 
 #include "renderer/render_settings.h"
 #include "scenefile/scene.h"
+#include "tools/common/tool_failure.h"
 #include "tools/sfbuild/scene_history.h"
 
 namespace sfbuild {
@@ -107,13 +108,12 @@ BuilderState initialState(int width, int height);
 BuilderState stateForScene(scene::Scene scene, int width, int height);
 
 // What a saving key press asks of the outside world: whether a file exists,
-// and writing one (false and a reason on failure).
+// and writing one. A failure's message is the reason alone (file_io.h).
 struct FileSystem {
   std::function<bool(const std::string&)> exists;
-  std::function<bool(const std::string& name, const std::string& content, std::string& error)>
-      write;
-  // The file's bytes, or nothing and the reason in `error` (Ctrl+O).
-  std::function<std::optional<std::string>(const std::string& name, std::string& error)> read;
+  std::function<tools::MaybeFailure(const std::string& name, const std::string& content)> write;
+  // The file's bytes (Ctrl+O).
+  std::function<tools::Outcome<std::string>(const std::string& name)> read;
 };
 
 // Each of these records what it changed in the history.

@@ -24,14 +24,13 @@ struct FakeFiles {
   std::map<std::string, std::string> files;
   FileSystem fs() {
     return {[this](const std::string& n) { return files.count(n) != 0; },
-            [this](const std::string& n, const std::string& c, std::string&) {
+            [this](const std::string& n, const std::string& c) -> tools::MaybeFailure {
               files[n] = c;
-              return true;
+              return std::nullopt;
             },
-            [this](const std::string& n, std::string& error) -> std::optional<std::string> {
+            [this](const std::string& n) -> tools::Outcome<std::string> {
               if (files.count(n) == 0) {
-                error = "no such file";
-                return std::nullopt;
+                return tools::fileFailure(tools::ExitCode::IoError, n, "no such file");
               }
               return files[n];
             }};

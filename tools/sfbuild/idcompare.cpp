@@ -51,11 +51,10 @@ int main(int argc, char** argv) {
   }
   int edge = argc > 3 ? std::stoi(argv[3]) : 2;
   double maxFraction = argc > 4 ? std::stod(argv[4]) : 0.001;
-  std::string error;
-  auto text = tools::readWholeFile(argv[1], error);
+  tools::Outcome<std::string> text = tools::readWholeFile(argv[1]);
   if (!text) {
-    std::cerr << error << "\n";
-    return 3;
+    std::cerr << text.failure().message << "\n";
+    return tools::toInt(text.failure().code);
   }
   scene::ReadResult result = scene::parseScene(*text, argv[1]);
   if (!result.ok()) {

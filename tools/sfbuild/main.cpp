@@ -331,12 +331,10 @@ int main(int argc, char** argv) {
     std::error_code ec;
     return std::filesystem::exists(name, ec) || std::filesystem::is_symlink(name, ec);
   };
-  app.files.write = [](const std::string& name, const std::string& content, std::string& error) {
-    return tools::writeFileAtomically(name, content, error);
+  app.files.write = [](const std::string& name, const std::string& content) {
+    return tools::writeFileAtomically(name, content);
   };
-  app.files.read = [](const std::string& name, std::string& error) {
-    return tools::readWholeFile(name, error);
-  };
+  app.files.read = [](const std::string& name) { return tools::readWholeFile(name); };
   app.output = &output;
 
   GLFWwindow* window = openWindow(options, output);

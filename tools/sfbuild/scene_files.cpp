@@ -57,9 +57,8 @@ bool saveSceneAs(BuilderState& state, const std::string& name, const FileSystem&
     state.lastSave = "could not save " + name + ": the scene holds a value that is not finite";
     return false;
   }
-  std::string error;
-  if (!files.write(name, *text, error)) {
-    state.lastSave = "could not save " + name + ": " + error;
+  if (tools::MaybeFailure failure = files.write(name, *text)) {
+    state.lastSave = "could not save " + name + ": " + failure->message;
     return false;
   }
   state.currentFile = name;
@@ -68,10 +67,9 @@ bool saveSceneAs(BuilderState& state, const std::string& name, const FileSystem&
 }
 
 bool openSceneFile(BuilderState& state, const std::string& name, const FileSystem& files) {
-  std::string error;
-  std::optional<std::string> text = files.read(name, error);
+  tools::Outcome<std::string> text = files.read(name);
   if (!text) {
-    state.lastSave = "could not open " + name + ": " + error;
+    state.lastSave = "could not open " + name + ": " + text.failure().message;
     return false;
   }
   scene::ReadResult result = scene::parseScene(*text, name);

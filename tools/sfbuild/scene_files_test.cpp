@@ -17,15 +17,14 @@ struct FakeFiles {
   std::map<std::string, std::string> files;
   FileSystem fs() {
     return {[this](const std::string& n) { return files.count(n) != 0; },
-            [this](const std::string& n, const std::string& c, std::string&) {
+            [this](const std::string& n, const std::string& c) -> tools::MaybeFailure {
               files[n] = c;
-              return true;
+              return std::nullopt;
             },
-            [this](const std::string& n, std::string& error) -> std::optional<std::string> {
+            [this](const std::string& n) -> tools::Outcome<std::string> {
               auto found = files.find(n);
               if (found == files.end()) {
-                error = "no such file";
-                return std::nullopt;
+                return tools::fileFailure(tools::ExitCode::IoError, n, "no such file");
               }
               return found->second;
             }};

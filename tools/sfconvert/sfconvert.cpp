@@ -264,13 +264,10 @@ MaybeFailure Converter::write(const scene::ConvertedFiles& converted, const scen
   std::vector<FileToWrite> files;
   if (!converted.sidecar.empty()) files.push_back({plan_.bufferPath, converted.sidecar});
   files.push_back({o_.output, converted.main});
-  std::string writeError;
-  std::filesystem::path failed;
-  if (!writeFilesAtomically(files, writeError, &failed, !o_.noClobber)) {
-    ToolFailure failure =
-        fileFailure(ExitCode::IoError, failed.string(), "cannot write the file: " + writeError);
+  if (MaybeFailure failure = writeFilesAtomically(files, !o_.noClobber)) {
+    failure->message = "cannot write the file: " + failure->message;
     if (namesStandardOutput(o_.output)) {
-      failure.hint = "sfconvert writes regular files; name the output - for standard output";
+      failure->hint = "sfconvert writes regular files; name the output - for standard output";
     }
     return failure;
   }

@@ -312,12 +312,11 @@ MaybeFailure RenderJob::targetRefusal() {
   if (o_.noClobber && pathExists(target)) {
     return fileFailure(ExitCode::IoError, target.string(), kNoClobberMessage);
   }
-  std::string error;
-  if (!checkCanWrite(
+  if (MaybeFailure failure = checkCanWrite(
           target, false,
-          image::ppmFileSize(imageWidth(settings_), imageHeight(settings_), target, o_.image),
-          error)) {
-    return fileFailure(ExitCode::IoError, target.string(), "cannot write the image: " + error);
+          image::ppmFileSize(imageWidth(settings_), imageHeight(settings_), target, o_.image))) {
+    return fileFailure(failure->code, target.string(),
+                       "cannot write the image: " + failure->message);
   }
   return std::nullopt;
 }
