@@ -23,34 +23,37 @@ bool climbs(const std::filesystem::path& folder) {
   return std::any_of(folder.begin(), folder.end(), [](const auto& part) { return part == ".."; });
 }
 
-// The value of `placeholder` for `input`, or nothing with why in `error`.
+// A pattern or a set of inputs the command line cannot have.
+ToolFailure usageFailure(std::string message) {
+  return toolFailure(ExitCode::Usage, std::move(message));
+}
+
+// The value of `placeholder` for `input`.
 // `leading`: the placeholder begins the pattern, which has no fixed folder.
-std::optional<std::string> placeholderValue(const std::string& placeholder,
-                                            const std::string& input, bool leading,
-                                            std::string& error) {
+Outcome<std::string> placeholderValue(const std::string& placeholder, const std::string& input,
+                                      bool leading) {
   if (isStandardStream(input)) {
-    error = "-o: standard input has no name to put in " + placeholder +
-            "; name the output without a placeholder";
-    return std::nullopt;
+    return usageFailure("-o: standard input has no name to put in " + placeholder +
+                        "; name the output without a placeholder");
   }
   std::filesystem::path path(input);
   if (placeholder == "{dir}") {
     std::filesystem::path folder = path.parent_path();
     if (!leading && climbs(folder)) {
-      error = "-o: {dir} of '" + printableText(input) + "' is '" + printableText(folder.string()) +
-              "': after the pattern's own folder, {dir} may not hold '..', which could climb out "
-              "of it; start the pattern with {dir} to write beside the input";
-      return std::nullopt;
+      return usageFailure(
+          "-o: {dir} of '" + printableText(input) + "' is '" + printableText(folder.string()) +
+          "': after the pattern's own folder, {dir} may not hold '..', which could climb out "
+          "of it; start the pattern with {dir} to write beside the input");
     }
-    return folder.empty() ? "." : folder.string();
+    return folder.empty() ? std::string(".") : folder.string();
   }
   std::string value = placeholder == "{stem}" ? path.stem().string() : path.filename().string();
   if (!isFileName(value)) {
-    error = "-o: " + placeholder + " of '" + printableText(input) + "' would be '" +
-            printableText(value) +
-            "', which is no file name (a placeholder never expands to nothing, '.' or '..'); "
-            "rename the input or use another placeholder";
-    return std::nullopt;
+    return usageFailure(
+        "-o: " + placeholder + " of '" + printableText(input) + "' would be '" +
+        printableText(value) +
+        "', which is no file name (a placeholder never expands to nothing, '.' or '..'); "
+        "rename the input or use another placeholder");
   }
   return value;
 }
@@ -64,8 +67,7 @@ bool hasPlaceholder(const std::string& pattern) {
   return false;
 }
 
-std::optional<std::string> expandOutputPattern(const std::string& pattern, const std::string& input,
-                                               std::string& error) {
+Outcome<std::string> expandOutputPattern(const std::string& pattern, const std::string& input) {
   std::string out;
   std::size_t at = 0;
   while (at < pattern.size()) {
@@ -77,42 +79,41 @@ std::optional<std::string> expandOutputPattern(const std::string& pattern, const
     bool known = false;
     for (const char* name : kPlaceholders) known = known || placeholder == name;
     if (!known) {
-      error =
-          "-o: '" + printableText(placeholder) + "' is no placeholder; use {stem}, {name} or {dir}";
-      return std::nullopt;
+      return usageFailure("-o: '" + printableText(placeholder) +
+                          "' is no placeholder; use {stem}, {name} or {dir}");
     }
-    std::optional<std::string> value = placeholderValue(placeholder, input, open == 0, error);
-    if (!value) return std::nullopt;
+    Outcome<std::string> value = placeholderValue(placeholder, input, open == 0);
+    if (!value) return value;
     out += pattern.substr(at, open - at) + *value;
     at = close + 1;
   }
   return out + pattern.substr(std::min(at, pattern.size()));
 }
 
-std::optional<std::string> batchInputsRefusal(const std::vector<std::string>& inputs) {
+MaybeFailure batchInputsRefusal(const std::vector<std::string>& inputs) {
   if (inputs.size() > 1 && std::any_of(inputs.begin(), inputs.end(), isStandardStream)) {
-    return "standard input (-) cannot be one of several inputs";
+    return usageFailure("standard input (-) cannot be one of several inputs");
   }
   return std::nullopt;
 }
 
-std::optional<std::vector<std::string>> batchOutputs(const std::string& pattern,
-                                                     const std::vector<std::string>& inputs,
-                                                     std::string& error) {
-  if (std::optional<std::string> refusal = batchInputsRefusal(inputs)) {
-    error = *refusal;
-    return std::nullopt;
+Outcome<std::vector<std::string>> batchOutputs(const std::string& pattern,
+                                               const std::vector<std::string>& inputs) {
+  if (MaybeFailure refusal = batchInputsRefusal(inputs)) return *refusal;
+  if (!inputs.empty()) {
+    if (MaybeFailure failure = expandOutputPattern(pattern, inputs.front()).maybeFailure()) {
+      return *failure;
+    }
   }
-  if (!inputs.empty() && !expandOutputPattern(pattern, inputs.front(), error)) return std::nullopt;
   if (inputs.size() > 1 && !hasPlaceholder(pattern)) {
-    error = "-o '" + printableText(pattern) + "' names one file for " +
-            std::to_string(inputs.size()) + " inputs; give a pattern such as 'out/{stem}.png'";
-    return std::nullopt;
+    return usageFailure("-o '" + printableText(pattern) + "' names one file for " +
+                        std::to_string(inputs.size()) +
+                        " inputs; give a pattern such as 'out/{stem}.png'");
   }
   std::vector<std::string> outputs;
   for (const std::string& input : inputs) {
-    std::optional<std::string> output = expandOutputPattern(pattern, input, error);
-    if (!output) return std::nullopt;
+    Outcome<std::string> output = expandOutputPattern(pattern, input);
+    if (!output) return output.failure();
     outputs.push_back(*output);
   }
   return outputs;

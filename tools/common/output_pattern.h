@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "tools/common/tool_failure.h"
+
 namespace tools {
 
 // Whether `pattern` holds a placeholder ({stem}, {name} or {dir}).
@@ -21,22 +23,20 @@ bool hasPlaceholder(const std::string& pattern);
 
 // The output of `input` under `pattern`: {stem} is the input's file name
 // without its extension (the last one), {name} its file name, {dir} its
-// folder ("." for none). Nothing, with why in `error`, for a placeholder
-// that is none of those, or one the rule above refuses for this input.
-std::optional<std::string> expandOutputPattern(const std::string& pattern, const std::string& input,
-                                               std::string& error);
+// folder ("." for none). A usage failure for a placeholder that is none of
+// those, or one the rule above refuses for this input.
+Outcome<std::string> expandOutputPattern(const std::string& pattern, const std::string& input);
 
-// Why `inputs` cannot make a batch (standard input among several), if so.
-std::optional<std::string> batchInputsRefusal(const std::vector<std::string>& inputs);
+// A usage failure when `inputs` cannot make a batch (standard input among
+// several).
+MaybeFailure batchInputsRefusal(const std::vector<std::string>& inputs);
 
-// The output of each input under `pattern`, or nothing with why in `error`
-// (a sentence for "TOOL: error: "): several inputs and no placeholder,
-// standard input among several, an unknown placeholder, or one that the rule
-// refuses. Whether two outputs are one file, or an output an input, is
-// output_plan.h's to tell.
-std::optional<std::vector<std::string>> batchOutputs(const std::string& pattern,
-                                                     const std::vector<std::string>& inputs,
-                                                     std::string& error);
+// The output of each input under `pattern`, or a usage failure: several
+// inputs and no placeholder, standard input among several, an unknown
+// placeholder, or one that the rule refuses. Whether two outputs are one
+// file, or an output an input, is output_plan.h's to tell.
+Outcome<std::vector<std::string>> batchOutputs(const std::string& pattern,
+                                               const std::vector<std::string>& inputs);
 
 // The last line of a batch: "sfrender: 18 of 20 scenes rendered, 2 failed".
 std::string batchSummary(const std::string& tool, int succeeded, int total,

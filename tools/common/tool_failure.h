@@ -60,6 +60,10 @@ class Outcome {
   const ToolFailure& failure() const { return std::get<1>(result_); }
   // Nothing when ok(): for a step that passes a failure on.
   MaybeFailure maybeFailure() const { return ok() ? MaybeFailure() : MaybeFailure(failure()); }
+  // Whether it holds `value`.
+  friend bool operator==(const Outcome& outcome, const T& value) {
+    return outcome.ok() && *outcome == value;
+  }
 
  private:
   std::variant<T, ToolFailure> result_;

@@ -316,10 +316,8 @@ MaybeFailure runCommand(SfconvertOptions& options, ToolOutput& output, Stage& st
     options.output = options.files[1];
     return Converter(options, output, stage).run();
   }
-  std::string error;
-  std::optional<std::vector<std::string>> outputs =
-      batchOutputs(options.outputPattern, options.files, error);
-  if (!outputs) return toolFailure(ExitCode::Usage, error);
+  Outcome<std::vector<std::string>> outputs = batchOutputs(options.outputPattern, options.files);
+  if (!outputs) return outputs.failure();
   // Every file the batch writes, buffers included, checked together (one
   // input is checked as `sfconvert IN OUT` is, by its conversion).
   OutputPlan plan;

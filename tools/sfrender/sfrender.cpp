@@ -535,13 +535,12 @@ MaybeFailure mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& s
 // render (output_plan.h), into `targets`; a usage error when the batch
 // cannot go ahead.
 MaybeFailure batchTargets(const SfrenderOptions& o, std::vector<std::optional<fs::path>>& targets) {
-  std::string error;
   if (!o.output.empty()) {
-    std::optional<std::vector<std::string>> expanded = batchOutputs(o.output, o.inputs, error);
-    if (!expanded) return toolFailure(ExitCode::Usage, error);
+    Outcome<std::vector<std::string>> expanded = batchOutputs(o.output, o.inputs);
+    if (!expanded) return expanded.failure();
     targets.assign(expanded->begin(), expanded->end());
-  } else if (std::optional<std::string> refusal = batchInputsRefusal(o.inputs)) {
-    return toolFailure(ExitCode::Usage, *refusal);
+  } else if (MaybeFailure refusal = batchInputsRefusal(o.inputs)) {
+    return refusal;
   } else {
     scene::ReadOptions read = o.read;
     read.threads = static_cast<unsigned>(renderThreadCount(o.settings.threads));
@@ -606,9 +605,8 @@ MaybeFailure runCommand(SfrenderOptions& options, ToolOutput& output,
   if (!options.input.empty() && hasPlaceholder(options.output)) {
     // One scene of a batch (a Slurm task's slice may hold one): the pattern
     // names its image, and no summary follows.
-    std::string error;
-    std::optional<std::string> named = expandOutputPattern(options.output, options.input, error);
-    if (!named) return toolFailure(ExitCode::Usage, error);
+    Outcome<std::string> named = expandOutputPattern(options.output, options.input);
+    if (!named) return named.failure();
     options.output = *named;
   }
   return RenderJob(options, output, availableMemory, stage).run();
