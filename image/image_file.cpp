@@ -16,6 +16,7 @@
 #include "image/oiio_module.h"
 #include "image/png_file.h"
 #include "tools/common/file_io.h"
+#include "tools/common/printable_text.h"
 
 namespace image {
 
@@ -360,8 +361,10 @@ std::vector<ImageFormat> writableImageFormats() {
   return writableFormats().formats;
 }
 
-std::optional<std::string> imageRefusal(const std::filesystem::path& path,
-                                        const ImageOptions& options) {
+tools::MaybeFailure imageRefusal(const std::filesystem::path& path, const ImageOptions& options) {
+  auto refused = [](const std::string& message) {
+    return tools::toolFailure(tools::ExitCode::Usage, tools::printableText(message));
+  };
   // .ppm and .png need no module, unless to list the formats that take
   // --alpha or --bits in a refusal.
   if (std::optional<ImageFormat> own = ownFormat(path)) {
@@ -370,15 +373,15 @@ std::optional<std::string> imageRefusal(const std::filesystem::path& path,
   Writable w = writableFormats();
   const ImageFormat* format = findImageFormat(w.formats, path);
   if (!format) {
-    return "cannot write images named '" + path.string() + "': " +
-           (w.oiio ? "use " + imageExtensionsOf(w.formats)
-                   : w.moduleError + "; .ppm and .png need no module");
+    return refused("cannot write images named '" + path.string() + "': " +
+                   (w.oiio ? "use " + imageExtensionsOf(w.formats)
+                           : w.moduleError + "; .ppm and .png need no module"));
   }
   if (std::optional<std::string> refusal = imageOptionsRefusal(w.formats, *format, options)) {
-    return "cannot write '" + path.string() + "' with " +
-           (options.alpha && !format->alpha ? "--alpha"
-                                            : "--bits " + std::to_string(options.bits)) +
-           ": " + *refusal;
+    return refused(
+        "cannot write '" + path.string() + "' with " +
+        (options.alpha && !format->alpha ? "--alpha" : "--bits " + std::to_string(options.bits)) +
+        ": " + *refusal);
   }
   return std::nullopt;
 }

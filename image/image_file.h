@@ -26,13 +26,13 @@ std::vector<ImageFormat> writableImageFormats();
 // every other through OpenImageIO (whose module must load and take it).
 bool canWriteImage(const std::filesystem::path& path);
 
-// Why an image cannot be written to `path` as `options` ask, as a sentence
-// for "sfrender: error: ": an extension no writer takes (with the list of
-// those that do), OpenImageIO's module that could not be loaded (from where
-// and why; .ppm needs none), or a --bits or --alpha the format cannot hold;
-// nothing when it can.
-std::optional<std::string> imageRefusal(const std::filesystem::path& path,
-                                        const ImageOptions& options = {});
+// A usage failure when an image cannot be written to `path` as `options`
+// ask: an extension no writer takes (with the list of those that do),
+// OpenImageIO's module that could not be loaded (from where and why; .ppm
+// needs none), or a --bits or --alpha the format cannot hold; nothing when
+// it can.
+tools::MaybeFailure imageRefusal(const std::filesystem::path& path,
+                                 const ImageOptions& options = {});
 
 // The render that the image at `path` needs: the coverage for --alpha, and
 // for a 16-bit integer image, retracing to its levels (and a tolerance of

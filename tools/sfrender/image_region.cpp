@@ -70,20 +70,24 @@ CLI::Validator tileOption() {
       "", "tile");
 }
 
-std::optional<std::string> regionRefusal(const render::PixelRegion& region, int width, int height) {
-  if (region.empty()) return regionText(region) + " is empty";
+MaybeFailure regionRefusal(const render::PixelRegion& region, int width, int height) {
+  if (region.empty())
+    return toolFailure(ExitCode::Usage, "--region: " + regionText(region) + " is empty");
   if (region.x0 < 0 || region.y0 < 0 || region.x1 > width || region.y1 > height) {
-    return regionText(region) + " reaches outside the image of " + std::to_string(width) + "x" +
-           std::to_string(height) + " pixels (x1 at most " + std::to_string(width) +
-           ", y1 at most " + std::to_string(height) + ")";
+    return toolFailure(ExitCode::Usage, "--region: " + regionText(region) +
+                                            " reaches outside the image of " +
+                                            std::to_string(width) + "x" + std::to_string(height) +
+                                            " pixels (x1 at most " + std::to_string(width) +
+                                            ", y1 at most " + std::to_string(height) + ")");
   }
   return std::nullopt;
 }
 
-std::optional<std::string> tileRefusal(const TileChoice& tile, int height) {
+MaybeFailure tileRefusal(const TileChoice& tile, int height) {
   if (tile.count > height) {
-    return std::to_string(tile.count) + " tiles of whole rows do not fit an image " +
-           std::to_string(height) + " rows high";
+    return toolFailure(ExitCode::Usage, "--tile: " + std::to_string(tile.count) +
+                                            " tiles of whole rows do not fit an image " +
+                                            std::to_string(height) + " rows high");
   }
   return std::nullopt;
 }

@@ -7,6 +7,7 @@
 
 #include "renderer/image.h"
 #include "tools/common/cli_forward.h"
+#include "tools/common/tool_failure.h"
 
 namespace tools {
 
@@ -28,11 +29,12 @@ CLI::Validator regionOption();
 // --tile's check: i/N with N at least 1 and 0 <= i < N.
 CLI::Validator tileOption();
 
-// Why `region` does not lie within a `width` x `height` image, or nothing.
-std::optional<std::string> regionRefusal(const render::PixelRegion& region, int width, int height);
+// A usage failure when --region's `region` does not lie within a `width` x
+// `height` image.
+MaybeFailure regionRefusal(const render::PixelRegion& region, int width, int height);
 
-// The region of tile `tile` of a `width` x `height` image (render::imageTile:
-// horizontal bands), or why there is none: more bands than rows.
-std::optional<std::string> tileRefusal(const TileChoice& tile, int height);
+// A usage failure when --tile's `tile` of an image `height` rows high has no
+// region (render::imageTile: horizontal bands): more bands than rows.
+MaybeFailure tileRefusal(const TileChoice& tile, int height);
 
 }  // namespace tools

@@ -36,6 +36,11 @@ TEST(ImageRegion, RefusesWhatLeavesTheImage) {
   EXPECT_TRUE(regionRefusal({-1, 0, 5, 5}, 640, 480));
   EXPECT_FALSE(tileRefusal({0, 480}, 480));
   EXPECT_TRUE(tileRefusal({0, 481}, 480));
+  MaybeFailure outside = regionRefusal({0, 0, 641, 480}, 640, 480);
+  ASSERT_TRUE(outside);
+  EXPECT_EQ(outside->code, ExitCode::Usage);
+  EXPECT_EQ(outside->message.rfind("--region: ", 0), 0u) << outside->message;
+  EXPECT_EQ(tileRefusal({0, 481}, 480)->code, ExitCode::Usage);
 }
 
 TEST(ImageRegion, TheOptionsChecksSayWhatIsWrong) {

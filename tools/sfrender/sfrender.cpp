@@ -306,9 +306,7 @@ MaybeFailure RenderJob::targetRefusal() {
                            "image would now go to '" + printableText(target.string()) + "'",
                        "run the batch again");
   }
-  if (std::optional<std::string> refusal = image::imageRefusal(target, o_.image)) {
-    return toolFailure(ExitCode::Usage, printableText(*refusal));
-  }
+  if (MaybeFailure refusal = image::imageRefusal(target, o_.image)) return refusal;
   if (o_.noClobber && pathExists(target)) {
     return fileFailure(ExitCode::IoError, target.string(), kNoClobberMessage);
   }
@@ -339,11 +337,7 @@ MaybeFailure RenderJob::resourceRefusal() {
   }
   int threads = renderThreadCount(settings_.threads);
   stage_.set("starting " + std::to_string(threads) + " threads");
-  if (std::optional<std::string> failure = threadStartFailure(threads)) {
-    return toolFailure(ExitCode::OutOfResources, "cannot start " + std::to_string(threads) +
-                                                     " threads: " + *failure +
-                                                     "; ask for fewer with --threads");
-  }
+  if (MaybeFailure failure = threadStartFailure(threads)) return failure;
   output_.detail(
       "rendering " + std::to_string(settings_.width) + "x" + std::to_string(settings_.height) +
       " at a vertical field of view of " + std::to_string(settings_.verticalFovDegrees) +
@@ -357,15 +351,12 @@ MaybeFailure RenderJob::resourceRefusal() {
 MaybeFailure RenderJob::chooseRegion() {
   if (!o_.region.empty()) {
     settings_.region = parseRegion(o_.region).value_or(render::PixelRegion{});
-    if (std::optional<std::string> refusal =
-            regionRefusal(settings_.region, settings_.width, settings_.height)) {
-      return toolFailure(ExitCode::Usage, "--region: " + *refusal);
+    if (MaybeFailure refusal = regionRefusal(settings_.region, settings_.width, settings_.height)) {
+      return refusal;
     }
   } else if (!o_.tile.empty()) {
     TileChoice tile = parseTile(o_.tile).value_or(TileChoice{});
-    if (std::optional<std::string> refusal = tileRefusal(tile, settings_.height)) {
-      return toolFailure(ExitCode::Usage, "--tile: " + *refusal);
-    }
+    if (MaybeFailure refusal = tileRefusal(tile, settings_.height)) return refusal;
     settings_.region = render::imageTile(settings_.width, settings_.height, tile.index, tile.count);
   }
   return std::nullopt;
@@ -497,9 +488,7 @@ MaybeFailure mergeRegions(const SfrenderOptions& o, ToolOutput& output, Stage& s
     return toolFailure(ExitCode::Usage,
                        "--merge puts RGB regions together; --alpha is for a render");
   }
-  if (std::optional<std::string> refusal = image::imageRefusal(o.output, o.image)) {
-    return toolFailure(ExitCode::Usage, printableText(*refusal));
-  }
+  if (MaybeFailure refusal = image::imageRefusal(o.output, o.image)) return refusal;
   OutputPlan plan;
   for (const std::string& input : o.inputs) plan.addInput(input);
   plan.addOutput(o.output, {});

@@ -15,7 +15,7 @@ int renderThreadCount(int requested) {
   return render::resolveThreads(requested);
 }
 
-std::optional<std::string> threadStartFailure(int threads) {
+MaybeFailure threadStartFailure(int threads) {
   std::mutex mutex;
   std::condition_variable released;
   bool go = false;
@@ -43,9 +43,11 @@ std::optional<std::string> threadStartFailure(int threads) {
   }
   released.notify_all();
   for (std::thread& t : pool) t.join();
-  if (noMemory) return "out of memory";
-  if (failure) return failure.message();
-  return std::nullopt;
+  if (!noMemory && !failure) return std::nullopt;
+  return toolFailure(ExitCode::OutOfResources,
+                     "cannot start " + std::to_string(threads) +
+                         " threads: " + (noMemory ? "out of memory" : failure.message()) +
+                         "; ask for fewer with --threads");
 }
 
 }  // namespace tools

@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "tools/common/tool_failure.h"
+
 namespace tools {
 
 // The threads a render with --threads `requested` uses: that many, or for 0
@@ -16,8 +18,8 @@ int renderThreadCount(int requested);
 
 // Starts `threads` - 1 threads (the calling thread is the last), waits
 // until all have started, and ends them. Nothing when all started; else
-// the reason the first that could not start gave ("Resource temporarily
-// unavailable").
-std::optional<std::string> threadStartFailure(int threads);
+// a failure for want of resources, with the reason the first that could not
+// start gave ("Resource temporarily unavailable").
+MaybeFailure threadStartFailure(int threads);
 
 }  // namespace tools
