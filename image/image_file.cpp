@@ -22,6 +22,12 @@ namespace image {
 
 namespace {
 
+// A step of writing an image that failed, with the reason alone;
+// writeImageFile says which file and what it was doing.
+tools::ToolFailure cannotWrite(std::string why) {
+  return tools::toolFailure(tools::ExitCode::IoError, std::move(why));
+}
+
 // The functions of the OpenImageIO module (oiio_module.h).
 struct OiioModule {
   SfrenderOiioFormats formats = nullptr;
@@ -224,8 +230,8 @@ std::string ppmBytes(const render::Image& image, int bits) {
   return bytes;
 }
 
-std::string pngBytes(const render::Image& image, const ImageOptions& options, int bits,
-                     std::string& error) {
+tools::Outcome<std::string> pngBytes(const render::Image& image, const ImageOptions& options,
+                                     int bits) {
   PngLevels levels;
   levels.width = image.width;
   levels.height = image.height;
@@ -242,7 +248,7 @@ std::string pngBytes(const render::Image& image, const ImageOptions& options, in
     bytes = displayBytes(image, options);
     levels.bytes = bytes.data();
   }
-  return pngFileBytes(levels, error);
+  return pngFileBytes(levels);
 }
 
 // Zeros past the last pixel, a row and 64 bytes of them, before the values
@@ -257,9 +263,9 @@ void padForWriters(std::vector<Value>& values, std::size_t rowValues) {
 // Writes through the module, as `format` stores the image, into `encoded`
 // (memory_file.h): OpenImageIO's writers pick the format by `path`'s
 // extension.
-bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const ImageFormat& format,
-                      const ImageOptions& options, const std::filesystem::path& path,
-                      MemoryFile& encoded, std::string& error) {
+tools::MaybeFailure writeThroughOiio(const OiioModule& oiio, const render::Image& image,
+                                     const ImageFormat& format, const ImageOptions& options,
+                                     const std::filesystem::path& path, MemoryFile& encoded) {
   int bits = storedBits(format, options);
   SfrenderImageData data{image.width,
                          image.height,
@@ -296,12 +302,11 @@ bool writeThroughOiio(const OiioModule& oiio, const render::Image& image, const 
     data.pixels = bytes.data();
   }
   char message[512] = "";
-  if (!encoded.create(error)) return false;
+  if (tools::MaybeFailure failure = encoded.create()) return failure;
   if (!oiio.write(path.c_str(), &data, encoded.descriptor(), message, sizeof message)) {
-    error = message;
-    return false;
+    return cannotWrite(message);
   }
-  return true;
+  return std::nullopt;
 }
 
 // Why a region read back cannot be merged within `maxPixels`, as a sentence
@@ -430,27 +435,25 @@ std::string ppmImageBytes(const render::Image& image, const ImageOptions& option
 
 namespace {
 
-// writeImageFile's steps, false with why in `error`.
-bool writeImageBytes(const render::Image& image, const std::filesystem::path& path,
-                     std::string& error, const ImageOptions& options, bool replace) {
+// writeImageFile's steps; a failure's message is the reason alone.
+tools::MaybeFailure writeImageBytes(const render::Image& image, const std::filesystem::path& path,
+                                    const ImageOptions& options, bool replace) {
   if (options.alpha &&
       image.coverage.size() != static_cast<std::size_t>(image.width) * image.height) {
-    error = "the render has no coverage for --alpha";
-    return false;
+    return cannotWrite("the render has no coverage for --alpha");
   }
   std::optional<ImageFormat> own = ownFormat(path);
   Writable w;
   if (!own) w = writableFormats();
   const ImageFormat* format = own ? &*own : findImageFormat(w.formats, path);
   if (!format) {
-    error = w.oiio ? "no image format for the extension '" + path.extension().string() + "'"
-                   : w.moduleError;
-    return false;
+    return cannotWrite(w.oiio
+                           ? "no image format for the extension '" + path.extension().string() + "'"
+                           : w.moduleError);
   }
   if (std::optional<std::string> refusal =
           imageOptionsRefusal(own ? std::vector<ImageFormat>{*own} : w.formats, *format, options)) {
-    error = *refusal;
-    return false;
+    return cannotWrite(*refusal);
   }
   int bits = storedBits(*format, options);
   // The file's bytes are made first, in memory, and only then is the
@@ -459,36 +462,43 @@ bool writeImageBytes(const render::Image& image, const std::filesystem::path& pa
   // exit() can leave a temporary or a part of an image behind.
   std::string ownBytes;
   MemoryFile encoded;
-  std::optional<std::string_view> bytes;
+  std::string_view bytes;
   if (own) {
-    ownBytes = isPng(path) ? pngBytes(image, options, bits, error) : ppmBytes(image, bits);
-    if (ownBytes.empty()) return false;
+    if (isPng(path)) {
+      tools::Outcome<std::string> png = pngBytes(image, options, bits);
+      if (!png) return png.failure();
+      ownBytes = std::move(*png);
+    } else {
+      ownBytes = ppmBytes(image, bits);
+    }
     bytes = ownBytes;
   } else {
-    if (!writeThroughOiio(*w.oiio, image, *format, options, path, encoded, error)) return false;
-    bytes = encoded.bytes(error);
-    if (!bytes) return false;
-    if (bytes->empty()) {
-      error = "OpenImageIO's " + format->name + " writer wrote nothing";
-      return false;
+    if (tools::MaybeFailure failure =
+            writeThroughOiio(*w.oiio, image, *format, options, path, encoded)) {
+      return failure;
     }
+    tools::Outcome<std::string_view> written = encoded.bytes();
+    if (!written) return written.failure();
+    if (written->empty()) {
+      return cannotWrite("OpenImageIO's " + format->name + " writer wrote nothing");
+    }
+    bytes = *written;
   }
   tools::StagedFile file;
   tools::MaybeFailure failure = file.open(path, false);
-  if (!failure) failure = file.write(*bytes);
+  if (!failure) failure = file.write(bytes);
   if (!failure) failure = file.commit(replace);
-  if (failure) error = failure->message;
-  return !failure;
+  return failure;
 }
 
 }  // namespace
 
 tools::MaybeFailure writeImageFile(const render::Image& image, const std::filesystem::path& path,
                                    const ImageOptions& options, bool replace) {
-  std::string error;
-  if (writeImageBytes(image, path, error, options, replace)) return std::nullopt;
-  return tools::fileFailure(tools::ExitCode::IoError, path.string(),
-                            "cannot write the image: " + error);
+  tools::MaybeFailure failure = writeImageBytes(image, path, options, replace);
+  if (!failure) return std::nullopt;
+  return tools::fileFailure(failure->code, path.string(),
+                            "cannot write the image: " + failure->message);
 }
 
 tools::Outcome<ImageRegionFile> readImageRegion(const std::filesystem::path& path,

@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "tools/common/tool_failure.h"
+
 namespace image {
 
 // A file made by memfd_create, which a library opens by its name
@@ -20,14 +22,14 @@ class MemoryFile {
   MemoryFile& operator=(const MemoryFile&) = delete;
   ~MemoryFile();
 
-  // Makes the file; false with the reason in `error`.
-  bool create(std::string& error);
+  // Makes the file. A failure is a write's (ExitCode::IoError).
+  tools::MaybeFailure create();
   int descriptor() const { return fd_; }
   // The name a library opens it by.
   std::string name() const;
-  // Everything written to it, mapped (valid while the MemoryFile lives);
-  // nothing, with the reason in `error`, when it cannot be mapped.
-  std::optional<std::string_view> bytes(std::string& error);
+  // Everything written to it, mapped (valid while the MemoryFile lives), or
+  // why it cannot be mapped.
+  tools::Outcome<std::string_view> bytes();
 
  private:
   int fd_ = -1;

@@ -79,7 +79,7 @@ bool writePng(const PngLevels& levels, png_bytep* rows, PngSink& sink) {
 
 }  // namespace
 
-std::string pngFileBytes(const PngLevels& levels, std::string& error) {
+tools::Outcome<std::string> pngFileBytes(const PngLevels& levels) {
   std::string bytes;
   std::size_t rowLevels = static_cast<std::size_t>(levels.width) * levels.channels;
   std::vector<png_bytep> rows(static_cast<std::size_t>(levels.height));
@@ -92,8 +92,8 @@ std::string pngFileBytes(const PngLevels& levels, std::string& error) {
   PngSink sink;
   sink.bytes = &bytes;
   if (!writePng(levels, rows.data(), sink)) {
-    error = sink.message[0] ? sink.message : "libpng failed";
-    return {};
+    return tools::toolFailure(tools::ExitCode::IoError,
+                              sink.message[0] ? sink.message : "libpng failed");
   }
   return bytes;
 }

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <string>
 
+#include "tools/common/tool_failure.h"
+
 namespace image {
 
 // The levels of an image in the order PNG stores them: rows from the top,
@@ -29,7 +31,7 @@ struct PngLevels {
 
 // The bytes of a PNG file of `levels`, tagged sRGB (the sRGB chunk, with
 // gAMA and cHRM for readers that know no sRGB: the PNG specification's
-// advice), or an empty string and the reason in `error`.
-std::string pngFileBytes(const PngLevels& levels, std::string& error);
+// advice), or libpng's reason it could not (ExitCode::IoError, as a write's).
+tools::Outcome<std::string> pngFileBytes(const PngLevels& levels);
 
 }  // namespace image
