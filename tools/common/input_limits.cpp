@@ -20,8 +20,7 @@ namespace tools {
 namespace {
 
 // Standard input up to one byte past `maxBytes`, as readWholeFile reads a file.
-std::optional<std::string> readStream(std::istream& in, std::string& error,
-                                      std::uint64_t maxBytes) {
+Outcome<std::string> readStream(std::istream& in, std::uint64_t maxBytes) {
   std::string text;
   char chunk[1 << 16];
   int readError = 0;
@@ -37,8 +36,8 @@ std::optional<std::string> readStream(std::istream& in, std::string& error,
   // a failing disk, EIO) for the end of the input: the C stream under it
   // keeps the error, which an empty input would otherwise hide.
   if (in.bad() || (&in == &std::cin && std::ferror(stdin))) {
-    error = readError != 0 ? std::strerror(readError) : "the read failed";
-    return std::nullopt;
+    return fileFailure(ExitCode::IoError, kStandardInputName,
+                       readError != 0 ? std::strerror(readError) : "the read failed");
   }
   return text;
 }
@@ -71,29 +70,24 @@ InputText readInputText(const std::string& file, const scene::ReadOptions& optio
                         std::istream* standardInput) {
   InputText input{
       std::nullopt, {}, scene::DiagnosticList(inputDisplayName(file), options.errorLimit)};
-  std::optional<std::string> text;
-  if (isStandardStream(file) && standardInput) {
-    text = readStream(*standardInput, input.readError, options.maxFileSize);
-  } else {
-    struct stat info {};
-    if (::stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode)) {
-      if (!scene::checkFileSize(static_cast<std::uint64_t>(info.st_size), options, input.refused)) {
-        return input;
-      }
-    }
-    Outcome<std::string> read = readWholeFile(file, options.maxFileSize);
-    if (!read) {
-      input.readError = read.failure().message;
+  bool fromStream = isStandardStream(file) && standardInput;
+  struct stat info {};
+  if (!fromStream && ::stat(file.c_str(), &info) == 0 && S_ISREG(info.st_mode)) {
+    if (!scene::checkFileSize(static_cast<std::uint64_t>(info.st_size), options, input.refused)) {
       return input;
     }
-    text = std::move(*read);
   }
-  if (!text) return input;
+  Outcome<std::string> text = fromStream ? readStream(*standardInput, options.maxFileSize)
+                                         : readWholeFile(file, options.maxFileSize);
+  if (!text) {
+    input.readError = text.failure().message;
+    return input;
+  }
   // Not a regular file, or one that grew: its whole size is unknown.
   if (!scene::checkFileSize(text->size(), options, input.refused, "the input", false)) {
     return input;
   }
-  input.text = std::move(text);
+  input.text = std::move(*text);
   return input;
 }
 

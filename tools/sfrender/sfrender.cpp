@@ -50,24 +50,30 @@ std::string withThousands(std::uint64_t n) {
   return digits;
 }
 
-// The setting above its limit, named with the flag that raises it, if any.
-std::optional<std::string> settingOverLimit(const render::RenderSettings& settings,
-                                            const RenderLimits& limits) {
+// A usage failure for the setting above its limit, named with the flag that
+// raises it, if any; `where` follows the sentence.
+MaybeFailure settingOverLimit(const render::RenderSettings& settings, const RenderLimits& limits,
+                              const std::string& where = {}) {
+  auto over = [&](const std::string& message) {
+    return toolFailure(ExitCode::Usage, message + where);
+  };
   std::int64_t pixels = std::int64_t{settings.width} * settings.height;
   if (pixels > limits.maxPixels) {
-    return "--width " + std::to_string(settings.width) + " and --height " +
-           std::to_string(settings.height) + " make " +
-           withThousands(static_cast<std::uint64_t>(pixels)) + " pixels, more than the limit of " +
-           withThousands(static_cast<std::uint64_t>(limits.maxPixels)) +
-           "; raise it with --max-pixels";
+    return over("--width " + std::to_string(settings.width) + " and --height " +
+                std::to_string(settings.height) + " make " +
+                withThousands(static_cast<std::uint64_t>(pixels)) +
+                " pixels, more than the limit of " +
+                withThousands(static_cast<std::uint64_t>(limits.maxPixels)) +
+                "; raise it with --max-pixels");
   }
   if (settings.samplesPerPixel > limits.maxSpp) {
-    return "--spp " + std::to_string(settings.samplesPerPixel) + " is more than the limit of " +
-           std::to_string(limits.maxSpp) + " samples per pixel; raise it with --max-spp";
+    return over("--spp " + std::to_string(settings.samplesPerPixel) +
+                " is more than the limit of " + std::to_string(limits.maxSpp) +
+                " samples per pixel; raise it with --max-spp");
   }
   if (settings.maxDepth > limits.maxDepth) {
-    return "--depth " + std::to_string(settings.maxDepth) + " is more than the limit of " +
-           std::to_string(limits.maxDepth) + " bounces; raise it with --max-depth";
+    return over("--depth " + std::to_string(settings.maxDepth) + " is more than the limit of " +
+                std::to_string(limits.maxDepth) + " bounces; raise it with --max-depth");
   }
   return std::nullopt;
 }
@@ -407,9 +413,7 @@ MaybeFailure RenderJob::run() {
   settings_.width = o_.width.value_or(settings_.width);
   settings_.height = o_.height.value_or(settings_.height);
   settings_.verticalFovDegrees = o_.fov.value_or(settings_.verticalFovDegrees);
-  if (std::optional<std::string> overLimit = settingOverLimit(settings_, o_.limits)) {
-    return toolFailure(ExitCode::Usage, *overLimit);
-  }
+  if (MaybeFailure overLimit = settingOverLimit(settings_, o_.limits)) return overLimit;
   // A usage error, told before the scene is read and compiled.
   if (settings_.device == render::RenderDevice::Gpu && render::samplesAdaptively(settings_)) {
     return toolFailure(ExitCode::Usage,
@@ -423,8 +427,9 @@ MaybeFailure RenderJob::run() {
   if (MaybeFailure failure = readScene()) return failure;
   output_.step("reading");
   applySceneView(job_.scene, o_, settings_);
-  if (std::optional<std::string> overLimit = settingOverLimit(settings_, o_.limits)) {
-    return toolFailure(ExitCode::Usage, *overLimit + " (at the scene's aspect ratio)");
+  if (MaybeFailure overLimit =
+          settingOverLimit(settings_, o_.limits, " (at the scene's aspect ratio)")) {
+    return overLimit;
   }
   if (MaybeFailure failure = chooseRegion()) return failure;
   chooseTarget();
