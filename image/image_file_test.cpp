@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "image/read_back_test_support.h"
 #include "tools/common/file_io.h"
 #include "tools/tool_test_support.h"
 
@@ -43,28 +44,6 @@ render::Image testImage(int width = 24, int height = 10) {
     }
   }
   return image;
-}
-
-struct ReadBack {
-  OIIO::ImageSpec spec;
-  std::vector<float> pixels;  // as stored, scaled to [0, 1] for integers
-};
-
-// The file's pixels as it stores them: alpha left straight where it is.
-ReadBack readBack(const fs::path& file) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string(), &config);
-  ReadBack r;
-  if (!in) {
-    ADD_FAILURE() << file << ": " << OIIO::geterror();
-    return r;
-  }
-  r.spec = in->spec();
-  r.pixels.resize(r.spec.image_pixels() * r.spec.nchannels);
-  EXPECT_TRUE(in->read_image(0, 0, 0, r.spec.nchannels, OIIO::TypeDesc::FLOAT, r.pixels.data()))
-      << in->geterror();
-  return r;
 }
 
 class ImageFileTest : public ::testing::Test {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "image/image_file.h"
+#include "image/read_back_test_support.h"
 #include "tools/common/exit_code.h"
 #include "tools/common/file_io.h"
 #include "tools/tool_test_support.h"
@@ -19,28 +20,6 @@ namespace tools {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct ReadBack {
-  OIIO::ImageSpec spec;
-  std::vector<float> pixels;  // as stored, scaled to [0, 1] for integers
-};
-
-// The file's pixels as it stores them: alpha left straight where it is.
-ReadBack readBack(const fs::path& file) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string(), &config);
-  ReadBack r;
-  if (!in) {
-    ADD_FAILURE() << file << ": " << OIIO::geterror();
-    return r;
-  }
-  r.spec = in->spec();
-  r.pixels.resize(r.spec.image_pixels() * r.spec.nchannels);
-  EXPECT_TRUE(in->read_image(0, 0, 0, r.spec.nchannels, OIIO::TypeDesc::FLOAT, r.pixels.data()))
-      << in->geterror();
-  return r;
-}
 
 class ImageFileTest : public ::testing::Test {
  protected:
@@ -134,7 +113,7 @@ TEST_F(ImageFileTest, AlphaIsTheCoverageOfEachPixel) {
                         "--spp", "16", "--alpha", "--quiet"}),
               0)
         << err_.str();
-    ReadBack r = readBack(dir_ / name);
+    image::ReadBack r = image::readBack(dir_ / name);
     ASSERT_EQ(r.spec.nchannels, 4);
     for (int j = 0; j < 5; ++j) {
       for (int i = 0; i < 9; ++i) {
