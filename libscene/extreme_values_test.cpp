@@ -266,7 +266,7 @@ TEST(ExtremeValues, RandomScenesAtTheLimitsOfTheDoublesSurviveEveryWriter) {
   EXPECT_GE(limitNumbers["-0"], 500);
 }
 
-// The camera of issue 12: an eye near the largest double. The LOOK_AT
+// A camera whose eye is near the largest double. The LOOK_AT
 // distance used to be 2^1024, an infinity in the file.
 TEST(ExtremeValues, AnEyeNearTheLargestDoubleGetsAFiniteLookAt) {
   for (double eye : {kLargest, -kLargest, kLargest / 1.5, std::ldexp(1.0, 1023)}) {

@@ -190,7 +190,7 @@ TEST(LookAtFromCamera, MeasuresRoll) {
   EXPECT_NEAR(lookAtFromCamera(rolled).roll, -roll, 1e-14);
 }
 
-// The eye of issue 12, near the largest double: the distance used to be
+// An eye near the largest double: the distance used to be
 // 2^ceil(log2(1.8e308)) = 2^1024, an infinity.
 TEST(LookAtFromCamera, AnEyeNearTheLargestDoubleGetsAFiniteLookAt) {
   constexpr double kLargest = std::numeric_limits<double>::max();
