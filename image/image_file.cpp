@@ -177,11 +177,11 @@ std::vector<Level> displayLevels(const render::Image& image, const ImageOptions&
 }
 
 // displayLevels of an 8-bit file: without alpha, the image's values in one
-// vector loop (quantizeChannels).
+// vector loop (render::eightBitLevels).
 std::vector<unsigned char> displayBytes(const render::Image& image, const ImageOptions& options) {
-  if (options.alpha) return displayLevels<unsigned char>(image, options, quantizeChannel);
+  if (options.alpha) return displayLevels<unsigned char>(image, options, render::eightBitLevel);
   std::vector<unsigned char> bytes(image.rgb.size());
-  quantizeChannels(image.rgb.data(), image.rgb.size(), bytes.data());
+  render::eightBitLevels(image.rgb.data(), image.rgb.size(), bytes.data());
   return bytes;
 }
 
@@ -216,7 +216,8 @@ std::string ppmBytes(const render::Image& image, int bits) {
   std::string bytes = header;
   if (bits == 16) {
     // Most significant byte first (Netpbm).
-    std::vector<std::uint16_t> levels = displayLevels<std::uint16_t>(image, {}, quantizeChannel16);
+    std::vector<std::uint16_t> levels =
+        displayLevels<std::uint16_t>(image, {}, render::sixteenBitLevel);
     bytes.resize(header.size() + 2 * levels.size());
     for (std::size_t i = 0; i < levels.size(); ++i) {
       bytes[header.size() + 2 * i] = static_cast<char>(levels[i] >> 8);
@@ -225,8 +226,8 @@ std::string ppmBytes(const render::Image& image, int bits) {
     return bytes;
   }
   bytes.resize(header.size() + image.rgb.size());
-  quantizeChannels(image.rgb.data(), image.rgb.size(),
-                   reinterpret_cast<unsigned char*>(bytes.data() + header.size()));
+  render::eightBitLevels(image.rgb.data(), image.rgb.size(),
+                         reinterpret_cast<unsigned char*>(bytes.data() + header.size()));
   return bytes;
 }
 
@@ -242,7 +243,7 @@ tools::Outcome<std::string> pngBytes(const render::Image& image, const ImageOpti
   std::vector<unsigned char> bytes;
   std::vector<std::uint16_t> words;
   if (bits == 16) {
-    words = displayLevels<std::uint16_t>(image, options, quantizeChannel16);
+    words = displayLevels<std::uint16_t>(image, options, render::sixteenBitLevel);
     levels.words = words.data();
   } else {
     bytes = displayBytes(image, options);
@@ -293,7 +294,7 @@ tools::MaybeFailure writeThroughOiio(const OiioModule& oiio, const render::Image
     data.straightAlpha = 0;
   } else if (bits == 16) {
     data.pixelType = kSfrenderUint16;
-    words = displayLevels<std::uint16_t>(image, options, quantizeChannel16);
+    words = displayLevels<std::uint16_t>(image, options, render::sixteenBitLevel);
     padForWriters(words, rowValues);
     data.pixels = words.data();
   } else {

@@ -11,7 +11,6 @@
 
 #include "image/image_formats.h"
 #include "image/oiio_module.h"
-#include "image/quantize.h"
 #include "renderer/image.h"
 #include "renderer/render_settings.h"
 #include "tools/common/tool_failure.h"

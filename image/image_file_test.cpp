@@ -84,15 +84,6 @@ TEST(ImageFile, SrgbDecodingIsTheStandardsExtendedPastOne) {
   EXPECT_EQ(srgbToLinear(-std::numeric_limits<float>::infinity()), -kLargest);
 }
 
-TEST(ImageFile, Quantizes16BitsToTheNearestLevel) {
-  EXPECT_EQ(quantizeChannel16(0.0f), 0);
-  EXPECT_EQ(quantizeChannel16(-2.0f), 0);
-  EXPECT_EQ(quantizeChannel16(1.0f), 65535);
-  EXPECT_EQ(quantizeChannel16(3.0f), 65535);
-  EXPECT_EQ(quantizeChannel16(0.5f), 32768);   // 32767.5 rounds up
-  EXPECT_EQ(quantizeChannel16(0.25f), 16384);  // 16383.75
-}
-
 // The expected stored value of channel c of pixel p: a display level, or a
 // linear value; straight colour with alpha in integer files, premultiplied
 // in floating-point ones.
@@ -103,7 +94,8 @@ float expected(const render::Image& image, std::size_t p, int c, bool alpha, int
   float v = image.rgb[3 * p + c];
   float straight = a > 0.0f ? v / a : 0.0f;
   if (linear) return a * srgbToLinear(alpha ? straight : v);
-  return bits == 16 ? quantizeChannel16(straight) / 65535.0f : quantizeChannel(straight) / 255.0f;
+  return bits == 16 ? render::sixteenBitLevel(straight) / 65535.0f
+                    : render::eightBitLevel(straight) / 255.0f;
 }
 
 TEST_F(ImageFileTest, IntegerImagesHoldTheLevelsOfTheDisplayValues) {
@@ -123,8 +115,8 @@ TEST_F(ImageFileTest, IntegerImagesHoldTheLevelsOfTheDisplayValues) {
           for (int c = 0; c < r.spec.nchannels; ++c) {
             float want = expected(image, p, c, alpha, bits, false);
             if (c == 3)
-              want = (bits == 16 ? quantizeChannel16(want) / 65535.0f
-                                 : quantizeChannel(want) / 255.0f);
+              want = (bits == 16 ? render::sixteenBitLevel(want) / 65535.0f
+                                 : render::eightBitLevel(want) / 255.0f);
             // Within a small part of a 16-bit level of the level expected.
             ASSERT_NEAR(r.pixels[r.spec.nchannels * p + c], want, 1e-6)
                 << name << " " << p << "." << c;
@@ -297,7 +289,7 @@ TEST_F(ImageFileTest, SixteenBitPpmIsNetpbms) {
   for (std::size_t i = 0; i < image.rgb.size(); ++i) {
     auto byte = [&](std::size_t k) { return static_cast<unsigned char>((*bytes)[k]); };
     std::size_t at = header.size() + 2 * i;
-    ASSERT_EQ(byte(at) << 8 | byte(at + 1), quantizeChannel16(image.rgb[i])) << i;
+    ASSERT_EQ(byte(at) << 8 | byte(at + 1), render::sixteenBitLevel(image.rgb[i])) << i;
   }
 }
 
@@ -406,7 +398,7 @@ TEST(ImageFile, HandWrittenPpmMatchesOpenImageIO) {
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
   in->close();
   for (std::size_t i = 0; i < pixels.size(); ++i) {
-    ASSERT_EQ(pixels[i], quantizeChannel(image.rgb[i])) << i;
+    ASSERT_EQ(pixels[i], render::eightBitLevel(image.rgb[i])) << i;
   }
   fs::remove_all(dir);
 }

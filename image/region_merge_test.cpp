@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 // sfrender's default --max-pixels.
 constexpr std::int64_t kLimit = std::int64_t{8192} * 8192;
 
-// The smallest float whose level (quantize) is `level`.
+// The smallest float whose level (`quantize`) is `level`.
 template <typename Quantize>
 float firstOfLevel(int level, Quantize quantize) {
   float low = 0.0f, high = 1.0f;
@@ -48,17 +48,18 @@ float firstOfLevel(int level, Quantize quantize) {
 TEST(DisplayFromLinear, FewLevelBoundariesDecodeTogether) {
   int together8 = 0, together16 = 0;
   for (int level = 1; level <= 255; ++level) {
-    float first = firstOfLevel(level, quantizeChannel);
+    float first = firstOfLevel(level, render::eightBitLevel);
     float below = std::nextafter(first, 0.0f);
     bool together = srgbToLinear(below) == srgbToLinear(first);
     together8 += together ? 1 : 0;
     ASSERT_LT(srgbToLinear(std::nextafter(below, 0.0f)), srgbToLinear(first)) << level;
-    EXPECT_EQ(quantizeChannel(displayFromLinear(srgbToLinear(first))),
+    EXPECT_EQ(render::eightBitLevel(displayFromLinear(srgbToLinear(first))),
               together ? level - 1 : level);
-    EXPECT_EQ(quantizeChannel(displayFromLinear(srgbToLinear(std::nextafter(first, 1.0f)))), level);
+    EXPECT_EQ(render::eightBitLevel(displayFromLinear(srgbToLinear(std::nextafter(first, 1.0f)))),
+              level);
   }
   for (int level = 1; level <= 65535; ++level) {
-    float first = firstOfLevel(level, quantizeChannel16);
+    float first = firstOfLevel(level, render::sixteenBitLevel);
     if (srgbToLinear(std::nextafter(first, 0.0f)) == srgbToLinear(first)) ++together16;
   }
   std::cout << "boundaries where two floats decode together: " << together8 << " of 255 (8 bits), "
@@ -74,8 +75,8 @@ TEST(DisplayFromLinear, GivesBackTheLinearValueAndTheLevels) {
     float linear = srgbToLinear(display);
     float back = displayFromLinear(linear);
     ASSERT_EQ(srgbToLinear(back), linear) << display;
-    ASSERT_EQ(quantizeChannel(back), quantizeChannel(display)) << display;
-    ASSERT_EQ(quantizeChannel16(back), quantizeChannel16(display)) << display;
+    ASSERT_EQ(render::eightBitLevel(back), render::eightBitLevel(display)) << display;
+    ASSERT_EQ(render::sixteenBitLevel(back), render::sixteenBitLevel(display)) << display;
   }
   EXPECT_EQ(displayFromLinear(0.0f), 0.0f);
   EXPECT_EQ(displayFromLinear(std::numeric_limits<float>::quiet_NaN()), 0.0f);

@@ -88,6 +88,11 @@ void eightBitLevels(const float* values, std::size_t count, unsigned char* level
 // (RenderSettings::levels) and what the image writers store.
 long levelOf(float v, double levels);
 
+// The 16-bit level of a display value: levelOf(v, 65535).
+inline std::uint16_t sixteenBitLevel(float v) {
+  return static_cast<std::uint16_t>(levelOf(v, 65535.0));
+}
+
 // The linear value of a display value, what a float image file (EXR, HDR)
 // stores: sRGB's decoding (scene::srgbToLinear), extended past [0, 1] as in
 // scRGB (IEC 61966-2-2) and extended sRGB: the power segment goes on above

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -43,13 +44,67 @@ TEST(ImageLevels, LevelOfRoundsHalvesUpAndEightBitLevelsAgree) {
   EXPECT_EQ(levelOf(std::numeric_limits<float>::quiet_NaN(), 255.0), 0);
 }
 
-// The vector loop gives each value eightBitLevel's level, in runs of 1 to
-// 38 values so that its tails are exercised, through a stride of all 2^32
-// bit patterns (negatives, infinities and NaNs among them).
-TEST(ImageLevels, EightBitLevelsInBulkAsOneByOne) {
+TEST(ImageLevels, QuantizesToTheNearestLevelWithoutGamma) {
+  EXPECT_EQ(eightBitLevel(0.0f), 0);
+  EXPECT_EQ(eightBitLevel(-3.0f), 0);
+  EXPECT_EQ(eightBitLevel(1.0f), 255);
+  EXPECT_EQ(eightBitLevel(7.0f), 255);
+  EXPECT_EQ(eightBitLevel(0.5f), 128);  // 127.5 rounds up
+  EXPECT_EQ(eightBitLevel(0.25f), 64);  // 63.75
+  EXPECT_EQ(eightBitLevel(0.2f), 51);
+  EXPECT_EQ(eightBitLevel(std::numeric_limits<float>::quiet_NaN()), 0);
+}
+
+TEST(ImageLevels, Quantizes16BitsToTheNearestLevel) {
+  EXPECT_EQ(sixteenBitLevel(0.0f), 0);
+  EXPECT_EQ(sixteenBitLevel(-2.0f), 0);
+  EXPECT_EQ(sixteenBitLevel(1.0f), 65535);
+  EXPECT_EQ(sixteenBitLevel(3.0f), 65535);
+  EXPECT_EQ(sixteenBitLevel(0.5f), 32768);   // 32767.5 rounds up
+  EXPECT_EQ(sixteenBitLevel(0.25f), 16384);  // 16383.75
+}
+
+// eightBitLevel rounds inline as std::lround rounds the same float product:
+// every level's halfway point and its float neighbours, and a stride
+// through all the floats of [0, 1].
+TEST(ImageLevels, QuantizesAsLroundDoes) {
+  auto byLround = [](float v) {
+    return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+  };
+  for (int level = 0; level < 255; ++level) {
+    float half = (static_cast<float>(level) + 0.5f) / 255.0f;
+    float v = half;
+    for (int step = 0; step < 8; ++step) v = std::nextafter(v, 0.0f);
+    for (int step = 0; step < 16; ++step, v = std::nextafter(v, 2.0f)) {
+      ASSERT_EQ(eightBitLevel(v), byLround(v)) << v;
+    }
+  }
+  for (std::uint32_t bits = 0; bits <= 0x3F800000u; bits += 997) {
+    float v = std::bit_cast<float>(bits);
+    ASSERT_EQ(eightBitLevel(v), byLround(v)) << v;
+  }
+}
+
+// The vector loop gives each value the level that rounding in double gives,
+// and eightBitLevel's: every level's halfway point and its float
+// neighbours, and a stride through all 2^32 bit patterns (negatives,
+// infinities and NaNs among them), in runs of 1 to 38 values, so that its
+// tails are exercised too.
+TEST(ImageLevels, QuantizesInBulkAsOneByOne) {
   std::vector<float> values;
-  for (std::uint64_t bits = 0; bits <= 0xFFFFFFFFu; bits += 65521) {
+  for (int level = 0; level < 256; ++level) {
+    float v = (static_cast<float>(level) + 0.5f) / 255.0f;
+    for (int step = 0; step < 8; ++step) v = std::nextafter(v, 0.0f);
+    for (int step = 0; step < 16; ++step, v = std::nextafter(v, 2.0f)) values.push_back(v);
+  }
+  for (std::uint64_t bits = 0; bits <= 0xFFFFFFFFu; bits += 4099) {
     values.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(bits)));
+  }
+  for (float special :
+       {0.0f, -0.0f, 1.0f, std::numeric_limits<float>::infinity(),
+        -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+        std::numeric_limits<float>::denorm_min(), 0.5f / 255.0f}) {
+    values.push_back(special);
   }
   std::vector<unsigned char> levels(values.size(), 0xAB);
   for (std::size_t first = 0, run = 1; first < values.size(); first += run, run = run % 37 + 2) {
@@ -58,6 +113,7 @@ TEST(ImageLevels, EightBitLevelsInBulkAsOneByOne) {
   }
   for (std::size_t i = 0; i < values.size(); ++i) {
     ASSERT_EQ(levels[i], levelInDouble(values[i], 255.0)) << values[i];
+    ASSERT_EQ(eightBitLevel(values[i]), levels[i]) << values[i];
   }
 }
 

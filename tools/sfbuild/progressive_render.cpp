@@ -4,7 +4,7 @@
 #include <exception>
 #include <utility>
 
-#include "image/quantize.h"
+#include "renderer/image.h"
 
 namespace sfbuild {
 
@@ -100,7 +100,7 @@ void ProgressiveRender::renderJob(const Job& job) {
       frame.width = image.width;
       frame.height = image.height;
       frame.rgb.resize(image.rgb.size());
-      image::quantizeChannels(image.rgb.data(), image.rgb.size(), frame.rgb.data());
+      render::eightBitLevels(image.rgb.data(), image.rgb.size(), frame.rgb.data());
       frame.level = static_cast<int>(i);
       frame.levelCount = static_cast<int>(levels_.size());
       frame.settings = level;

@@ -8,7 +8,6 @@
 #include <iostream>
 #include <thread>
 
-#include "image/quantize.h"
 #include "renderer/default_scene.h"
 
 namespace sfbuild {
@@ -67,7 +66,7 @@ TEST(ProgressiveRender, FinishesWithTheImageSfrenderWrites) {
   ASSERT_EQ(last.rgb.size(), image.rgb.size());
   std::size_t lit = 0;
   for (std::size_t i = 0; i < image.rgb.size(); ++i) {
-    ASSERT_EQ(last.rgb[i], image::quantizeChannel(image.rgb[i])) << "channel " << i;
+    ASSERT_EQ(last.rgb[i], render::eightBitLevel(image.rgb[i])) << "channel " << i;
     lit += last.rgb[i] > 0;
   }
   EXPECT_GT(lit, image.rgb.size() / 4);  // the default scene, not a black image
