@@ -58,6 +58,8 @@ packages=(
   # a CPU Vulkan driver with shaderFloat64, on which its tests run on every
   # machine; vulkaninfo shows what a machine offers.
   libvulkan-dev glslang-tools glslc mesa-vulkan-drivers vulkan-tools
+  # The language server's editor test runs Neovim headless against sfls.
+  neovim
 )
 # The glTF Validator runs on Node.js; a machine with node and npm already
 # (from Debian or elsewhere) keeps them.

@@ -8,10 +8,9 @@
 
 #include "scenefile/read.h"
 #include "tools/common/diagnostic_printer.h"
+#include "tools/common/document_check.h"
 #include "tools/common/input_limits.h"
 #include "tools/common/option_checks.h"
-#include "tools/common/output_file_format.h"
-#include "tools/common/output_location.h"
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
@@ -111,17 +110,12 @@ void Checker::check(const std::string& file) {
   }
   const std::string& text = *input.text;
   stage_.set("checking " + printableText(shown));
-  std::optional<scene::Format> detected = scene::detectFormat(text, shown);
-  scene::ReadResult result = scene::parseScene(text, shown, options_.read);
-  if (detected == scene::Format::InstructionFile) {
-    // Standard input's OUTPUT_FILE is taken in the current folder.
-    std::filesystem::path folder = isStandardStream(file)
-                                       ? std::filesystem::path()
-                                       : std::filesystem::path(file).parent_path();
-    scene::checkOutputLocation(result.scene, folder, scene::Severity::Warning, result.diagnostics);
-  }
-  // Whatever the format: sfrender writes the OUTPUT_FILE of each.
-  checkOutputFileFormat(result.scene, scene::Severity::Warning, result.diagnostics);
+  // Standard input's OUTPUT_FILE is taken in the current folder.
+  std::filesystem::path folder =
+      isStandardStream(file) ? std::filesystem::path() : std::filesystem::path(file).parent_path();
+  DocumentCheck checked = checkDocument(text, shown, folder, options_.read);
+  const std::optional<scene::Format>& detected = checked.format;
+  scene::ReadResult& result = checked.result;
   if (detected) {
     output_.detail(printableText(shown) + ": " + formatName(detected) + ", " +
                    sceneContents(result.scene));
