@@ -1,0 +1,26 @@
+// What the language server knows of one version of a document once it has
+// been checked: sfcheck's diagnostics, the scene read from it, its outline.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "scenefile/outline.h"
+#include "scenefile/read.h"
+
+namespace sfls {
+
+struct Analysis {
+  // The document version that was checked, and its text.
+  std::int64_t version = 0;
+  std::shared_ptr<const std::string> text;
+  // The format recognised from the content; nothing for text in none.
+  std::optional<scene::Format> format;
+  // The scene and exactly sfcheck's diagnostics (tools::checkDocument).
+  scene::ReadResult result;
+  scene::Outline outline;
+};
+
+}  // namespace sfls

@@ -1,0 +1,82 @@
+#include "tools/sfls/document.h"
+
+#include <gtest/gtest.h>
+
+namespace sfls {
+namespace {
+
+TEST(Document, IndexesLinesWithAnyEnding) {
+  Document document("file:///a.sf", 1, "one\r\ntwo\n\nthree");
+  EXPECT_EQ(document.lineCount(), 4u);
+  EXPECT_EQ(document.lineText(0), "one");
+  EXPECT_EQ(document.lineText(1), "two");
+  EXPECT_EQ(document.lineText(2), "");
+  EXPECT_EQ(document.lineText(3), "three");
+  EXPECT_EQ(document.lineOffset(3), 10u);
+  EXPECT_EQ(document.lineOffset(9), document.text().size());
+}
+
+TEST(Document, CountsUtf16UnitsOfEachCodePoint) {
+  // é is 2 bytes and 1 unit, 😀 4 bytes and 2 units.
+  Document document("file:///a.sf", 1, "é😀x\n");
+  EXPECT_EQ(document.toLsp(1, 1), (LspPosition{0, 0}));
+  EXPECT_EQ(document.toLsp(1, 3), (LspPosition{0, 1}));
+  EXPECT_EQ(document.toLsp(1, 7), (LspPosition{0, 3}));
+  EXPECT_EQ(document.toLsp(1, 8), (LspPosition{0, 4}));
+  EXPECT_EQ(document.toSource({0, 3}).column, 7u);
+  EXPECT_EQ(document.toSource({0, 4}).column, 8u);
+  // Inside the surrogate pair: the pair's start.
+  EXPECT_EQ(document.toSource({0, 2}).column, 3u);
+  // Past the line's end: its end.
+  EXPECT_EQ(document.toSource({0, 99}).column, 8u);
+}
+
+TEST(Document, CountsEachInvalidByteAsOneUnit) {
+  // A stray continuation byte, an overlong '/', a sequence cut short.
+  Document document("file:///a.sf", 1, "\x80\xC0\xAF\xE2\x82x");
+  EXPECT_EQ(document.toLsp(1, 7), (LspPosition{0, 6}));
+  EXPECT_EQ(document.toSource({0, 5}).column, 6u);
+}
+
+TEST(Document, MapsSpansAndUnknownSpans) {
+  Document document("file:///a.sf", 1, "SPHERE\n1 2 3\n");
+  EXPECT_EQ(document.toLsp(scene::SourceSpan{2, 3, 1}), (LspRange{{1, 2}, {1, 3}}));
+  EXPECT_EQ(document.toLsp(scene::SourceSpan{2, 6, 0}), (LspRange{{1, 5}, {1, 5}}));
+  EXPECT_EQ(document.toLsp(scene::SourceSpan{}), (LspRange{}));
+}
+
+TEST(Document, AppliesFullAndIncrementalChanges) {
+  Document document("file:///a.sf", 1, "abc\ndef\nghi\n");
+  document.applyChange(LspRange{{0, 1}, {1, 2}}, "X\nY\nZ");
+  EXPECT_EQ(document.text(), "aX\nY\nZf\nghi\n");
+  EXPECT_EQ(document.lineCount(), 5u);
+  EXPECT_EQ(document.lineText(2), "Zf");
+  EXPECT_EQ(document.lineText(3), "ghi");
+  document.applyChange(LspRange{{1, 0}, {3, 0}}, "");
+  EXPECT_EQ(document.text(), "aX\nghi\n");
+  EXPECT_EQ(document.lineCount(), 3u);
+  EXPECT_EQ(document.lineText(1), "ghi");
+  document.applyChange(std::nullopt, "whole");
+  EXPECT_EQ(document.text(), "whole");
+  EXPECT_EQ(document.lineCount(), 1u);
+}
+
+TEST(Document, ClampsRangesPastTheEnd) {
+  Document document("file:///a.sf", 1, "ab\ncd");
+  document.applyChange(LspRange{{1, 1}, {40, 3}}, "!\n");
+  EXPECT_EQ(document.text(), "ab\nc!\n");
+  EXPECT_EQ(document.lineCount(), 3u);
+  document.applyChange(LspRange{{9, 0}, {9, 0}}, "end");
+  EXPECT_EQ(document.text(), "ab\nc!\nend");
+}
+
+TEST(Document, LeavesASharedTextAsItWas) {
+  Document document("file:///a.sf", 1, "old");
+  std::shared_ptr<const std::string> shared = document.sharedText();
+  document.applyChange(LspRange{{0, 0}, {0, 3}}, "new");
+  EXPECT_EQ(*shared, "old");
+  EXPECT_EQ(document.text(), "new");
+}
+
+}  // namespace
+}  // namespace sfls
