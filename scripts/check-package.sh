@@ -6,7 +6,7 @@
 #
 # 1. installs the build (already built: `cmake --install`, nothing is
 #    rebuilt) to a temporary prefix, and checks its layout, the docs and
-#    the man pages' references to them included;
+#    the man pages' references to them and the editor packages included;
 # 2. builds examples/count-objects out of tree against that prefix alone:
 #    with find_package (CMAKE_PREFIX_PATH), shared and static, and with
 #    pkg-config (PKG_CONFIG_PATH), shared and --static;
@@ -99,6 +99,19 @@ for page in "$prefix"/share/man/man1/*.1; do
       fail "$(basename "$page") names $doc, which the install lacks"
   done
 done
+
+# The editor packages: Neovim's set-up, and the VS Code extension wherever
+# the build made it (it needs node and editors/vscode/node_modules).
+datadir=$(cache_value CMAKE_INSTALL_DATADIR)
+editors=${datadir:-share}/scenefile/editors
+for file in nvim/README.md nvim/ftdetect/scenefile.vim nvim/lua/scenefile/init.lua; do
+  [[ -e $prefix/$editors/$file ]] || fail "the install has no $editors/$file"
+done
+vsix=scenefile-$(cache_value CMAKE_PROJECT_VERSION).vsix
+if [[ -e $build/editors/$vsix ]]; then
+  cmp -s "$build/editors/$vsix" "$prefix/$editors/$vsix" ||
+    fail "the install has no $editors/$vsix as the build made it"
+fi
 
 # --- 2. and 3. Build the example each way, and run it ---------------------------
 valid_sf=$root/testdata/valid/all-primitives.sf

@@ -44,6 +44,8 @@ packages=(
   libimgui-dev
   # The hostile-input tests measure sfcheck's peak memory with GNU time.
   time
+  # The VS Code extension's test lists its .vsix with unzip.
+  unzip
   # The Slurm test (tests/slurm) starts a single-node cluster of its own
   # (munged, slurmctld, slurmd) to run scripts/slurm/ on.
   slurm-wlm munge
@@ -61,8 +63,9 @@ packages=(
   # The language server's editor test runs Neovim headless against sfls.
   neovim
 )
-# The glTF Validator runs on Node.js; a machine with node and npm already
-# (from Debian or elsewhere) keeps them.
+# The glTF Validator and the VS Code extension's build (tsc, vsce) run on
+# Node.js; a machine with node and npm already (from Debian or elsewhere)
+# keeps them.
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   packages+=(nodejs npm)
 fi
@@ -85,8 +88,22 @@ install_validator() {
   fi
 }
 
+# The VS Code extension's compiler, packager and grammar tests, pinned by
+# editors/vscode/package-lock.json (its .npmrc runs no install scripts).
+install_vscode_extension() {
+  local folder
+  folder="$(cd "$(dirname "$0")/.." && pwd)/editors/vscode"
+  if [ ! -x "$folder/node_modules/.bin/vsce" ] || [ ! -x "$folder/node_modules/.bin/tsc" ] ||
+     [ ! -x "$folder/node_modules/.bin/vscode-tmgrammar-snap" ] ||
+     [ ! -d "$folder/node_modules/vscode-languageclient" ]; then
+    echo "install-deps: npm ci in editors/vscode" >&2
+    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  fi
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   install_validator
+  install_vscode_extension
   exit 0
 fi
 
@@ -105,3 +122,4 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 install_validator
+install_vscode_extension
