@@ -37,11 +37,10 @@ void prefetchObject(const scene::Object& object) {
   }
 }
 
-}  // namespace
-
-std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
+// Half the size of a unit shape's box under `m` on each axis (none for a
+// plane); the box's centre is m[3].
+std::optional<glm::dvec3> shapeExtent(scene::ObjectKind kind, const glm::dmat4& m) {
   if (kind == scene::ObjectKind::Plane) return std::nullopt;
-  glm::dvec3 centre(m[3]);
   glm::dvec3 extent(0.0);
   for (int r = 0; r < 3; ++r) {
     double x = m[0][r];
@@ -61,9 +60,25 @@ std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
         break;
     }
   }
+  return extent;
+}
+
+}  // namespace
+
+std::optional<Bounds> shapeBounds(scene::ObjectKind kind, const glm::dmat4& m) {
+  std::optional<glm::dvec3> extent = shapeExtent(kind, m);
+  if (!extent) return std::nullopt;
+  glm::dvec3 centre(m[3]);
+  return Bounds{centre - *extent, centre + *extent};
+}
+
+std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
+  std::optional<glm::dvec3> extent = shapeExtent(kind, m);
+  if (!extent) return std::nullopt;
+  glm::dvec3 centre(m[3]);
   // Widen by the rounding of the bounds themselves.
-  glm::dvec3 slack = gamma(8) * (abs(centre) + extent);
-  return Bounds{centre - extent - slack, centre + extent + slack};
+  glm::dvec3 slack = gamma(8) * (abs(centre) + *extent);
+  return Bounds{centre - *extent - slack, centre + *extent + slack};
 }
 
 RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t lights) {

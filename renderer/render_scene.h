@@ -289,7 +289,11 @@ class RenderScene {
   MaterialMaxima materialMaxima_;
 };
 
-// World bounds of a unit shape under an object matrix (none for a plane).
+// The axis-aligned box of a unit shape under an object matrix, as the
+// matrix's numbers give it (none for a plane): what a user is shown.
+std::optional<Bounds> shapeBounds(scene::ObjectKind kind, const glm::dmat4& toWorld);
+// shapeBounds widened by its own rounding, so that it holds every point the
+// tracer can find on the shape.
 std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& toWorld);
 
 }  // namespace render
