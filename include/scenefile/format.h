@@ -3,6 +3,7 @@
 /// tools' format names and help texts, and the conversions all come.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -17,6 +18,8 @@ struct ReadOptions;
 struct ReadResult;
 struct ConversionOptions;
 struct ConvertedFiles;
+struct Outline;
+struct TextPlace;
 
 /// A file format of the suite (scenefile/formats.def lists them).
 enum class Format : std::uint8_t {
@@ -82,6 +85,13 @@ struct FormatInfo {
   /// numbers have been checked.
   std::optional<ConvertedFiles> (*write)(const Scene& scene, const ConversionOptions& options,
                                          DiagnosticList& out) = nullptr;
+  /// An editor's view of a line format's text (scenefile/outline.h,
+  /// scenefile/layout.h): outlineOf, placeAt and canonicalLayout with this
+  /// format. Null for a format with no lines to lay out (glTF, POV-Ray).
+  Outline (*outline)(std::string_view text) = nullptr;
+  TextPlace (*place)(std::string_view text, std::size_t lineStart, std::uint32_t line,
+                     std::uint32_t column) = nullptr;
+  std::optional<std::string> (*layout)(std::string_view text) = nullptr;
 };
 
 /// Every format, in the order of scenefile/formats.def.

@@ -2,10 +2,12 @@
 #include <string_view>
 
 #include "libscene/formats/format_rows.h"
+#include "libscene/formats/instruction/instruction_outline.h"
 #include "libscene/formats/instruction/instruction_reader.h"
 #include "libscene/formats/instruction/instruction_writer.h"
 #include "libscene/text/text_lines.h"
 #include "scenefile/convert.h"
+#include "scenefile/outline.h"
 
 namespace scene {
 namespace {
@@ -50,6 +52,8 @@ FormatInfo instructionFileFormat() {
   row.holds = {.materials = true, .transformLists = true, .outputFile = true};
   row.recognise = recogniseInstructionFile;
   row.read = readInstructionFileFormat;
+  row.outline = instructionFileOutline;
+  row.place = instructionFilePlace;
   row.write = writeInstructionFileFormat;
   return row;
 }

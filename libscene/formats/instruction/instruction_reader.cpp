@@ -613,6 +613,18 @@ class InstructionParser {
 
 }  // namespace
 
+std::span<const std::string_view> instructionBlockNames() { return kBlockNames; }
+
+std::span<const std::string_view> instructionLineKeywords() { return kLineKeywords; }
+
+std::vector<InstructionProperty> instructionProperties() {
+  std::vector<InstructionProperty> out;
+  for (const PropertyRule& rule : kProperties) {
+    out.push_back({rule.keyword, blockName(rule.block), rule.count});
+  }
+  return out;
+}
+
 ReadResult parseInstructionFile(std::string_view text, std::string fileName,
                                 const ReadOptions& options) {
   ReadResult result{Scene{}, DiagnosticList(std::move(fileName), options.errorLimit)};

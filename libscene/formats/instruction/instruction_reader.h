@@ -2,8 +2,10 @@
 // blocks with their MATERIAL and TRANSFORMATION sections.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scenefile/read.h"
 
@@ -14,5 +16,20 @@ namespace scene {
 // from the operations (composeTransform); the operations are kept too.
 ReadResult parseInstructionFile(std::string_view text, std::string fileName,
                                 const ReadOptions& options = {});
+
+// The block names: CAMERA, LIGHT, OBJECT, MATERIAL, TRANSFORMATION.
+std::span<const std::string_view> instructionBlockNames();
+
+// Every keyword a line may start with.
+std::span<const std::string_view> instructionLineKeywords();
+
+// A property: its keyword, the name of the block it belongs in and how many
+// numbers it takes.
+struct InstructionProperty {
+  std::string_view keyword;
+  std::string_view block;
+  int count = 0;
+};
+std::vector<InstructionProperty> instructionProperties();
 
 }  // namespace scene

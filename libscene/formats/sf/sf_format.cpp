@@ -2,11 +2,13 @@
 #include <string_view>
 
 #include "libscene/formats/format_rows.h"
+#include "libscene/formats/sf/sf_outline.h"
 #include "libscene/formats/sf/sf_reader.h"
 #include "libscene/formats/sf/sf_writer.h"
 #include "libscene/text/number.h"
 #include "libscene/text/text_lines.h"
 #include "scenefile/convert.h"
+#include "scenefile/outline.h"
 
 namespace scene {
 namespace {
@@ -75,6 +77,8 @@ FormatInfo sceneFileFormat() {
   row.startsWith = "a CAMERA record";
   row.recognise = recogniseSceneFile;
   row.read = readSceneFileFormat;
+  row.outline = sceneFileOutline;
+  row.place = sceneFilePlace;
   row.write = writeSceneFileFormat;
   return row;
 }
