@@ -330,6 +330,21 @@ MaybeFailure writeFileAtomically(const fs::path& path, std::string_view content)
   return writeFilesAtomically({FileToWrite{path, content}});
 }
 
+MaybeFailure replaceFileIfUnchanged(const fs::path& path, std::string_view expected,
+                                    std::string_view content) {
+  StagedFile staged;
+  MaybeFailure failure = staged.open(path, false);
+  if (!failure) failure = staged.write(content);
+  if (!failure) failure = staged.finish();
+  if (failure) return cannotWrite(path, failure->message);
+  // As late as it can be: between this read and the rename, a change is
+  // lost, as with any editor's save.
+  Outcome<std::string> now = readWholeFile(path, expected.size());
+  if (!now || *now != expected) return cannotWrite(path, kChangedSinceReadMessage);
+  if (MaybeFailure committed = staged.commit()) return cannotWrite(path, committed->message);
+  return std::nullopt;
+}
+
 MaybeFailure writeFilesAtomically(const std::vector<FileToWrite>& files, bool replace) {
   if (!replace) {
     // Refused before any is written, so that none of a set lands.

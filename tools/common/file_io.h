@@ -85,6 +85,18 @@ class StagedFile {
 // or the new one, never a part. On failure, no file is left over.
 MaybeFailure writeFileAtomically(const std::filesystem::path& path, std::string_view content);
 
+// Writes `content` over `path` as writeFileAtomically does, if the file
+// still holds `expected` (what was read from it) when the new file is ready
+// to take its name: a file an editor or another run changed meanwhile is
+// left as it is, and the write fails (sfcheck --fix). The file is compared
+// by its bytes, which also catches a change that keeps its size and time.
+MaybeFailure replaceFileIfUnchanged(const std::filesystem::path& path, std::string_view expected,
+                                    std::string_view content);
+
+// The message for a file that changed since it was read.
+inline constexpr const char* kChangedSinceReadMessage =
+    "the file changed since it was read, so it is left as it is";
+
 struct FileToWrite {
   std::filesystem::path path;
   std::string_view content;

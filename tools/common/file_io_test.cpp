@@ -75,5 +75,27 @@ TEST(FileIo, AFailureCarriesTheStatusOfAFileThatCannotBeReadOrWritten) {
   fs::remove_all(dir);
 }
 
+// A file that changed since it was read is left as it is, and the new
+// text goes nowhere: no temporary stays beside it.
+TEST(FileIo, ReplaceIfUnchangedRefusesAFileThatChanged) {
+  fs::path dir = fs::temp_directory_path() / ("sfunchanged-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  ASSERT_FALSE(writeFileAtomically(dir / "f", "as read"));
+  ASSERT_FALSE(replaceFileIfUnchanged(dir / "f", "as read", "fixed"));
+  EXPECT_EQ(*readWholeFile(dir / "f"), "fixed");
+  MaybeFailure refused = replaceFileIfUnchanged(dir / "f", "as read", "fixed again");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->code, ExitCode::IoError);
+  EXPECT_EQ(refused->message, kChangedSinceReadMessage);
+  EXPECT_EQ(*readWholeFile(dir / "f"), "fixed");
+  // Longer by a byte, or gone.
+  EXPECT_TRUE(replaceFileIfUnchanged(dir / "f", "fixe", "x"));
+  fs::remove(dir / "f");
+  EXPECT_TRUE(replaceFileIfUnchanged(dir / "f", "fixed", "x"));
+  EXPECT_FALSE(fs::exists(dir / "f"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 0);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tools

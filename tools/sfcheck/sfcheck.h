@@ -18,6 +18,8 @@ struct SfcheckOptions {
   std::vector<std::string> files;
   bool werror = false;
   std::string format = "text";
+  bool fix = false;     // --fix: every fix-it applied, in place
+  bool dryRun = false;  // --dry-run: with --fix, the fixes printed as a diff instead
   scene::ReadOptions read;
 };
 

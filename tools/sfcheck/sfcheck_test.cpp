@@ -3,7 +3,9 @@
 #include "tools/sfcheck/sfcheck.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -140,6 +142,97 @@ TEST_F(ToolTest, SfcheckCountsAnUnreadableFileAsAnError) {
   EXPECT_EQ(report["summary"]["errors"], 2);
   EXPECT_EQ(report["summary"]["unreadable"], 2);
   EXPECT_EQ(report["files"][1]["readError"], "it is a directory");
+}
+
+// Two keywords in lower case, each with its fix-it, in a file that is
+// valid once they are fixed.
+const std::string kLowerCaseKeywords =
+    "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n"
+    "light\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n"
+    "sphere\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+
+// The file's inode: a file written again, through a rename, gets a new one.
+ino_t inodeOf(const std::string& file) {
+  struct stat status {};
+  return ::stat(file.c_str(), &status) == 0 ? status.st_ino : 0;
+}
+
+TEST_F(ToolTest, SfcheckFixAppliesEveryFixItInPlaceOnce) {
+  std::string scene = write("lower.sf", kLowerCaseKeywords);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--fix", scene}), 0) << err_.str();
+  EXPECT_EQ(read("lower.sf"), kValidScene);
+  EXPECT_EQ(err_.str(), "sfcheck: fixed " + scene +
+                            " (2 fixes)\nsfcheck: 1 file checked, 2 fixes applied, 0 errors, 0 "
+                            "warnings\n");
+  // Written whole: no temporary stays beside it.
+  EXPECT_EQ(files(), std::vector<std::string>{"lower.sf"});
+  // Fixed again, nothing changes, and the file is not written again.
+  ino_t written = inodeOf(scene);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--fix", scene}), 0);
+  EXPECT_EQ(err_.str(), "sfcheck: 1 file checked, 0 fixes applied, 0 errors, 0 warnings\n");
+  EXPECT_EQ(inodeOf(scene), written);
+  EXPECT_EQ(read("lower.sf"), kValidScene);
+}
+
+// What no fix-it mends is reported after the fixes, at its place in the
+// fixed file, and a file with no fix-it is left untouched.
+TEST_F(ToolTest, SfcheckFixReportsWhatIsLeftAndLeavesAFileWithoutFixItsAlone) {
+  std::string scene = write("left.sf", kLowerCaseKeywords + "CUBE\n1 0 0\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--fix", "--format", "short", scene}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(read("left.sf"), kValidScene + "CUBE\n1 0 0\n");
+  EXPECT_NE(err_.str().find("1 file checked, 2 fixes applied, 1 error"), std::string::npos)
+      << err_.str();
+  std::string unlit = write("unlit.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n");
+  ino_t before = inodeOf(unlit);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--fix", unlit}), 0);
+  EXPECT_EQ(inodeOf(unlit), before);
+}
+
+TEST_F(ToolTest, SfcheckFixDryRunPrintsADiffThatPatchApplies) {
+  std::string scene = write("lower.sf", kLowerCaseKeywords);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--fix", "--dry-run", scene}),
+            toInt(ExitCode::InvalidInput));
+  EXPECT_EQ(read("lower.sf"), kLowerCaseKeywords);
+  EXPECT_EQ(out_.str(),
+            "--- a/" + scene + "\n+++ b/" + scene +
+                "\n@@ -4,13 +4,13 @@\n 0 1 0 0\n 0 0 1 5\n 0 0 0 1\n-light\n+LIGHT\n 1 1 1\n 1 0 "
+                "0 3\n 0 1 0 3\n 0 0 1 3\n 0 0 0 1\n-sphere\n+SPHERE\n 1 0 0\n 1 0 0 "
+                "0\n 0 1 0 0\n");
+  EXPECT_NE(err_.str().find("sfcheck: " + scene + ": 2 fixes to apply\n"), std::string::npos);
+  EXPECT_NE(err_.str().find("1 file checked, 2 fixes to apply, 2 errors"), std::string::npos);
+  std::string diff = write("fix.diff", out_.str());
+  std::string copy = write("copy.sf", kLowerCaseKeywords);
+  ASSERT_EQ(std::system(("patch --quiet -p1 " + copy + " < " + diff).c_str()), 0);
+  EXPECT_EQ(read("copy.sf"), kValidScene);
+  // In the JSON report, each file's diff and the fixes it would apply.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--fix", "--dry-run", "--format", "json", scene}), 1);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["files"][0]["fixable"], 2);
+  EXPECT_EQ(report["files"][0]["diff"], read("fix.diff"));
+  EXPECT_EQ(report["summary"]["fixable"], 2);
+}
+
+TEST_F(ToolTest, SfcheckFixInJsonAndOnStandardInput) {
+  std::string scene = write("lower.sf", kLowerCaseKeywords);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--fix", "--format", "json", scene}), 0);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  EXPECT_EQ(report["files"][0]["fixed"], 2);
+  EXPECT_EQ(report["summary"]["fixed"], 2);
+  // Standard input's fixed text goes to standard output, as a filter's.
+  EXPECT_EQ(runTool(runSfcheck, {"sfcheck", "--fix", "-"}, out_, err_, kLowerCaseKeywords), 0);
+  EXPECT_EQ(out_.str(), kValidScene);
+  EXPECT_EQ(runTool(runSfcheck, {"sfcheck", "--fix", "-"}, out_, err_, kValidScene), 0);
+  EXPECT_EQ(out_.str(), kValidScene);
+  EXPECT_EQ(runTool(runSfcheck, {"sfcheck", "--fix", "--format", "json", "-"}, out_, err_, "x"),
+            toInt(ExitCode::Usage));
+}
+
+TEST_F(ToolTest, SfcheckDryRunNeedsFix) {
+  std::string scene = write("lower.sf", kLowerCaseKeywords);
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--dry-run", scene}), toInt(ExitCode::Usage));
+  EXPECT_NE(err_.str().find("--dry-run"), std::string::npos) << err_.str();
+  EXPECT_EQ(read("lower.sf"), kLowerCaseKeywords);
 }
 
 }  // namespace
