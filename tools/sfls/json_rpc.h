@@ -26,6 +26,7 @@ enum class ErrorCode : int {
   ServerNotInitialized = -32002,
   RequestFailed = -32803,
   RequestCancelled = -32800,
+  ContentModified = -32801,
 };
 
 // The largest message read: a document of the readers' largest size

@@ -1,0 +1,74 @@
+#include "tools/sfls/check_worker.h"
+
+#include <algorithm>
+
+#include "tools/common/document_check.h"
+
+namespace sfls {
+
+std::shared_ptr<Analysis> analyse(const CheckJob& job) {
+  std::string shownName = job.file.empty() ? job.uri : job.file.string();
+  tools::DocumentCheck check =
+      tools::checkDocument(*job.text, shownName, job.file.parent_path(), scene::ReadOptions{});
+  auto analysis = std::make_shared<Analysis>();
+  analysis->version = job.version;
+  analysis->text = job.text;
+  analysis->format = check.format;
+  analysis->result = std::move(check.result);
+  if (check.format == scene::Format::SceneFile || check.format == scene::Format::InstructionFile) {
+    analysis->outline = scene::outlineOf(*job.text, *check.format);
+  }
+  return analysis;
+}
+
+CheckWorker::CheckWorker(Checked checked) : checked_(std::move(checked)) {
+  thread_ = std::thread([this] { work(); });
+}
+
+CheckWorker::~CheckWorker() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void CheckWorker::schedule(CheckJob job) {
+  {
+    std::lock_guard lock(mutex_);
+    auto same = std::find_if(waiting_.begin(), waiting_.end(),
+                             [&](const CheckJob& other) { return other.uri == job.uri; });
+    if (same != waiting_.end()) {
+      *same = std::move(job);
+    } else {
+      waiting_.push_back(std::move(job));
+    }
+  }
+  wake_.notify_one();
+}
+
+void CheckWorker::forget(const std::string& uri) {
+  std::lock_guard lock(mutex_);
+  std::erase_if(waiting_, [&](const CheckJob& job) { return job.uri == uri; });
+}
+
+void CheckWorker::work() {
+  for (;;) {
+    CheckJob job;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [this] { return stopping_ || !waiting_.empty(); });
+      if (stopping_) return;
+      job = std::move(waiting_.front());
+      waiting_.erase(waiting_.begin());
+    }
+    std::shared_ptr<Analysis> analysis = analyse(job);
+    // The job's hold on the text ends here; the analysis keeps it only if
+    // it is still the document's latest (the server decides).
+    job.text.reset();
+    checked_(job.uri, std::move(analysis));
+  }
+}
+
+}  // namespace sfls

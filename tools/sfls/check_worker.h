@@ -1,0 +1,58 @@
+// The checks of documents, on a thread of their own so that the thread that
+// reads messages never waits for one. Each document has at most one check
+// waiting: a newer version replaces it unchecked, so that a burst of edits
+// costs one check of the last.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tools/sfls/analysis.h"
+
+namespace sfls {
+
+struct CheckJob {
+  std::string uri;
+  std::int64_t version = 0;
+  std::shared_ptr<const std::string> text;
+  // The document's file, whose name decides what the content leaves open and
+  // whose folder OUTPUT_FILE is taken in; empty for a document with none.
+  std::filesystem::path file;
+};
+
+// sfcheck's check of `job`'s text (tools::checkDocument) and its outline.
+std::shared_ptr<Analysis> analyse(const CheckJob& job);
+
+class CheckWorker {
+ public:
+  // `checked` is called on the worker's thread with each finished check.
+  using Checked = std::function<void(const std::string& uri, std::shared_ptr<Analysis>)>;
+
+  explicit CheckWorker(Checked checked);
+  ~CheckWorker();
+  CheckWorker(const CheckWorker&) = delete;
+  CheckWorker& operator=(const CheckWorker&) = delete;
+
+  void schedule(CheckJob job);
+  // Drops the document's waiting check (the document was closed).
+  void forget(const std::string& uri);
+
+ private:
+  void work();
+
+  Checked checked_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::vector<CheckJob> waiting_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+}  // namespace sfls
