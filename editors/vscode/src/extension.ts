@@ -72,7 +72,19 @@ async function executeServerCommand(
     return undefined;
   }
   const settings = vscode.workspace.getConfiguration('scenefile').get<object>('render.arguments') ?? {};
-  const result = await next(command, [document.uri.toString(), settings]);
+  let result: unknown;
+  try {
+    result = await next(command, [document.uri.toString(), settings]);
+  } catch (error) {
+    // The client says that the request failed; the server's message says
+    // why (an argument, the document's errors, the write). A render the
+    // user cancelled needs no message.
+    if (!(error instanceof vscode.CancellationError)) {
+      const message = error instanceof Error ? error.message : String(error);
+      void vscode.window.showErrorMessage(`Render: ${message}`);
+    }
+    return undefined;
+  }
   const image = imagePath(result);
   if (image) {
     const open = await vscode.window.showInformationMessage(`Rendered ${image}`, 'Open');
@@ -83,11 +95,8 @@ async function executeServerCommand(
   return result;
 }
 
-// The server answers with the image's path, as a string or as { image }.
+// The server answers { image: the path it wrote }.
 function imagePath(result: unknown): string | undefined {
-  if (typeof result === 'string') {
-    return result;
-  }
   if (result && typeof result === 'object' && 'image' in result) {
     const image = (result as { image: unknown }).image;
     return typeof image === 'string' ? image : undefined;
