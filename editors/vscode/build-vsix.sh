@@ -32,5 +32,9 @@ node -e '
 ln -s "$here/node_modules" "$stage/node_modules"
 # No licence file and no repository: the project has neither, and vsce
 # would otherwise stop to ask.
-(cd "$stage" && "$here/node_modules/.bin/vsce" package --skip-license --allow-missing-repository \
-  --out "$output")
+# vsce lists every file it packs: kept in STAGE.log, shown on failure.
+if ! (cd "$stage" && "$here/node_modules/.bin/vsce" package --skip-license \
+        --allow-missing-repository --out "$output") >"$stage.log" 2>&1; then
+  cat "$stage.log" >&2
+  exit 1
+fi
