@@ -7,7 +7,8 @@
 #    vscode-tmgrammar-snap and must give exactly the tokens of its snapshot
 #    in snapshots/ (a file without one fails); nothing in them is invalid;
 # 2. the assertion tests in grammar/ pin keywords, numbers and what is
-#    invalid (vscode-tmgrammar-test).
+#    invalid (vscode-tmgrammar-test);
+# 3. the manifest's firstLine recognises the valid instruction files.
 # --update rewrites snapshots/ from the grammars as they are, after a
 # deliberate change. Exits 77 (skipped) when node or node_modules is missing.
 set -euo pipefail
@@ -62,8 +63,28 @@ fi
 
 (cd "$here/grammar" && "$bin/vscode-tmgrammar-test" --config "$manifest" '*') ||
   failures=$((failures + 1))
+
+# VS Code tells an instruction file by its first line (the manifest's
+# firstLine): every valid one whose first line is not blank, and no scene file.
+node - "$manifest" "$testdata"/valid/*.sf "$testdata"/valid/*.txt <<'SCRIPT' || failures=$((failures + 1))
+const fs = require('fs');
+const [manifest, ...files] = process.argv.slice(2);
+const language = JSON.parse(fs.readFileSync(manifest, 'utf8')).contributes.languages
+  .find((l) => l.id === 'scenefile-instructions');
+const firstLine = new RegExp(language.firstLine);
+let wrong = 0;
+for (const file of files) {
+  const line = fs.readFileSync(file, 'utf8').split(/\r?\n/)[0];
+  const expected = file.endsWith('.txt') && line.trim() !== '';
+  if (firstLine.test(line) !== expected) {
+    console.error(`FAIL: firstLine ${expected ? 'misses' : 'takes'} ${file}`);
+    wrong++;
+  }
+}
+process.exit(wrong === 0 ? 0 : 1);
+SCRIPT
 if [ "$failures" -ne 0 ]; then
   echo "FAIL: $failures of the grammar checks failed" >&2
   exit 1
 fi
-echo "the grammars give the snapshots of every valid file and pass the assertion tests"
+echo "the grammars give the snapshots of every valid file and pass the assertion tests; firstLine tells the instruction files"
