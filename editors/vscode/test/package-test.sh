@@ -19,7 +19,7 @@ if [ ! -e "$vsix" ]; then
     echo "SKIP: no node or editors/vscode/node_modules, so no .vsix (scripts/install-deps.sh)"
     exit 77
   fi
-  echo "FAIL: $vsix was not built (cmake --build BUILD --target vscode-extension)" >&2
+  echo "FAIL: $vsix was not built (configure again after npm ci, then build vscode-extension)" >&2
   exit 1
 fi
 failures=0
