@@ -5,6 +5,7 @@
 // position) and leaves out what only the scene knows.
 #pragma once
 
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -20,6 +21,12 @@ nlohmann::json hover(const Document& document, const Analysis* analysis, LspPosi
 // takes them).
 nlohmann::json completion(const Document& document, const Analysis* analysis,
                           LspPosition position, bool snippets);
+
+// The most items documentSymbols and foldingRanges list: the first ones of
+// the text, and for the symbols one more that says how many were left out.
+// A million objects' symbols would be 200 MB of JSON, which no editor shows
+// and no request could answer in time.
+inline constexpr std::size_t kMaxOutlineItems = 10'000;
 
 // textDocument/documentSymbol: DocumentSymbol[] (nested as the blocks nest).
 nlohmann::json documentSymbols(const Document& document, const Analysis& analysis);
