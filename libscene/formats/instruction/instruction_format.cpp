@@ -2,6 +2,7 @@
 #include <string_view>
 
 #include "libscene/formats/format_rows.h"
+#include "libscene/formats/instruction/instruction_layout.h"
 #include "libscene/formats/instruction/instruction_outline.h"
 #include "libscene/formats/instruction/instruction_reader.h"
 #include "libscene/formats/instruction/instruction_writer.h"
@@ -54,6 +55,7 @@ FormatInfo instructionFileFormat() {
   row.read = readInstructionFileFormat;
   row.outline = instructionFileOutline;
   row.place = instructionFilePlace;
+  row.layout = instructionFileLayout;
   row.write = writeInstructionFileFormat;
   return row;
 }

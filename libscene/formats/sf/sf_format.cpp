@@ -2,6 +2,7 @@
 #include <string_view>
 
 #include "libscene/formats/format_rows.h"
+#include "libscene/formats/sf/sf_layout.h"
 #include "libscene/formats/sf/sf_outline.h"
 #include "libscene/formats/sf/sf_reader.h"
 #include "libscene/formats/sf/sf_writer.h"
@@ -79,6 +80,7 @@ FormatInfo sceneFileFormat() {
   row.read = readSceneFileFormat;
   row.outline = sceneFileOutline;
   row.place = sceneFilePlace;
+  row.layout = sceneFileLayout;
   row.write = writeSceneFileFormat;
   return row;
 }
