@@ -36,6 +36,7 @@
 #include "tools/common/tool_output.h"
 #include "tools/sfrender/image_region.h"
 #include "tools/sfrender/image_target.h"
+#include "tools/sfrender/scene_view.h"
 #include "tools/sfrender/thread_probe.h"
 
 namespace tools {
@@ -121,29 +122,6 @@ int imageWidth(const render::RenderSettings& s) {
 }
 int imageHeight(const render::RenderSettings& s) {
   return s.region.empty() ? s.height : s.region.height();
-}
-
-// The scene's own view (a POV-Ray or glTF camera's) where the command line
-// does not say otherwise: its field of view unless --fov, and at its aspect
-// ratio the side that --width and --height leave open (the height, when
-// neither is given).
-void applySceneView(const scene::Scene& scene, const SfrenderOptions& o,
-                    render::RenderSettings& settings) {
-  if (!scene.view) return;
-  if (!o.fov) {
-    settings.verticalFovDegrees =
-        std::clamp(scene.view->verticalFovDegrees, scene::kMinFovDegrees, scene::kMaxFovDegrees);
-  }
-  if (!scene.view->aspectRatio || (o.height && o.width)) return;
-  double aspect = *scene.view->aspectRatio;
-  auto side = [](double pixels) {
-    return static_cast<int>(std::clamp(std::round(pixels), 1.0, double{scene::kMaxImageSide}));
-  };
-  if (o.height) {
-    settings.width = side(settings.height * aspect);
-  } else {
-    settings.height = side(settings.width / aspect);
-  }
 }
 
 // The scene to render and where its image goes.
@@ -426,7 +404,7 @@ MaybeFailure RenderJob::run() {
   }
   if (MaybeFailure failure = readScene()) return failure;
   output_.step("reading");
-  applySceneView(job_.scene, o_, settings_);
+  applySceneView(job_.scene, o_.width, o_.height, o_.fov.has_value(), settings_);
   if (MaybeFailure overLimit =
           settingOverLimit(settings_, o_.limits, " (at the scene's aspect ratio)")) {
     return overLimit;
