@@ -29,66 +29,38 @@ struct Change {
   std::size_t added = 0;
 };
 
-// How many lines in a row must agree for the texts to meet again: one is
-// too few in a scene file, whose matrix rows repeat.
-constexpr std::size_t kMeetingLines = 3;
-// How far after a difference the texts are looked for to meet again (the
-// lines removed and added together); beyond it, the rest is one change.
-constexpr std::size_t kSearchLines = 2000;
-
-class LineMatcher {
- public:
-  LineMatcher(const std::vector<std::string_view>& a, const std::vector<std::string_view>& b)
-      : a_(a), b_(b) {}
-
-  std::vector<Change> changes() const {
-    std::vector<Change> found;
-    std::size_t i = 0;
-    std::size_t j = 0;
-    while (i < a_.size() || j < b_.size()) {
-      if (i < a_.size() && j < b_.size() && a_[i] == b_[j]) {
+// The runs of lines that differ. A fix replaces words within lines, so the
+// two texts keep every line at its place, and a run is where they differ at
+// the same index: found in one pass, however large the text. Texts of
+// different line counts are one change between their common start and end:
+// correct, if not the least of diffs, with no search whose cost grows with
+// the text times the changes.
+std::vector<Change> changesBetween(const std::vector<std::string_view>& a,
+                                   const std::vector<std::string_view>& b) {
+  std::vector<Change> found;
+  if (a.size() == b.size()) {
+    for (std::size_t i = 0; i < a.size();) {
+      if (a[i] == b[i]) {
         ++i;
-        ++j;
         continue;
       }
-      Change change = nextMeeting(i, j);
-      found.push_back(change);
-      i += change.removed;
-      j += change.added;
+      std::size_t end = i;
+      while (end < a.size() && a[end] != b[end]) ++end;
+      found.push_back({i, end - i, i, end - i});
+      i = end;
     }
     return found;
   }
-
- private:
-  // Whether the texts agree from a_[i] and b_[j] on for kMeetingLines
-  // lines, or end there together.
-  bool meet(std::size_t i, std::size_t j) const {
-    for (std::size_t t = 0; t < kMeetingLines; ++t, ++i, ++j) {
-      if (i == a_.size() && j == b_.size()) return true;
-      if (i == a_.size() || j == b_.size() || a_[i] != b_[j]) return false;
-    }
-    return true;
+  const std::size_t shorter = std::min(a.size(), b.size());
+  std::size_t prefix = 0;
+  while (prefix < shorter && a[prefix] == b[prefix]) ++prefix;
+  std::size_t suffix = 0;
+  while (suffix < shorter - prefix && a[a.size() - 1 - suffix] == b[b.size() - 1 - suffix]) {
+    ++suffix;
   }
-
-  // The fewest lines removed and added (removing first) after which the
-  // texts meet again.
-  Change nextMeeting(std::size_t i, std::size_t j) const {
-    std::size_t leftA = a_.size() - i;
-    std::size_t leftB = b_.size() - j;
-    std::size_t most = std::min(kSearchLines, leftA + leftB);
-    for (std::size_t skipped = 1; skipped <= most; ++skipped) {
-      for (std::size_t removed = std::min(skipped, leftA) + 1; removed-- > 0;) {
-        std::size_t added = skipped - removed;
-        if (added > leftB) break;
-        if (meet(i + removed, j + added)) return {i, removed, j, added};
-      }
-    }
-    return {i, leftA, j, leftB};
-  }
-
-  const std::vector<std::string_view>& a_;
-  const std::vector<std::string_view>& b_;
-};
+  found.push_back({prefix, a.size() - prefix - suffix, prefix, b.size() - prefix - suffix});
+  return found;
+}
 
 // "@@ -START,COUNT +START,COUNT @@" as GNU diff writes it: a count of one
 // left out, and an empty side starting at the line before it.
@@ -109,7 +81,7 @@ std::string unifiedDiff(std::string_view before, std::string_view after, std::st
                         int context) {
   std::vector<std::string_view> a = linesOf(before);
   std::vector<std::string_view> b = linesOf(after);
-  std::vector<Change> changes = LineMatcher(a, b).changes();
+  std::vector<Change> changes = changesBetween(a, b);
   if (changes.empty()) return {};
   const std::size_t around = static_cast<std::size_t>(std::max(context, 0));
   std::string out = "--- a/" + std::string(name) + "\n+++ b/" + std::string(name) + "\n";
