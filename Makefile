@@ -23,10 +23,11 @@ test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 # The API reference, from the public headers (Doxygen): $(BUILD_DIR)/docs/html;
-# and the pictures of docs/GUIDE.md, from the scenes in the repository.
+# the pictures of docs/GUIDE.md, from the scenes in the repository; and
+# docs/EDITORS.md's, of Neovim with sfls.
 docs: configure
-	@cmake --build $(BUILD_DIR) -j $(JOBS) --target docs docs-images
-	@echo "The API reference is in $(BUILD_DIR)/docs/html/index.html; the guide's pictures in docs/images/guide."
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target docs docs-images docs-editor-images
+	@echo "The API reference is in $(BUILD_DIR)/docs/html/index.html; the guide's pictures in docs/images/guide, the editors' in docs/images/editors."
 
 bench: build
 	@bash bench/run.sh $(BUILD_DIR)
@@ -35,6 +36,7 @@ bench: build
 	@bash bench/tracers.sh $(BUILD_DIR)
 	@bash bench/equal_error.sh $(BUILD_DIR)
 	@bash bench/tiles_bench.sh $(BUILD_DIR)
+	@bash bench/sfls_bench.sh $(BUILD_DIR)
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (but the label "slurm", which tests the Slurm scripts on a cluster, not memory safety):

@@ -60,8 +60,9 @@ packages=(
   # a CPU Vulkan driver with shaderFloat64, on which its tests run on every
   # machine; vulkaninfo shows what a machine offers.
   libvulkan-dev glslang-tools glslc mesa-vulkan-drivers vulkan-tools
-  # The language server's editor test runs Neovim headless against sfls.
-  neovim
+  # The language server's editor test runs Neovim headless against sfls;
+  # docs/EDITORS.md's picture (make docs) shows Neovim in xterm under Xvfb.
+  neovim xterm
 )
 # The glTF Validator and the VS Code extension's build (tsc, vsce) run on
 # Node.js; a machine with node and npm already (from Debian or elsewhere)
