@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <stop_token>
 #include <string_view>
 
 #include "scenefile/diagnostic.h"
@@ -49,6 +50,13 @@ struct ReadOptions {
   GltfReadOptions gltf;
   /// POV-Ray (.pov).
   PovReadOptions pov;
+  /// Asks a read to stop early: the readers of scene files and instruction
+  /// files look at it every few thousand lines and, once it is requested,
+  /// return what they have read so far, unchecked as a whole. Such a
+  /// result is incomplete even where ok(), so that only a caller that no
+  /// longer wants it (an editor whose text has changed again) should stop
+  /// a read. The other readers read to the end.
+  std::stop_token stop;
 
   friend bool operator==(const ReadOptions&, const ReadOptions&) = default;
 };

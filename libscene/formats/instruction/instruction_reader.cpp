@@ -119,6 +119,13 @@ class InstructionParser {
 
   void run() {
     while (!out_.full() && !stopped_ && cursor_.next()) {
+      if (++linesSinceStopCheck_ == kLinesPerStopCheck) {
+        linesSinceStopCheck_ = 0;
+        if (options_.stop.stop_requested()) {
+          stopped_ = true;
+          break;
+        }
+      }
       if (cursor_.blank() || reportComment(cursor_, out_)) continue;
       if (reportInvalidByte(cursor_, out_)) {
         // A damaged START or END is still read, as far as the damage, so
@@ -607,7 +614,10 @@ class InstructionParser {
   bool sawContent_ = false;
   // START OBJECT and START LIGHT lines so far, against maxObjects.
   std::size_t objectsSeen_ = 0;
-  bool stopped_ = false;                 // past maxObjects: nothing more is read
+  bool stopped_ = false;  // past maxObjects, or asked to stop: nothing more is read
+  // Asked to stop is looked at every few thousand lines (ReadOptions::stop).
+  static constexpr std::uint32_t kLinesPerStopCheck = 4096;
+  std::uint32_t linesSinceStopCheck_ = kLinesPerStopCheck - 1;
   std::optional<std::string> skipping_;  // the unknown block being skipped
 };
 

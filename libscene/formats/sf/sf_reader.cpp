@@ -143,6 +143,13 @@ class SceneFileParser {
  private:
   void readRecords() {
     while (!out_.full() && !stopped_ && !(readingPart_ && !out_.empty()) && pull()) {
+      if (++recordsSinceStopCheck_ == kRecordsPerStopCheck) {
+        recordsSinceStopCheck_ = 0;
+        if (options_.stop.stop_requested()) {
+          stopped_ = true;
+          return;
+        }
+      }
       if (cursor_.blank() || reportComment(cursor_, out_)) continue;
       if (reportInvalidByte(cursor_, out_)) {
         // Most likely a damaged record name: its body follows, and reading
@@ -381,7 +388,11 @@ class SceneFileParser {
   bool resyncing_ = false;
   // Objects and lights named so far, read or not, against maxObjects.
   std::size_t objectsSeen_ = 0;
-  bool stopped_ = false;  // past maxObjects: nothing more is read
+  bool stopped_ = false;  // past maxObjects, or asked to stop: nothing more is read
+  // Asked to stop is looked at every few thousand records (ReadOptions::stop):
+  // an atomic load a record would cost as much as reading some of them.
+  static constexpr std::uint32_t kRecordsPerStopCheck = 4096;
+  std::uint32_t recordsSinceStopCheck_ = kRecordsPerStopCheck - 1;
   // A part of a file (runPart): it stops at its first diagnostic, and
   // faults in its objects' room ahead of them.
   bool readingPart_ = false;
@@ -484,7 +495,9 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
                                k == 0 ? allRecords : records[k])
                    .runPart();
   });
-  if (!read) return std::nullopt;
+  // A stopped read's parts are cut short anywhere: the whole-file reader
+  // stops at once, where it checks first.
+  if (!read || options.stop.stop_requested()) return std::nullopt;
 
   // The parts make the file's scene only where each read cleanly, the CAMERA
   // came first in the first part and nowhere else, and all of them together
