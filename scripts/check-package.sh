@@ -66,10 +66,10 @@ for file in include/scenefile/read.h include/scenefile/formats.def \
             "$libdir"/cmake/scenefile/scenefileConfigVersion.cmake \
             "$libdir"/cmake/scenefile/scenefileTargets.cmake \
             "$libdir"/cmake/scenefile/scenefileStaticTargets.cmake "$libdir"/pkgconfig/scenefile.pc \
-            "$libdir"/scenefile/sfrender_oiio.so bin/sfcheck bin/sfconvert bin/sfrender \
-            share/man/man1/sfcheck.1 share/man/man1/sfconvert.1 share/man/man1/sfrender.1 \
+            "$libdir"/scenefile/sfrender_oiio.so bin/sfcheck bin/sfconvert bin/sfrender bin/sfls \
+            share/man/man1/sfcheck.1 share/man/man1/sfconvert.1 share/man/man1/sfrender.1 share/man/man1/sfls.1 \
             share/bash-completion/completions/sfcheck share/bash-completion/completions/sfconvert \
-            share/bash-completion/completions/sfrender; do
+            share/bash-completion/completions/sfrender share/bash-completion/completions/sfls; do
   [[ -e $prefix/$file ]] || fail "the install has no $file"
 done
 if [[ -e $soname_file ]]; then

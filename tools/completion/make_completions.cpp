@@ -13,6 +13,7 @@
 #include "tools/completion/bash_completion.h"
 #include "tools/sfbuild/sfbuild_command_line.h"
 #include "tools/sfcheck/sfcheck.h"
+#include "tools/sfls/sfls_command_line.h"
 #include "tools/sfconvert/sfconvert.h"
 #include "tools/sfrender/sfrender.h"
 
@@ -66,9 +67,11 @@ int main(int argc, char** argv) {
   tools::SfconvertOptions convert;
   tools::SfrenderOptions renderOptions;
   sfbuild::SfbuildOptions build;
+  sfls::SflsOptions server;
   bool ok = writeScript(folder, *tools::makeSfcheckCommandLine(check), scenes) &&
             writeScript(folder, *tools::makeSfconvertCommandLine(convert), scenes) &&
             writeScript(folder, *tools::makeSfrenderCommandLine(renderOptions), render) &&
-            writeScript(folder, *sfbuild::makeSfbuildCommandLine(build), scenes);
+            writeScript(folder, *sfbuild::makeSfbuildCommandLine(build), scenes) &&
+            writeScript(folder, *sfls::makeSflsCommandLine(server), tools::CompletedFiles{});
   return ok ? 0 : 3;
 }
