@@ -237,7 +237,6 @@ local cases = {
 
 local function run(case, work)
   local path = work .. '/' .. case.file
-  copy(here .. '/neovim/' .. case.file, path)
   vim.cmd('edit ' .. vim.fn.fnameescape(path))
   local bufnr = vim.api.nvim_get_current_buf()
   check(vim.bo[bufnr].filetype == case.filetype, '%s: filetype %q, expected %q', case.file,
@@ -266,6 +265,18 @@ local ok, err = pcall(function()
   require('scenefile').setup({ cmd = { program('SFLS') } })
   local work = vim.fn.tempname()
   vim.fn.mkdir(work, 'p')
+  -- Both files opened at once, under one root folder: one server for both,
+  -- even while it is starting.
+  vim.o.hidden = true
+  for _, case in ipairs(cases) do
+    copy(here .. '/neovim/' .. case.file, work .. '/' .. case.file)
+    vim.cmd('edit ' .. vim.fn.fnameescape(work .. '/' .. case.file))
+  end
+  wait_for('sfls to start', function()
+    return #vim.lsp.get_active_clients() > 0
+  end)
+  vim.wait(200) -- time for a second server to start, were one started
+  check(#vim.lsp.get_active_clients() == 1, '%d servers for one folder', #vim.lsp.get_active_clients())
   for _, case in ipairs(cases) do
     run(case, work)
     io.stderr:write('neovim: ' .. case.file .. ': every check holds\n')

@@ -45,7 +45,11 @@ end
 
 local function client_for(root, config)
   local id = clients[root]
-  if id and vim.lsp.get_client_by_id(id) and not vim.lsp.client_is_stopped(id) then
+  -- Not vim.lsp.client_is_stopped: in 0.7 it calls a client that is still
+  -- initializing stopped, and a second file opened meanwhile would start a
+  -- second server.
+  local running = id and vim.lsp.get_client_by_id(id)
+  if running and not running.is_stopped() then
     return id
   end
   id = vim.lsp.start_client({
