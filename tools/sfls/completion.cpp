@@ -32,7 +32,7 @@ Typed typedWord(const DocumentPlace& at) {
   std::uint32_t cursor = at.source.column;
   if (place.wordIndex < place.words.size()) {
     const scene::SourceSpan& word = place.words[place.wordIndex].span;
-    return {place.wordIndex, {at.source.line, word.column, cursor - word.column}};
+    return {place.wordIndex, {at.source.line, word.column, cursor - std::min(cursor, word.column)}};
   }
   std::size_t before = 0;
   while (before < place.words.size() && place.words[before].span.column < cursor) ++before;
