@@ -114,11 +114,10 @@ constexpr std::size_t kObjectsPopulatedAhead = (std::size_t{4} << 20) / sizeof(O
 class SceneFileParser {
  public:
   SceneFileParser(std::string_view text, const ReadOptions& options, ReadResult& result)
-      : SceneFileParser(text, options, result, 1,
-                        // A read asked to stop reads nothing: no room made.
-                        options.stop.stop_requested()
-                            ? 0
-                            : recordsToReserve(countLinesAndRecords(text))) {}
+      : SceneFileParser(
+            text, options, result, 1,
+            // A read asked to stop reads nothing: no room made.
+            options.stop.stop_requested() ? 0 : recordsToReserve(countLinesAndRecords(text))) {}
 
   // A part of a file (parseSceneFileInParts): `firstLine` is the number of
   // its first line in the file, and `records` the records to make room for.
