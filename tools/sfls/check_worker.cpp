@@ -6,15 +6,18 @@
 
 namespace sfls {
 
-std::shared_ptr<Analysis> analyse(const CheckJob& job) {
+std::shared_ptr<Analysis> analyse(const CheckJob& job, std::stop_token stop) {
   std::string shownName = job.file.empty() ? job.uri : job.file.string();
+  scene::ReadOptions options;
+  options.stop = stop;
   tools::DocumentCheck check =
-      tools::checkDocument(*job.text, shownName, job.file.parent_path(), scene::ReadOptions{});
+      tools::checkDocument(*job.text, shownName, job.file.parent_path(), options);
   auto analysis = std::make_shared<Analysis>();
   analysis->version = job.version;
   analysis->text = job.text;
   analysis->format = check.format;
   analysis->result = std::move(check.result);
+  if (stop.stop_requested()) return analysis;
   if (check.format == scene::Format::SceneFile || check.format == scene::Format::InstructionFile) {
     analysis->outline = scene::outlineOf(*job.text, *check.format);
   }
@@ -29,6 +32,7 @@ CheckWorker::~CheckWorker() {
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
+    runningStop_.request_stop();
   }
   wake_.notify_all();
   thread_.join();
@@ -39,6 +43,7 @@ void CheckWorker::schedule(CheckJob job) {
     std::lock_guard lock(mutex_);
     auto same = std::find_if(waiting_.begin(), waiting_.end(),
                              [&](const CheckJob& other) { return other.uri == job.uri; });
+    if (job.uri == runningUri_) runningStop_.request_stop();
     if (same != waiting_.end()) {
       *same = std::move(job);
     } else {
@@ -50,20 +55,31 @@ void CheckWorker::schedule(CheckJob job) {
 
 void CheckWorker::forget(const std::string& uri) {
   std::lock_guard lock(mutex_);
+  if (uri == runningUri_) runningStop_.request_stop();
   std::erase_if(waiting_, [&](const CheckJob& job) { return job.uri == uri; });
 }
 
 void CheckWorker::work() {
   for (;;) {
     CheckJob job;
+    std::stop_token stop;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [this] { return stopping_ || !waiting_.empty(); });
       if (stopping_) return;
       job = std::move(waiting_.front());
       waiting_.erase(waiting_.begin());
+      runningUri_ = job.uri;
+      runningStop_ = std::stop_source();
+      stop = runningStop_.get_token();
     }
-    std::shared_ptr<Analysis> analysis = analyse(job);
+    std::shared_ptr<Analysis> analysis = analyse(job, stop);
+    {
+      std::lock_guard lock(mutex_);
+      runningUri_.clear();
+    }
+    // A stopped check is partial and of a text the document has left.
+    if (stop.stop_requested()) continue;
     // The job's hold on the text ends here; the analysis keeps it only if
     // it is still the document's latest (the server decides).
     job.text.reset();

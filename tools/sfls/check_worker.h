@@ -1,7 +1,9 @@
 // The checks of documents, on a thread of their own so that the thread that
 // reads messages never waits for one. Each document has at most one check
 // waiting: a newer version replaces it unchecked, so that a burst of edits
-// costs one check of the last.
+// costs one check of the last, and stops the check of an older version
+// that is running (ReadOptions::stop), so that the newest waits for no
+// stale one to finish.
 #pragma once
 
 #include <condition_variable>
@@ -10,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <stop_token>
 #include <string>
 #include <thread>
 #include <vector>
@@ -28,7 +31,8 @@ struct CheckJob {
 };
 
 // sfcheck's check of `job`'s text (tools::checkDocument) and its outline.
-std::shared_ptr<Analysis> analyse(const CheckJob& job);
+// Once `stop` is requested the check ends early with a partial result.
+std::shared_ptr<Analysis> analyse(const CheckJob& job, std::stop_token stop = {});
 
 class CheckWorker {
  public:
@@ -51,6 +55,9 @@ class CheckWorker {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::vector<CheckJob> waiting_;
+  // The document being checked, and how to stop that check.
+  std::string runningUri_;
+  std::stop_source runningStop_;
   bool stopping_ = false;
   std::thread thread_;
 };
