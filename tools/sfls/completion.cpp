@@ -116,15 +116,26 @@ std::string recordSnippet(std::string_view name) {
          "}\n1 0 0 ${4:0}\n0 1 0 ${5:0}\n0 0 1 ${6:0}\n0 0 0 1\n$0";
 }
 
-void sceneFileItems(const DocumentPlace& at, const Typed& typed, Items& items) {
+// Whether the checked text has its one camera on another line than
+// `line`: a second one would be an error, so none is offered.
+bool cameraElsewhere(const Analysis* analysis, std::uint32_t line) {
+  if (!analysis) return false;
+  const std::vector<scene::OutlineItem>& items = analysis->outline.items;
+  return std::any_of(items.begin(), items.end(), [&](const scene::OutlineItem& item) {
+    return item.kind == scene::OutlineKind::Camera && item.firstLine != line;
+  });
+}
+
+void sceneFileItems(const DocumentPlace& at, const Typed& typed, bool cameraTaken, Items& items) {
   const scene::TextPlace& place = at.place;
   bool recordStarts = !place.block || place.recordLine == 0u;
   if (typed.index != 0 || !recordStarts) return;
-  for (const scene::KeywordInfo* info : scene::keywordsAt(at.format, KeywordPlace::Record)) {
-    items.keyword(*info, info->word);
-  }
+  std::vector<const scene::KeywordInfo*> records =
+      scene::keywordsAt(at.format, KeywordPlace::Record);
+  if (cameraTaken) std::erase_if(records, [](auto* info) { return info->word == "CAMERA"; });
+  for (const scene::KeywordInfo* info : records) items.keyword(*info, info->word);
   if (!items.snippets()) return;
-  for (const scene::KeywordInfo* info : scene::keywordsAt(at.format, KeywordPlace::Record)) {
+  for (const scene::KeywordInfo* info : records) {
     items.snippet(info->word, std::string(info->word) + " record", recordSnippet(info->word),
                   "a whole record: name, colour and matrix");
   }
@@ -149,16 +160,19 @@ bool givenInBlock(const scene::TextPlace& place, std::string_view word) {
   return false;
 }
 
-void blockSnippets(KeywordPlace where, const scene::TextPlace& place, Items& items) {
+void blockSnippets(KeywordPlace where, const scene::TextPlace& place, bool cameraTaken,
+                   Items& items) {
   if (where == KeywordPlace::TopLevel) {
     std::string kinds;
     for (scene::ObjectKind kind : scene::kObjectKinds) {
       kinds += (kinds.empty() ? "" : ",") + std::string(scene::objectKindName(kind));
     }
-    items.snippet("START CAMERA", "START CAMERA block",
-                  "START CAMERA\n  LOCATION ${1:0} ${2:0} ${3:5}\n  LOOK_AT ${4:0} ${5:0} "
-                  "${6:0}\nEND CAMERA\n$0",
-                  "a camera: where it stands and where it looks");
+    if (!cameraTaken) {
+      items.snippet("START CAMERA", "START CAMERA block",
+                    "START CAMERA\n  LOCATION ${1:0} ${2:0} ${3:5}\n  LOOK_AT ${4:0} ${5:0} "
+                    "${6:0}\nEND CAMERA\n$0",
+                    "a camera: where it stands and where it looks");
+    }
     items.snippet("START LIGHT", "START LIGHT block",
                   "START LIGHT\n  LOCATION ${1:5} ${2:5} ${3:5}\n  COLOUR ${4:1} ${5:1} "
                   "${6:1}\nEND LIGHT\n$0",
@@ -185,7 +199,7 @@ void blockSnippets(KeywordPlace where, const scene::TextPlace& place, Items& ite
 }
 
 void instructionItems(const Document& document, const DocumentPlace& at, const Typed& typed,
-                      Items& items) {
+                      bool cameraTaken, Items& items) {
   const scene::TextPlace& place = at.place;
   WordRole role = instructionWordRole(place, typed.index);
   if (!role.place || role.argument) return;
@@ -203,13 +217,14 @@ void instructionItems(const Document& document, const DocumentPlace& at, const T
       continue;
     }
     if (once && givenInBlock(place, info->word)) continue;
+    if (where == KeywordPlace::BlockName && info->word == "CAMERA" && cameraTaken) continue;
     if (where == KeywordPlace::Object && info->word == "START" && givenInBlock(place, "MATERIAL") &&
         givenInBlock(place, "TRANSFORMATION")) {
       continue;
     }
     items.keyword(*info, info->word);
   }
-  if (items.snippets() && typed.index == 0) blockSnippets(where, place, items);
+  if (items.snippets() && typed.index == 0) blockSnippets(where, place, cameraTaken, items);
 }
 
 }  // namespace
@@ -220,10 +235,11 @@ nlohmann::json completion(const Document& document, const Analysis* analysis, Ls
   if (!at) return {{"isIncomplete", false}, {"items", nlohmann::json::array()}};
   Typed typed = typedWord(*at);
   Items items(document, typed, snippets);
+  bool cameraTaken = cameraElsewhere(analysis, at->source.line);
   if (at->format == scene::Format::SceneFile) {
-    sceneFileItems(*at, typed, items);
+    sceneFileItems(*at, typed, cameraTaken, items);
   } else {
-    instructionItems(document, *at, typed, items);
+    instructionItems(document, *at, typed, cameraTaken, items);
   }
   return std::move(items).list();
 }

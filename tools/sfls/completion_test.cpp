@@ -47,7 +47,11 @@ std::string withLineReplaced(const std::string& text, std::size_t index, const s
 TEST(Completion, OffersRecordNamesWhereARecordStarts) {
   std::string text = feature_test::readSource("testdata/valid/all-primitives.sf");
   Opened opened = openText(withLine(text, 6, ""));
+  // The file has its one CAMERA: a second would be an error.
   EXPECT_THAT(labels(itemsAt(opened, 6, 0)),
+              UnorderedElementsAre("LIGHT", "PLANE", "SPHERE", "CYLINDER", "CUBE"));
+  Opened empty = openText("\n");
+  EXPECT_THAT(labels(itemsAt(empty, 0, 0)),
               UnorderedElementsAre("CAMERA", "LIGHT", "PLANE", "SPHERE", "CYLINDER", "CUBE"));
   // Inside a record the lines hold numbers only.
   EXPECT_THAT(labels(itemsAt(opened, 3, 0)), IsEmpty());
@@ -94,7 +98,7 @@ TEST(Completion, OffersOutputFileOnlyFirst) {
 TEST(Completion, OffersBlockNamesAndObjectKindsAfterStart) {
   std::string text = feature_test::readSource("testdata/valid/all-primitives.txt");
   Opened block = openText(withLine(text, 5, "START "), "scene.txt");
-  EXPECT_THAT(labels(itemsAt(block, 5, 6)), UnorderedElementsAre("CAMERA", "LIGHT", "OBJECT"));
+  EXPECT_THAT(labels(itemsAt(block, 5, 6)), UnorderedElementsAre("LIGHT", "OBJECT"));
   Opened kind = openText(withLine(text, 5, "START OBJECT "), "scene.txt");
   EXPECT_THAT(labels(itemsAt(kind, 5, 13)),
               UnorderedElementsAre("PLANE", "SPHERE", "CYLINDER", "CUBE"));
@@ -144,8 +148,8 @@ TEST(Completion, OffersBlocksAsSnippetsWithTabStops) {
   std::string text = feature_test::readSource("testdata/valid/all-primitives.txt");
   Opened opened = openText(withLine(text, 5, ""), "scene.txt");
   nlohmann::json items = itemsAt(opened, 5, 0, true);
-  EXPECT_THAT(labels(items), UnorderedElementsAre("START", "START CAMERA block",
-                                                  "START LIGHT block", "START OBJECT block"));
+  EXPECT_THAT(labels(items),
+              UnorderedElementsAre("START", "START LIGHT block", "START OBJECT block"));
   for (const nlohmann::json& item : items) {
     if (item["label"] != "START OBJECT block") continue;
     EXPECT_EQ(item["insertTextFormat"], 2);
