@@ -180,6 +180,33 @@ TEST(CanonicalLayout, NoTextIndentsDeeperThanTheFormatNests) {
   EXPECT_LT(laid.size(), 2 * text.size());
 }
 
+// Any text, however broken, lays out to a text that lays out to itself.
+TEST(CanonicalLayout, AnyTextTwiceIsOnce) {
+  std::vector<std::string> texts;
+  for (const char* folder : {"hostile/sf", "hostile/instructions", "invalid"}) {
+    for (const auto& entry :
+         fs::recursive_directory_iterator(fs::path(SCENE_TESTDATA_DIR) / folder)) {
+      if (entry.is_regular_file()) texts.push_back(readText(entry.path()));
+    }
+  }
+  const char* words[] = {"CAMERA", "light", "SPHERE", "START", "end", "OBJECT", "MATERIAL",
+                         "1",      "\r",    "\r\n",   "\n",    "\t",  " ",      "\xEF\xBB\xBF"};
+  std::mt19937_64 rng(5);
+  for (int round = 0; round < 500; ++round) {
+    std::string text;
+    for (int i = static_cast<int>(rng() % 200); i > 0; --i) text += words[rng() % std::size(words)];
+    texts.push_back(text);
+  }
+  for (const std::string& text : texts) {
+    for (Format format : {Format::SceneFile, Format::InstructionFile}) {
+      std::optional<std::string> laid = canonicalLayout(text, format);
+      if (laid) {
+        EXPECT_EQ(canonicalLayout(*laid, format), laid) << text;
+      }
+    }
+  }
+}
+
 TEST(CanonicalLayout, NothingForOtherFormatsOrForALineOfEndlessWords) {
   EXPECT_FALSE(canonicalLayout("sphere { 0, 1 }", Format::Pov));
   EXPECT_FALSE(canonicalLayout("{}", Format::Gltf));

@@ -20,8 +20,9 @@ namespace scene {
 /// the first line) and a byte-order mark are kept. Laying out the result
 /// again gives it back unchanged, and a writer's output is laid out
 /// already. Scene files and instruction files only: nothing for any other
-/// format, or for a text with a line of more than sixteen words
-/// (no valid line has so many). The caller lays out only a text that reads
+/// format, or for a text with a line of more than sixteen words, a carriage
+/// return before a line ending or a first word that begins with a byte-order
+/// mark (no valid text has any). The caller lays out only a text that reads
 /// without errors, since a broken text's structure is a guess.
 std::optional<std::string> canonicalLayout(std::string_view text, Format format);
 

@@ -15,6 +15,15 @@ LineLayout::LineLayout(std::string_view text) {
 
 bool LineLayout::line(const LineCursor& cursor, std::size_t indent, std::string_view keywords[3]) {
   if (cursor.tokenCount() > cursor.storedTokens()) return false;
+  // A carriage return that ends the last word would end the line once a
+  // newline follows it: the text would read otherwise laid out.
+  if (!cursor.blank() && cursor.token(cursor.storedTokens() - 1).text.ends_with('\r')) {
+    return false;
+  }
+  // Nor may a first word that starts like a byte-order mark start the text.
+  if (out_.empty() && !cursor.blank() && cursor.token(0).text.starts_with("\xEF\xBB\xBF")) {
+    return false;
+  }
   out_.append(indent * 2, ' ');
   for (std::size_t i = 0; i < cursor.storedTokens(); ++i) {
     if (i) out_ += ' ';

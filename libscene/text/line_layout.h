@@ -18,7 +18,7 @@ class LineLayout {
   // The cursor's line, its words joined by one space after `indent` levels of
   // two spaces; `keywords[i]`, where not empty, replaces word i (a keyword
   // in its canonical case). False, and nothing written, for a line with more
-  // words than a cursor keeps.
+  // words than a cursor keeps or whose last word ends in a carriage return.
   bool line(const LineCursor& cursor, std::size_t indent, std::string_view keywords[3] = nullptr);
 
   // A blank line, unless nothing has been written yet.
