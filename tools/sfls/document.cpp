@@ -92,7 +92,7 @@ void appendLineStarts(std::string_view text, std::size_t base, std::vector<std::
 Document::Document(std::string uri, std::int64_t version, std::string text)
     : uri_(std::move(uri)),
       version_(version),
-      text_(std::make_shared<const std::string>(std::move(text))) {
+      text_(std::make_shared<std::string>(std::move(text))) {
   indexLines();
 }
 
@@ -102,18 +102,30 @@ void Document::indexLines() {
 }
 
 void Document::applyChange(const std::optional<LspRange>& range, std::string_view newText) {
+  // Only this document holds the text: no check or analysis can see it
+  // change. (use_count is exact at 1: no other owner can appear from
+  // another thread, since only this one hands the text out.)
+  bool unshared = text_.use_count() == 1;
   if (!range) {
-    text_ = std::make_shared<const std::string>(newText);
+    if (unshared) {
+      text_->assign(newText);
+    } else {
+      text_ = std::make_shared<std::string>(newText);
+    }
     indexLines();
     return;
   }
   std::size_t start = offsetOf(range->start);
   std::size_t end = std::max(start, offsetOf(range->end));
-  const std::string& old = *text_;
-  auto text = std::make_shared<std::string>();
-  text->reserve(old.size() - (end - start) + newText.size());
-  text->append(old, 0, start).append(newText).append(old, end, std::string::npos);
-  text_ = std::move(text);
+  if (unshared) {
+    text_->replace(start, end - start, newText);
+  } else {
+    const std::string& old = *text_;
+    auto text = std::make_shared<std::string>();
+    text->reserve(old.size() - (end - start) + newText.size());
+    text->append(old, 0, start).append(newText).append(old, end, std::string::npos);
+    text_ = std::move(text);
+  }
 
   // Only the lines from the change on move: those that started inside the
   // replaced bytes go, the new text's come in, the later ones shift. A

@@ -42,7 +42,9 @@ class Document {
   const std::string& uri() const { return uri_; }
   std::int64_t version() const { return version_; }
   const std::string& text() const { return *text_; }
-  // The text, shared with the checks that read it while the document changes.
+  // The text, shared with the checks that read it while the document
+  // changes: a change copies it only while it is shared, and otherwise
+  // edits it in place (a 100 MB text is not copied on every keystroke).
   std::shared_ptr<const std::string> sharedText() const { return text_; }
 
   // One entry of didChange's contentChanges: `range` replaced by `newText`,
@@ -74,7 +76,7 @@ class Document {
 
   std::string uri_;
   std::int64_t version_ = 0;
-  std::shared_ptr<const std::string> text_;
+  std::shared_ptr<std::string> text_;
   std::vector<std::size_t> lineStarts_;
 };
 

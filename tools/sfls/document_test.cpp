@@ -76,6 +76,17 @@ TEST(Document, LeavesASharedTextAsItWas) {
   document.applyChange(LspRange{{0, 0}, {0, 3}}, "new");
   EXPECT_EQ(*shared, "old");
   EXPECT_EQ(document.text(), "new");
+  document.applyChange(std::nullopt, "whole");
+  EXPECT_EQ(*shared, "old");
+  EXPECT_EQ(document.text(), "whole");
+}
+
+TEST(Document, EditsATextNoOneSharesInPlace) {
+  Document document("file:///a.sf", 1, "abc\ndef");
+  const std::string* before = &document.text();
+  document.applyChange(LspRange{{1, 0}, {1, 1}}, "D");
+  EXPECT_EQ(&document.text(), before);
+  EXPECT_EQ(document.text(), "abc\nDef");
 }
 
 }  // namespace

@@ -366,15 +366,16 @@ void Server::didChange(const nlohmann::json& params) {
     return;
   }
   Document& changed = open->second;
+  // The last check is of an older text: its scene is dropped now rather
+  // than when the new one is done, so that two never share the memory, and
+  // the text, no longer shared, is edited in place.
+  analyses_.erase(uri);
   for (const nlohmann::json& change : params.at("contentChanges")) {
     std::optional<LspRange> range;
     if (auto found = change.find("range"); found != change.end()) range = found->get<LspRange>();
     changed.applyChange(range, change.at("text").get_ref<const std::string&>());
   }
   changed.setVersion(params.at("textDocument").at("version").get<std::int64_t>());
-  // The last check is of an older text: its scene is dropped now rather
-  // than when the new one is done, so that two never share the memory.
-  analyses_.erase(uri);
   scheduleCheck(changed);
 }
 
@@ -455,7 +456,10 @@ const Document* Server::document(const nlohmann::json& params) const {
 
 const Analysis* Server::currentAnalysis(const Document& document) const {
   auto found = analyses_.find(document.uri());
-  if (found == analyses_.end() || found->second->text != document.sharedText()) return nullptr;
+  if (found == analyses_.end() || found->second->version != document.version() ||
+      found->second->text != document.sharedText()) {
+    return nullptr;
+  }
   return found->second.get();
 }
 
