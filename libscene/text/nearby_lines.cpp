@@ -22,10 +22,11 @@ LineCursor cursorAt(std::string_view text, std::size_t lineStart, std::uint32_t 
   return cursor;
 }
 
-LineHead lineHead(std::string_view line) {
+LineHead lineHead(std::string_view line, int count) {
   std::string_view words[3];
   std::size_t i = 0;
-  for (std::string_view& word : words) {
+  for (int k = 0; k < count && k < 3; ++k) {
+    std::string_view& word = words[k];
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
     std::size_t start = i;
     while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;

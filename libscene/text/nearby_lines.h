@@ -36,13 +36,15 @@ class LinesBefore {
 // tokenized; it goes on to the lines after it.
 LineCursor cursorAt(std::string_view text, std::size_t lineStart, std::uint32_t line);
 
-// The first and second words of one line, "" where it has none.
+// The first three words of one line, "" where it has fewer; only the first
+// `count` are looked for, so that a line's numbers are not scanned for
+// words no one needs.
 struct LineHead {
   std::string_view first;
   std::string_view second;
   std::string_view third;
 };
-LineHead lineHead(std::string_view line);
+LineHead lineHead(std::string_view line, int count = 3);
 
 // The words of the cursor's line, and which of them holds `column` (a word
 // holds the column just past its end too).

@@ -20,11 +20,8 @@ struct FirstWord {
 };
 
 FirstWord firstWord(std::string_view line) {
-  std::size_t i = 0;
-  while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-  std::size_t start = i;
-  while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-  return FirstWord{line.substr(start, i - start), static_cast<std::uint32_t>(start + 1)};
+  std::string_view word = lineHead(line, 1).first;
+  return FirstWord{word, static_cast<std::uint32_t>(word.data() - line.data() + 1)};
 }
 
 bool isLetter(char c) {
