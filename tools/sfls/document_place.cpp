@@ -10,9 +10,12 @@ using scene::OutlineKind;
 
 std::optional<scene::Format> documentFormat(const Document& document, const Analysis* analysis) {
   if (analysis) return analysis->format;
-  // Recognition reads the first words only, so this costs nothing that
-  // grows with the text; the URI's extension decides what they leave open.
-  return scene::detectFormat(document.text(), document.uri());
+  // Recognition reads the first words, past any blank or comment lines:
+  // a prefix bounds what a text of nothing else costs each request. The
+  // URI's extension decides what the words leave open.
+  constexpr std::size_t kRecognitionPrefix = 4096;
+  std::string_view text = document.text();
+  return scene::detectFormat(text.substr(0, kRecognitionPrefix), document.uri());
 }
 
 std::optional<DocumentPlace> placeInDocument(const Document& document, const Analysis* analysis,
