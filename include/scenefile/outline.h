@@ -83,6 +83,9 @@ struct TextPlace {
   /// The innermost record or block the line is in, where the text says:
   /// its kind, the object's kind, and the line it starts on. Nothing at
   /// the top level of an instruction file or between scene file records.
+  /// A scene file's record name line is in its record (recordLine 0); an
+  /// instruction file's START line is in the block around it, where the
+  /// name it starts is completed, and an END line in the block it ends.
   std::optional<OutlineKind> block;
   std::optional<ObjectKind> objectKind;
   std::uint32_t blockFirstLine = 0;
@@ -90,7 +93,8 @@ struct TextPlace {
   /// 2 to 5 the matrix's rows 1 to 4.
   std::optional<std::uint32_t> recordLine;
   /// Instruction files: the first words of the other lines of the block the
-  /// line is in ("COLOUR", "AMBIENT", ...), as far as they were read.
+  /// line is in ("COLOUR", "AMBIENT", ...), as far as they were read; an
+  /// OBJECT's sections by their names ("MATERIAL", "TRANSFORMATION").
   std::vector<std::string_view> keywordsInBlock;
 };
 
