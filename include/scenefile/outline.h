@@ -103,7 +103,7 @@ struct TextPlace {
 /// is the byte offset of that line's first character, which an editor
 /// already keeps. Scene files and instruction files only; an empty place
 /// for any other format.
-TextPlace placeAt(std::string_view text, Format format, std::size_t lineStart,
-                  std::uint32_t line, std::uint32_t column);
+TextPlace placeAt(std::string_view text, Format format, std::size_t lineStart, std::uint32_t line,
+                  std::uint32_t column);
 
 }  // namespace scene
