@@ -71,8 +71,11 @@ class Client:
         body = json.dumps(message, separators=(",", ":")).encode()
         # Timed from before the write: a big document's transfer counts.
         sent = time.perf_counter()
-        self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
-        self.process.stdin.flush()
+        try:
+            self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+            self.process.stdin.flush()
+        except OSError as error:
+            raise Failure(f"sfls no longer reads its input ({self._status()}): {error}")
         return sent
 
     def notify(self, method, params):
@@ -101,13 +104,19 @@ class Client:
             except queue.Empty:
                 continue
             if message is None:
-                raise Failure(f"sfls exited (status {self.process.wait()}) while waiting for {what}")
+                raise Failure(f"sfls closed its output ({self._status()}) while waiting for {what}")
             if "id" in message and "method" in message:
                 self.send({"id": message["id"], "result": None})
             elif matches(message):
                 return self._checked(arrived, message, what)
             elif message.get("method") != "window/logMessage":
                 self.pending.append((arrived, message))
+
+    def _status(self):
+        try:
+            return f"exit status {self.process.wait(timeout=1)}"
+        except subprocess.TimeoutExpired:
+            return "still running"
 
     @staticmethod
     def _checked(arrived, message, what):
