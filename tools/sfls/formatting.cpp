@@ -1,9 +1,9 @@
 // textDocument/formatting and rangeFormatting: the edits that turn the text
 // into its canonical layout (scene::canonicalLayout). Layout changes only
-// blanks and line breaks, so the two texts are walked side by side, word
-// by word, and each run of blanks that differs becomes one edit of just the
-// bytes that differ: the cursor and the rest of the line stay where they
-// were.
+// blanks, line breaks and a keyword's case, so the two texts are walked side
+// by side, word by word, and each run of blanks or word that differs becomes
+// one edit of just the bytes that differ: the cursor and the rest of the
+// line stay where they were.
 #include <string>
 #include <string_view>
 
@@ -48,9 +48,10 @@ class EditList {
  public:
   explicit EditList(const Document& document) : document_(document) {}
 
-  // Old blanks [oldBegin, oldEnd) of the document become `blanks`; only
-  // the bytes between their common start and common end are replaced.
-  void replaceBlanks(std::size_t oldBegin, std::size_t oldEnd, std::string_view blanks) {
+  // Bytes [oldBegin, oldEnd) of the document, a run of blanks or a word,
+  // become `blanks`; only the bytes between their common start and common
+  // end are replaced.
+  void replaceRun(std::size_t oldBegin, std::size_t oldEnd, std::string_view blanks) {
     std::string_view old = std::string_view(document_.text()).substr(oldBegin, oldEnd - oldBegin);
     if (old == blanks) return;
     std::size_t prefix = 0;
@@ -97,18 +98,20 @@ nlohmann::json editsTo(const Document& document, std::string_view layout) {
   for (;;) {
     std::size_t atWord = skipBlanks(text, at);
     std::size_t toWord = skipBlanks(layout, to);
-    edits.replaceBlanks(at, atWord, layout.substr(to, toWord - to));
+    edits.replaceRun(at, atWord, layout.substr(to, toWord - to));
     at = atWord;
     to = toWord;
     if (at == text.size() || to == layout.size()) break;
     std::size_t atEnd = skipWord(text, at);
     std::size_t toEnd = skipWord(layout, to);
-    if (text.substr(at, atEnd - at) != layout.substr(to, toEnd - to)) break;
+    // A keyword in another case becomes the table's spelling.
+    edits.replaceRun(at, atEnd, layout.substr(to, toEnd - to));
     at = atEnd;
     to = toEnd;
   }
-  // Words that differ would be a layout that changed more than blanks:
-  // then the text is replaced whole rather than edited out of place.
+  // Words left over on one side would be a layout that changed more than
+  // blanks and words: then the text is replaced whole rather than edited
+  // out of place.
   if (at != text.size() || to != layout.size()) edits.replaceAll(layout);
   return std::move(edits.edits());
 }
