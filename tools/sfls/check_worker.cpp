@@ -1,10 +1,18 @@
 #include "tools/sfls/check_worker.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 
 #include "tools/common/document_check.h"
 
 namespace sfls {
+namespace {
+
+constexpr int kCheckNiceness = 10;
+
+}  // namespace
 
 std::shared_ptr<Analysis> analyse(const CheckJob& job, std::stop_token stop) {
   std::string shownName = job.file.empty() ? job.uri : job.file.string();
@@ -60,6 +68,11 @@ void CheckWorker::forget(const std::string& uri) {
 }
 
 void CheckWorker::work() {
+  // A check of a large file takes every core (ReadOptions::threads 0) for
+  // a second; at a lower priority, which the reader's threads inherit from
+  // this one, it leaves the handling thread the core it needs to answer
+  // hover and completion meanwhile. A failure leaves the priority as it is.
+  setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kCheckNiceness);
   for (;;) {
     CheckJob job;
     std::stop_token stop;

@@ -286,11 +286,13 @@ bool Server::handleFeature(const nlohmann::json& id, const std::string& method,
         responseMessage(id, completion(*open, currentAnalysis(*open),
                                        params.at("position").get<LspPosition>(), snippets_)));
   } else if (method == "textDocument/documentSymbol") {
-    answerWhenChecked(id, open->uri(),
-                      [](const Document& d, const Analysis& a) { return documentSymbols(d, a); });
+    answerWhenChecked(
+        id, open->uri(), [](const Document& d, const Analysis& a) { return documentSymbols(d, a); },
+        true);
   } else if (method == "textDocument/foldingRange") {
-    answerWhenChecked(id, open->uri(),
-                      [](const Document& d, const Analysis& a) { return foldingRanges(d, a); });
+    answerWhenChecked(
+        id, open->uri(), [](const Document& d, const Analysis& a) { return foldingRanges(d, a); },
+        true);
   } else if (method == "textDocument/formatting") {
     answerWhenChecked(id, open->uri(), [](const Document& d, const Analysis& a) {
       return formattingEdits(d, a, std::nullopt);
@@ -354,6 +356,7 @@ void Server::didOpen(const nlohmann::json& params) {
   auto& text = const_cast<nlohmann::json&>(item.at("text")).get_ref<std::string&>();
   Document opened(uri, item.at("version").get<std::int64_t>(), std::move(text));
   analyses_.erase(uri);
+  staleOutlines_.erase(uri);
   auto [place, inserted] = documents_.insert_or_assign(uri, std::move(opened));
   scheduleCheck(place->second);
 }
@@ -366,10 +369,7 @@ void Server::didChange(const nlohmann::json& params) {
     return;
   }
   Document& changed = open->second;
-  // The last check is of an older text: its scene is dropped now rather
-  // than when the new one is done, so that two never share the memory, and
-  // the text, no longer shared, is edited in place.
-  analyses_.erase(uri);
+  dropAnalysis(uri);
   for (const nlohmann::json& change : params.at("contentChanges")) {
     std::optional<LspRange> range;
     if (auto found = change.find("range"); found != change.end()) range = found->get<LspRange>();
@@ -383,6 +383,7 @@ void Server::didClose(const nlohmann::json& params) {
   std::string uri = uriOf(params);
   checks_.forget(uri);
   analyses_.erase(uri);
+  staleOutlines_.erase(uri);
   if (documents_.erase(uri) == 0) return;
   std::erase_if(waiting_, [&](const WaitingRequest& request) {
     if (request.uri != uri) return false;
@@ -424,6 +425,7 @@ void Server::checked(const std::string& uri, std::shared_ptr<Analysis> analysis)
       "textDocument/publishDiagnostics",
       publishDiagnosticsParams(document, *analysis, options_.diagnosticsDocUri)));
   analyses_[uri] = analysis;
+  staleOutlines_.erase(uri);
   std::vector<WaitingRequest> ready;
   std::erase_if(waiting_, [&](WaitingRequest& request) {
     if (request.uri != uri) return false;
@@ -439,11 +441,29 @@ void Server::checked(const std::string& uri, std::shared_ptr<Analysis> analysis)
   }
 }
 
+void Server::dropAnalysis(const std::string& uri) {
+  auto found = analyses_.find(uri);
+  if (found == analyses_.end()) return;
+  // The last check is of an older text: its scene is dropped now rather
+  // than when the new one is done, so that two never share the memory, and
+  // the text, no longer shared, is edited in place. Its outline stays.
+  auto outline = std::make_shared<Analysis>();
+  outline->version = found->second->version;
+  outline->format = found->second->format;
+  outline->outline = std::move(found->second->outline);
+  staleOutlines_[uri] = {std::move(outline), documents_.at(uri).lineCount()};
+  analyses_.erase(found);
+}
+
 void Server::answerWhenChecked(const nlohmann::json& id, const std::string& uri,
-                               AnalysisAnswer answer) {
+                               AnalysisAnswer answer, bool outlineWillDo) {
   const Document& open = documents_.at(uri);
+  auto stale = staleOutlines_.find(uri);
   if (const Analysis* analysis = currentAnalysis(open)) {
     writer_.send(responseMessage(id, answer(open, *analysis)));
+  } else if (outlineWillDo && stale != staleOutlines_.end() &&
+             stale->second.lineCount == open.lineCount()) {
+    writer_.send(responseMessage(id, answer(open, *stale->second.analysis)));
   } else {
     waiting_.push_back({id, uri, std::move(answer)});
   }

@@ -75,7 +75,12 @@ class Server {
   void cancelRequest(const nlohmann::json& params);
   void scheduleCheck(const Document& document);
   void checked(const std::string& uri, std::shared_ptr<Analysis> analysis);
-  void answerWhenChecked(const nlohmann::json& id, const std::string& uri, AnalysisAnswer answer);
+  // Answers now where the current version's check is done, else when it
+  // is; with `outlineWillDo`, now from the last check's outline where the
+  // document still has as many lines as then (symbols, folding).
+  void answerWhenChecked(const nlohmann::json& id, const std::string& uri, AnalysisAnswer answer,
+                         bool outlineWillDo = false);
+  void dropAnalysis(const std::string& uri);
 
   const Document* document(const nlohmann::json& params) const;
   // The check of `document`'s current version, or nullptr while it runs.
@@ -101,7 +106,16 @@ class Server {
   bool snippets_ = false;
   bool workDoneProgress_ = false;
   std::map<std::string, Document> documents_;
-  std::map<std::string, std::shared_ptr<const Analysis>> analyses_;
+  std::map<std::string, std::shared_ptr<Analysis>> analyses_;
+  // The outline of a document's last check, kept (its scene dropped) once
+  // the document has changed, with the number of lines it had then: an
+  // outline of a text with as many lines is near enough for symbols and
+  // folding while the new check runs, as clangd serves a stale AST.
+  struct StaleOutline {
+    std::shared_ptr<const Analysis> analysis;
+    std::uint32_t lineCount = 0;
+  };
+  std::map<std::string, StaleOutline> staleOutlines_;
   std::vector<WaitingRequest> waiting_;
 
   // Last, so that they stop first: their threads post to the queue above.
