@@ -164,7 +164,9 @@ void Server::handleMessage(nlohmann::json message) {
   auto params = message.find("params");
   const nlohmann::json& given = params != message.end() ? *params : kNoParams;
   const std::string& name = method->get_ref<const std::string&>();
-  if (id == message.end()) {
+  // exit ends the server even when sent with an id: the reading thread
+  // stops at it whatever its shape, and nothing would come after it.
+  if (id == message.end() || name == "exit") {
     try {
       handleNotification(name, given);
     } catch (const std::exception& error) {

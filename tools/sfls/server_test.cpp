@@ -141,6 +141,23 @@ TEST(Server, AnswersTheLifecycle) {
   EXPECT_TRUE(session.response("end")["result"].is_null());
 }
 
+TEST(Server, EndsAtExitSentAsARequest) {
+  nlohmann::json exitRequest = {{"id", 5}, {"method", "exit"}};
+  EXPECT_EQ(serve({kInitialize, kShutdown, exitRequest}).status, 0);
+}
+
+TEST(Server, CancelsARequestThatWaitsForItsCheck) {
+  std::string uri = "file:///nowhere/large.sf";
+  std::string large = kTypo;
+  for (int i = 0; i < 300'000; ++i) large += "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+  nlohmann::json symbols = {{"id", 2},
+                            {"method", "textDocument/documentSymbol"},
+                            {"params", {{"textDocument", {{"uri", uri}}}}}};
+  nlohmann::json cancel = {{"method", "$/cancelRequest"}, {"params", {{"id", 2}}}};
+  Session session = serve({kInitialize, didOpen(uri, large), symbols, cancel, kShutdown, kExit});
+  EXPECT_EQ(session.response(2)["error"]["code"], -32800);
+}
+
 TEST(Server, EndsWithOneWithoutShutdown) {
   EXPECT_EQ(serve({kInitialize, kExit}).status, 1);
   // The input ending is no exit either.
