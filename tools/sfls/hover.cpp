@@ -20,6 +20,8 @@ using scene::KeywordPlace;
 using scene::OutlineItem;
 using scene::OutlineKind;
 
+constexpr const char* kChannels[] = {"red", "green", "blue"};
+
 // What the table says of a keyword; `titled`, after its name and arguments.
 std::string keywordMarkdown(const scene::KeywordInfo& keyword, bool titled = true) {
   std::string out;
@@ -144,9 +146,8 @@ std::string sceneFileHover(const DocumentPlace& at, const Analysis* analysis) {
         {"**" + name + "**", keyword ? keywordMarkdown(*keyword, false) : "", itemDetails(known)});
   }
   if (recordLine == 1) {
-    static const char* const channels[] = {"red", "green", "blue"};
     if (index >= 3) return "";
-    return name + ", colour: " + channels[index] + "\n\n" + colourMeaning(*place.block);
+    return name + ", colour: " + kChannels[index] + "\n\n" + colourMeaning(*place.block);
   }
   std::uint32_t row = recordLine - 1;
   std::uint32_t column = static_cast<std::uint32_t>(index) + 1;
@@ -219,7 +220,9 @@ std::string instructionHover(const DocumentPlace& at, const Analysis* analysis) 
   std::vector<std::string_view> names = argumentNames(keyword->arguments);
   std::size_t argument = place.wordIndex - 1;
   if (argument >= names.size()) return "";
-  return joined({"`" + std::string(names[argument]) + "` of **" + std::string(keyword->word) + "**",
+  std::string name = "`" + std::string(names[argument]) + "`";
+  if (keyword->arguments == "r g b") name += std::string(" (") + kChannels[argument] + ")";
+  return joined({name + " of **" + std::string(keyword->word) + "**",
                  keywordMarkdown(*keyword, false), matrix});
 }
 

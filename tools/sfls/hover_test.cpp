@@ -89,7 +89,9 @@ TEST(Hover, ExplainsAKeywordFromTheTable) {
   EXPECT_THAT(text, HasSubstr(std::string(ambient->meaning)));
   EXPECT_THAT(text, HasSubstr("Valid: " + std::string(ambient->range)));
   // Its number is the keyword's argument.
-  EXPECT_THAT(hoverText(opened, 21, 13), HasSubstr("of **AMBIENT**"));
+  EXPECT_THAT(hoverText(opened, 21, 13), StartsWith("`a` of **AMBIENT**"));
+  // Line 20 (from 0) is "    COLOUR 0.0 0.0 1.0".
+  EXPECT_THAT(hoverText(opened, 20, 16), StartsWith("`g` (green) of **COLOUR**"));
 }
 
 TEST(Hover, ShowsTheMatrixOfAnOperationAndOfTheSection) {
