@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace sfls {
 namespace {
 
@@ -87,6 +89,36 @@ TEST(Document, EditsATextNoOneSharesInPlace) {
   document.applyChange(LspRange{{1, 0}, {1, 1}}, "D");
   EXPECT_EQ(&document.text(), before);
   EXPECT_EQ(document.text(), "abc\nDef");
+}
+
+// Random edits, some across lines, some past the end, in text with
+// multi-byte characters: the lines indexed edit by edit are those of the
+// text indexed afresh, and the text is what the offsets of a fresh index say.
+TEST(Document, IndexesLinesEditByEditAsAfresh) {
+  std::mt19937 random(7);
+  const std::vector<std::string> pieces = {"a", "\n", "\r\n", "é", "😀", "", "xy\nz", "\n\n"};
+  auto pick = [&](std::size_t n) { return static_cast<std::uint32_t>(random() % n); };
+  Document document("file:///a.sf", 1, "first\nsecond é\n\nthird😀\n");
+  for (int i = 0; i < 2000; ++i) {
+    LspPosition a{pick(document.lineCount() + 1), pick(12)};
+    LspPosition b{pick(document.lineCount() + 1), pick(12)};
+    if (b.line < a.line || (b.line == a.line && b.character < a.character)) std::swap(a, b);
+    std::string inserted = pieces[pick(pieces.size())] + pieces[pick(pieces.size())];
+    Document fresh("file:///a.sf", 1, document.text());
+    std::string expected = document.text();
+    std::size_t start = fresh.offsetOf(a);
+    std::size_t end = std::max(start, fresh.offsetOf(b));
+    expected.replace(start, end - start, inserted);
+    std::shared_ptr<const std::string> holder;
+    if (i % 3 == 0) holder = document.sharedText();  // the copying path too
+    document.applyChange(LspRange{a, b}, inserted);
+    ASSERT_EQ(document.text(), expected) << "edit " << i;
+    Document afresh("file:///a.sf", 1, expected);
+    ASSERT_EQ(document.lineCount(), afresh.lineCount()) << "edit " << i;
+    for (std::uint32_t line = 0; line < afresh.lineCount(); ++line) {
+      ASSERT_EQ(document.lineOffset(line), afresh.lineOffset(line)) << "edit " << i;
+    }
+  }
 }
 
 }  // namespace
