@@ -61,15 +61,8 @@ class Items {
     bool withStops = snippets_ && takesValues(info);
     if (withStops) {
       int stop = 0;
-      std::string_view arguments = info.arguments;
-      while (!arguments.empty()) {
-        std::size_t space = arguments.find(' ');
-        std::string_view name = arguments.substr(0, space);
-        if (!name.empty()) {
-          newText += " ${" + std::to_string(++stop) + ":" + std::string(name) + "}";
-        }
-        if (space == std::string_view::npos) break;
-        arguments.remove_prefix(space + 1);
+      for (std::string_view name : argumentNames(info.arguments)) {
+        newText += " ${" + std::to_string(++stop) + ":" + std::string(name) + "}";
       }
     }
     std::string documentation(info.meaning);

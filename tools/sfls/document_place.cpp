@@ -108,6 +108,17 @@ WordRole instructionWordRole(const scene::TextPlace& place, std::size_t index) {
   return {first, true};
 }
 
+std::vector<std::string_view> argumentNames(std::string_view arguments) {
+  std::vector<std::string_view> names;
+  while (!arguments.empty()) {
+    std::size_t space = arguments.find(' ');
+    if (space != 0) names.push_back(arguments.substr(0, space));
+    if (space == std::string_view::npos) break;
+    arguments.remove_prefix(space + 1);
+  }
+  return names;
+}
+
 const scene::OutlineItem* itemStartingAt(const Analysis& analysis, std::uint32_t firstLine) {
   const scene::OutlineItem* item = analysis.outline.innermostAt(firstLine);
   while (item && item->firstLine != firstLine) {

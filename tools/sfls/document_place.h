@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "scenefile/format.h"
 #include "scenefile/keywords.h"
@@ -49,6 +51,10 @@ scene::KeywordPlace placeInside(scene::OutlineKind kind);
 // The block or section name an `END` of a block of `kind` takes: "CAMERA",
 // "MATERIAL", ...
 std::string_view blockWord(scene::OutlineKind kind);
+
+// The words of a keyword's arguments (KeywordInfo::arguments): "x y z"
+// gives x, y and z.
+std::vector<std::string_view> argumentNames(std::string_view arguments);
 
 // The block or section kind `word` names, if any.
 std::optional<scene::OutlineKind> blockNamed(std::string_view word);

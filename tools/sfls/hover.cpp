@@ -35,18 +35,6 @@ std::string keywordMarkdown(const scene::KeywordInfo& keyword, bool titled = tru
   return out;
 }
 
-// The words of a keyword's arguments: "x y z" gives x, y, z.
-std::vector<std::string_view> argumentNames(std::string_view arguments) {
-  std::vector<std::string_view> names;
-  while (!arguments.empty()) {
-    std::size_t space = arguments.find(' ');
-    if (space != 0) names.push_back(arguments.substr(0, space));
-    if (space == std::string_view::npos) break;
-    arguments.remove_prefix(space + 1);
-  }
-  return names;
-}
-
 // What the check of this version knows of the block or record at the place.
 struct Known {
   const Analysis* analysis = nullptr;
