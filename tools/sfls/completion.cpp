@@ -210,6 +210,11 @@ void instructionItems(const Document& document, const DocumentPlace& at, const T
       continue;
     }
     if (once && givenInBlock(place, info->word)) continue;
+    // After END, the name of the block it closes alone.
+    if (typed.index == 1 && place.block && info->word != blockWord(*place.block) &&
+        !place.words.empty() && place.words[0].text == "END") {
+      continue;
+    }
     if (where == KeywordPlace::BlockName && info->word == "CAMERA" && cameraTaken) continue;
     if (where == KeywordPlace::Object && info->word == "START" && givenInBlock(place, "MATERIAL") &&
         givenInBlock(place, "TRANSFORMATION")) {

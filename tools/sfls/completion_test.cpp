@@ -129,6 +129,8 @@ TEST(Completion, OffersTheSectionsAnObjectHasNot) {
   EXPECT_THAT(labels(itemsAt(object, 14, 0)), UnorderedElementsAre("START", "END OBJECT"));
   EXPECT_THAT(labels(itemsAt(object, 14, 0, true)),
               UnorderedElementsAre("START", "END OBJECT", "START TRANSFORMATION section"));
+  Opened end = openText(withLine(text, 14, "END "), "scene.txt");
+  EXPECT_THAT(labels(itemsAt(end, 14, 4)), UnorderedElementsAre("OBJECT"));
   Opened section = openText(withLine(text, 14, "START "), "scene.txt");
   EXPECT_THAT(labels(itemsAt(section, 14, 6)), UnorderedElementsAre("TRANSFORMATION"));
   // The sphere of all-primitives.txt has both: line 24 (from 0) is its END.
