@@ -8,8 +8,12 @@
 
 namespace sfls {
 
+// Member by member, as an initializer list would copy each value once more:
+// a document's symbols hold thousands of these.
 inline void to_json(nlohmann::json& out, const LspPosition& position) {
-  out = {{"line", position.line}, {"character", position.character}};
+  out = nlohmann::json(nlohmann::json::value_t::object);
+  out["line"] = position.line;
+  out["character"] = position.character;
 }
 
 inline void from_json(const nlohmann::json& in, LspPosition& position) {
@@ -18,7 +22,9 @@ inline void from_json(const nlohmann::json& in, LspPosition& position) {
 }
 
 inline void to_json(nlohmann::json& out, const LspRange& range) {
-  out = {{"start", range.start}, {"end", range.end}};
+  out = nlohmann::json(nlohmann::json::value_t::object);
+  out["start"] = range.start;
+  out["end"] = range.end;
 }
 
 inline void from_json(const nlohmann::json& in, LspRange& range) {

@@ -52,10 +52,13 @@ nlohmann::json symbolOf(const Document& document, const Analysis& analysis,
   LspRange range = linesRange(document, item.firstLine, item.lastLine);
   LspRange selection = item.name.known() ? document.toLsp(item.name) : range;
   if (!contains(range, selection)) selection = {range.start, range.start};
-  nlohmann::json symbol = {{"name", itemName(item.kind, item.objectKind, item.number)},
-                           {"kind", symbolKind(item.kind)},
-                           {"range", range},
-                           {"selectionRange", selection}};
+  // Member by member: an initializer list would copy each nested object
+  // once more, and this runs for thousands of items a request.
+  nlohmann::json symbol(nlohmann::json::value_t::object);
+  symbol["name"] = itemName(item.kind, item.objectKind, item.number);
+  symbol["kind"] = symbolKind(item.kind);
+  symbol["range"] = range;
+  symbol["selectionRange"] = selection;
   const scene::Scene& scene = analysis.result.scene;
   if (item.kind == OutlineKind::OutputFile && scene.outputFile &&
       scene.outputFileSpan.line == item.firstLine) {
