@@ -21,6 +21,8 @@ struct Analysis {
   // The scene and exactly sfcheck's diagnostics (tools::checkDocument).
   scene::ReadResult result;
   scene::Outline outline;
+  // How long the check took, for sfls --verbose.
+  double seconds = 0;
 };
 
 }  // namespace sfls

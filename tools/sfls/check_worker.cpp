@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "tools/common/document_check.h"
 
@@ -15,6 +16,7 @@ constexpr int kCheckNiceness = 10;
 }  // namespace
 
 std::shared_ptr<Analysis> analyse(const CheckJob& job, std::stop_token stop) {
+  auto start = std::chrono::steady_clock::now();
   std::string shownName = job.file.empty() ? job.uri : job.file.string();
   scene::ReadOptions options;
   options.stop = stop;
@@ -29,6 +31,8 @@ std::shared_ptr<Analysis> analyse(const CheckJob& job, std::stop_token stop) {
   if (check.format == scene::Format::SceneFile || check.format == scene::Format::InstructionFile) {
     analysis->outline = scene::outlineOf(*job.text, *check.format);
   }
+  analysis->seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return analysis;
 }
 
@@ -67,6 +71,14 @@ void CheckWorker::forget(const std::string& uri) {
   std::erase_if(waiting_, [&](const CheckJob& job) { return job.uri == uri; });
 }
 
+void CheckWorker::release(std::shared_ptr<Analysis> analysis) {
+  {
+    std::lock_guard lock(mutex_);
+    released_.push_back(std::move(analysis));
+  }
+  wake_.notify_one();
+}
+
 void CheckWorker::work() {
   // A check of a large file takes every core (ReadOptions::threads 0) for
   // a second; at a lower priority, which the reader's threads inherit from
@@ -76,16 +88,20 @@ void CheckWorker::work() {
   for (;;) {
     CheckJob job;
     std::stop_token stop;
+    std::vector<std::shared_ptr<Analysis>> released;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [this] { return stopping_ || !waiting_.empty(); });
+      wake_.wait(lock, [this] { return stopping_ || !waiting_.empty() || !released_.empty(); });
       if (stopping_) return;
+      released.swap(released_);
+      if (waiting_.empty()) continue;
       job = std::move(waiting_.front());
       waiting_.erase(waiting_.begin());
       runningUri_ = job.uri;
       runningStop_ = std::stop_source();
       stop = runningStop_.get_token();
     }
+    released.clear();
     std::shared_ptr<Analysis> analysis = analyse(job, stop);
     {
       std::lock_guard lock(mutex_);

@@ -47,6 +47,10 @@ class CheckWorker {
   void schedule(CheckJob job);
   // Drops the document's waiting check (the document was closed).
   void forget(const std::string& uri);
+  // Frees `analysis` on the worker's thread, before its next check: the
+  // scene of a million objects takes tens of milliseconds to free, which
+  // the thread that answers requests should not spend.
+  void release(std::shared_ptr<Analysis> analysis);
 
  private:
   void work();
@@ -55,6 +59,7 @@ class CheckWorker {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::vector<CheckJob> waiting_;
+  std::vector<std::shared_ptr<Analysis>> released_;
   // The document being checked, and how to stop that check.
   std::string runningUri_;
   std::stop_source runningStop_;

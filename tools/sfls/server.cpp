@@ -1,5 +1,6 @@
 #include "tools/sfls/server.h"
 
+#include <chrono>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -140,6 +141,18 @@ void Server::logLine(const std::string& line) {
 }
 
 void Server::handleMessage(nlohmann::json message) {
+  if (!options_.verbose) {
+    dispatch(std::move(message));
+    return;
+  }
+  std::string method = message.is_object() ? message.value("method", "a response") : "?";
+  auto start = std::chrono::steady_clock::now();
+  dispatch(std::move(message));
+  std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  logLine("sfls: " + method + ": " + std::to_string(took.count()) + " ms");
+}
+
+void Server::dispatch(nlohmann::json message) {
   if (!message.is_object()) {
     writer_.send(errorMessage(nullptr, ErrorCode::InvalidRequest, "a message is a JSON object"));
     return;
@@ -423,6 +436,10 @@ void Server::checked(const std::string& uri, std::shared_ptr<Analysis> analysis)
     return;
   }
   const Document& document = open->second;
+  if (options_.verbose) {
+    logLine("sfls: checked " + uri + " version " + std::to_string(analysis->version) + " in " +
+            std::to_string(analysis->seconds * 1000) + " ms");
+  }
   writer_.send(notificationMessage(
       "textDocument/publishDiagnostics",
       publishDiagnosticsParams(document, *analysis, options_.diagnosticsDocUri)));
@@ -454,6 +471,8 @@ void Server::dropAnalysis(const std::string& uri) {
   outline->format = found->second->format;
   outline->outline = std::move(found->second->outline);
   staleOutlines_[uri] = {std::move(outline), documents_.at(uri).lineCount()};
+  found->second->text.reset();
+  checks_.release(std::move(found->second));
   analyses_.erase(found);
 }
 

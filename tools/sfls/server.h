@@ -30,6 +30,8 @@ struct ServerOptions {
   std::string diagnosticsDocUri;
   // The largest message read (json_rpc.h).
   std::uint64_t maxMessageSize = kMaxMessageSize;
+  // --verbose: how long each message and each check took, on the log.
+  bool verbose = false;
 };
 
 class Server {
@@ -59,6 +61,7 @@ class Server {
   void readLoop();
 
   void handleMessage(nlohmann::json message);
+  void dispatch(nlohmann::json message);
   void handleRequest(const nlohmann::json& id, const std::string& method,
                      const nlohmann::json& params);
   void handleNotification(const std::string& method, const nlohmann::json& params);

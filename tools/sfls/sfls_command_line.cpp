@@ -32,6 +32,7 @@ int runSfls(int argc, const char* const* argv, tools::ToolStreams streams) {
   }
   ServerOptions serverOptions;
   serverOptions.diagnosticsDocUri = diagnosticsDocUri();
+  serverOptions.verbose = options.common.verbose;
   Server server(streams.in, streams.out, streams.err, std::move(serverOptions));
   return server.run();
 }
