@@ -218,6 +218,11 @@ void Server::handleRequest(const nlohmann::json& id, const std::string& method,
   } else if (method == "shutdown") {
     shutdown_ = true;
     renders_.stopAll();
+    // Every request is answered: those still waiting for a check will not be.
+    for (const WaitingRequest& request : waiting_) {
+      writer_.send(errorMessage(request.id, ErrorCode::RequestCancelled, "the server shut down"));
+    }
+    waiting_.clear();
     writer_.send(responseMessage(id, nullptr));
   } else if (method == "workspace/executeCommand") {
     handleExecuteCommand(id, params);

@@ -158,6 +158,18 @@ TEST(Server, CancelsARequestThatWaitsForItsCheck) {
   EXPECT_EQ(session.response(2)["error"]["code"], -32800);
 }
 
+TEST(Server, AnswersTheRequestsThatWaitAtShutdown) {
+  std::string uri = "file:///nowhere/large.sf";
+  std::string large = kTypo;
+  for (int i = 0; i < 300'000; ++i) large += "SPHERE\n1 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+  nlohmann::json folding = {{"id", 2},
+                            {"method", "textDocument/foldingRange"},
+                            {"params", {{"textDocument", {{"uri", uri}}}}}};
+  Session session = serve({kInitialize, didOpen(uri, large), folding, kShutdown, kExit});
+  EXPECT_EQ(session.response(2)["error"]["code"], -32800);
+  EXPECT_EQ(session.status, 0);
+}
+
 TEST(Server, EndsWithOneWithoutShutdown) {
   EXPECT_EQ(serve({kInitialize, kExit}).status, 1);
   // The input ending is no exit either.
