@@ -45,11 +45,9 @@ std::string fixItTitle(const Document& document, const scene::FixIt& fixIt) {
   return "replace '" + old + "' with '" + fixIt.replacement + "'";
 }
 
-bool kindWanted(const nlohmann::json& only, std::string_view kind) {
-  if (!only.is_array()) return true;
-  return std::any_of(only.begin(), only.end(), [&](const nlohmann::json& wanted) {
-    if (!wanted.is_string()) return false;
-    const auto& name = wanted.get_ref<const std::string&>();
+bool kindWanted(const std::optional<std::vector<std::string>>& only, std::string_view kind) {
+  if (!only) return true;
+  return std::any_of(only->begin(), only->end(), [&](const std::string& name) {
     // A kind asks for its sub-kinds too: "source" for "source.fixAll".
     return kind == name || (kind.substr(0, name.size()) == name && kind.size() > name.size() &&
                             kind[name.size()] == '.');
@@ -109,15 +107,24 @@ nlohmann::json publishDiagnosticsParams(const Document& document, const Analysis
           {"diagnostics", std::move(diagnostics)}};
 }
 
-nlohmann::json codeActions(const Document& document, const Analysis& analysis,
-                           const nlohmann::json& params, const std::string& docUri) {
-  LspRange wanted = params.at("range").get<LspRange>();
-  const nlohmann::json* only = nullptr;
-  if (auto context = params.find("context"); context != params.end()) {
-    if (auto found = context->find("only"); found != context->end()) only = &*found;
+CodeActionQuery CodeActionQuery::fromParams(const nlohmann::json& params) {
+  CodeActionQuery query;
+  query.range = params.at("range").get<LspRange>();
+  auto context = params.find("context");
+  if (context == params.end() || !context->is_object()) return query;
+  auto only = context->find("only");
+  if (only == context->end() || !only->is_array()) return query;
+  query.only.emplace();
+  for (const nlohmann::json& kind : *only) {
+    if (kind.is_string()) query.only->push_back(kind.get<std::string>());
   }
-  static const nlohmann::json kAnyKind;
-  const nlohmann::json& kinds = only ? *only : kAnyKind;
+  return query;
+}
+
+nlohmann::json codeActions(const Document& document, const Analysis& analysis,
+                           const CodeActionQuery& query, const std::string& docUri) {
+  const LspRange& wanted = query.range;
+  const auto& kinds = query.only;
 
   nlohmann::json actions = nlohmann::json::array();
   const scene::DiagnosticList& diagnostics = analysis.result.diagnostics;

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "scenefile/diagnostic.h"
 #include "tools/sfls/analysis.h"
@@ -29,11 +31,20 @@ nlohmann::json lspDiagnostic(const Document& document, const scene::Diagnostic& 
 nlohmann::json publishDiagnosticsParams(const Document& document, const Analysis& analysis,
                                         const std::string& docUri);
 
+// What a textDocument/codeAction request asks, read from its params (and
+// only that kept: the params may nest a client's JSON arbitrarily deep).
+struct CodeActionQuery {
+  LspRange range;
+  // context.only: the kinds wanted; nothing for every kind.
+  std::optional<std::vector<std::string>> only;
+
+  static CodeActionQuery fromParams(const nlohmann::json& params);
+};
+
 // textDocument/codeAction: a quickfix for each fix-it whose range meets the
-// request's, and one source.fixAll with every fix-it that applies together
-// (scene::applicableFixIts, as sfcheck --fix) where there are two or more;
-// `params.context.only` filters the kinds.
+// query's, and one source.fixAll with every fix-it that applies together
+// (scene::applicableFixIts, as sfcheck --fix) where there are two or more.
 nlohmann::json codeActions(const Document& document, const Analysis& analysis,
-                           const nlohmann::json& params, const std::string& docUri);
+                           const CodeActionQuery& query, const std::string& docUri);
 
 }  // namespace sfls

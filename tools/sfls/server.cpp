@@ -1,9 +1,7 @@
 #include "tools/sfls/server.h"
 
 #include <chrono>
-#include <fstream>
 #include <iterator>
-#include <sstream>
 #include <thread>
 
 #include "tools/sfls/features.h"
@@ -66,8 +64,10 @@ void Server::readLoop() {
     IncomingMessage message = reader.next();
     switch (message.kind) {
       case IncomingMessage::Kind::Message: {
-        bool exit =
-            message.json.is_object() && message.json.value("method", nlohmann::json()) == "exit";
+        // (No copy of the message's values: a client's JSON may nest
+        // deeper than a recursive copy has stack for.)
+        auto method = message.json.is_object() ? message.json.find("method") : message.json.end();
+        bool exit = method != message.json.end() && *method == "exit";
         post([this, json = std::move(message.json)]() mutable { handleMessage(std::move(json)); });
         // Nothing is read after exit: the client may keep the pipe open.
         if (exit) return;
@@ -145,7 +145,9 @@ void Server::handleMessage(nlohmann::json message) {
     dispatch(std::move(message));
     return;
   }
-  std::string method = message.is_object() ? message.value("method", "a response") : "?";
+  auto found = message.is_object() ? message.find("method") : message.end();
+  std::string method =
+      found != message.end() && found->is_string() ? found->get<std::string>() : "?";
   auto start = std::chrono::steady_clock::now();
   dispatch(std::move(message));
   std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
@@ -323,8 +325,9 @@ bool Server::handleFeature(const nlohmann::json& id, const std::string& method,
       return formattingEdits(d, a, range);
     });
   } else {
-    answerWhenChecked(id, open->uri(), [this, params](const Document& d, const Analysis& a) {
-      return codeActions(d, a, params, options_.diagnosticsDocUri);
+    CodeActionQuery query = CodeActionQuery::fromParams(params);
+    answerWhenChecked(id, open->uri(), [this, query](const Document& d, const Analysis& a) {
+      return codeActions(d, a, query, options_.diagnosticsDocUri);
     });
   }
   return true;
@@ -336,14 +339,30 @@ void Server::handleExecuteCommand(const nlohmann::json& id, const nlohmann::json
     writer_.send(errorMessage(id, ErrorCode::InvalidParams, "unknown command " + command));
     return;
   }
-  // Arguments: the document's URI, then sfrender's settings by name.
-  const nlohmann::json arguments = params.value("arguments", nlohmann::json::array());
-  if (!arguments.is_array() || arguments.empty() || !arguments[0].is_string()) {
+  // Arguments: the document's URI, then sfrender's settings by name, each a
+  // number, a string or a boolean (so that nothing deeper is copied).
+  static const nlohmann::json kNone = nlohmann::json::array();
+  auto found = params.find("arguments");
+  const nlohmann::json& arguments = found != params.end() ? *found : kNone;
+  auto flat = [](const nlohmann::json& settings) {
+    return settings.is_null() ||
+           (settings.is_object() &&
+            std::all_of(settings.begin(), settings.end(),
+                        [](const nlohmann::json& value) { return value.is_primitive(); }));
+  };
+  if (!arguments.is_array() || arguments.empty() || arguments.size() > 2 ||
+      !arguments[0].is_string() || (arguments.size() == 2 && !flat(arguments[1]))) {
     writer_.send(errorMessage(id, ErrorCode::InvalidParams,
-                              "scenefile.render takes the document's URI, then its settings"));
+                              "scenefile.render takes the document's URI, then an object of "
+                              "its settings"));
     return;
   }
   std::string uri = arguments[0].get<std::string>();
+  auto open = documents_.find(uri);
+  if (open == documents_.end()) {
+    writer_.send(errorMessage(id, ErrorCode::InvalidParams, "the document is not open: " + uri));
+    return;
+  }
   std::optional<std::filesystem::path> file = pathOfUri(uri);
   if (!file) {
     writer_.send(errorMessage(id, ErrorCode::RequestFailed,
@@ -353,20 +372,10 @@ void Server::handleExecuteCommand(const nlohmann::json& id, const nlohmann::json
   RenderRequest request;
   request.file = *file;
   request.arguments = arguments.size() > 1 ? arguments[1] : nlohmann::json();
-  if (auto open = documents_.find(uri); open != documents_.end()) {
-    request.text = open->second.text();
-  } else {
-    std::ifstream in(*file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) {
-      writer_.send(errorMessage(id, ErrorCode::RequestFailed, "cannot read " + file->string()));
-      return;
-    }
-    request.text = std::move(text).str();
-  }
-  renders_.start(id, std::move(request), params.value("workDoneToken", nlohmann::json()),
-                 workDoneProgress_);
+  request.text = open->second.text();
+  auto token = params.find("workDoneToken");
+  bool hasToken = token != params.end() && isId(*token);
+  renders_.start(id, std::move(request), hasToken ? *token : nlohmann::json(), workDoneProgress_);
 }
 
 void Server::didOpen(const nlohmann::json& params) {

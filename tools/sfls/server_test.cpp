@@ -170,6 +170,37 @@ TEST(Server, AnswersTheRequestsThatWaitAtShutdown) {
   EXPECT_EQ(session.status, 0);
 }
 
+// A message's JSON nested a million deep, where a method, an id, a code
+// action's kinds and the render's settings belong: each refused or
+// ignored, never copied or printed by recursion, which would run out of
+// stack.
+TEST(Server, TakesJsonNestedAMillionDeep) {
+  std::string deep = std::string(1'000'000, '[') + std::string(1'000'000, ']');
+  std::string uri = "file:///nowhere/typo.sf";
+  auto message = [](const std::string& json) {
+    return "Content-Length: " + std::to_string(json.size()) + "\r\n\r\n" + json;
+  };
+  std::string range =
+      R"("range":{"start":{"line":0,"character":0},"end":{"line":0,"character":0}})";
+  std::string input =
+      framed(kInitialize) + framed(didOpen(uri, kTypo)) +
+      message(R"({"jsonrpc":"2.0","method":)" + deep + "}") +
+      message(R"({"jsonrpc":"2.0","id":)" + deep + R"(,"method":"shutdown"})") +
+      message(
+          R"({"jsonrpc":"2.0","id":2,"method":"textDocument/codeAction","params":{"textDocument":{"uri":")" +
+          uri + R"("},)" + range + R"(,"context":{"diagnostics":[],"only":)" + deep + "}}}") +
+      message(
+          R"({"jsonrpc":"2.0","id":3,"method":"workspace/executeCommand","params":{"command":"scenefile.render","arguments":[")" +
+          uri + R"(",{"width":)" + deep + "}]}}") +
+      message(R"({"jsonrpc":"2.0","method":"$/cancelRequest","params":{"id":)" + deep + "}}") +
+      framed(kShutdown) + framed(kExit);
+  std::istringstream in(input);
+  std::ostringstream out, log;
+  EXPECT_EQ(Server(in, out, log, ServerOptions{}).run(), 0);
+  EXPECT_NE(out.str().find(R"("id":3)"), std::string::npos);
+  EXPECT_NE(out.str().find(R"("id":"end")"), std::string::npos);
+}
+
 TEST(Server, EndsWithOneWithoutShutdown) {
   EXPECT_EQ(serve({kInitialize, kExit}).status, 1);
   // The input ending is no exit either.
