@@ -45,7 +45,8 @@ class CheckWorker {
   CheckWorker& operator=(const CheckWorker&) = delete;
 
   void schedule(CheckJob job);
-  // Drops the document's waiting check (the document was closed).
+  // Drops the document's waiting check and stops its running one (the
+  // document was closed, or changed again).
   void forget(const std::string& uri);
   // Frees `analysis` on the worker's thread, before its next check: the
   // scene of a million objects takes tens of milliseconds to free, which

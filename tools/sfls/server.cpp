@@ -398,6 +398,10 @@ void Server::didChange(const nlohmann::json& params) {
     return;
   }
   Document& changed = open->second;
+  // Neither the check waiting for the old version nor the last one's
+  // analysis will be wanted: dropped first, they no longer share the text,
+  // which is then edited in place.
+  checks_.forget(uri);
   dropAnalysis(uri);
   for (const nlohmann::json& change : params.at("contentChanges")) {
     std::optional<LspRange> range;
