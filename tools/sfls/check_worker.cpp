@@ -12,6 +12,7 @@ namespace sfls {
 namespace {
 
 constexpr int kCheckNiceness = 10;
+constexpr std::chrono::milliseconds kMaxDelay(150);
 
 }  // namespace
 
@@ -53,13 +54,16 @@ CheckWorker::~CheckWorker() {
 void CheckWorker::schedule(CheckJob job) {
   {
     std::lock_guard lock(mutex_);
+    auto took = lastTook_.find(job.uri);
+    auto delay = took == lastTook_.end() ? CheckJob::Clock::duration::zero() : took->second / 8;
+    auto notBefore = CheckJob::Clock::now() + std::min<CheckJob::Clock::duration>(delay, kMaxDelay);
     auto same = std::find_if(waiting_.begin(), waiting_.end(),
-                             [&](const CheckJob& other) { return other.uri == job.uri; });
+                             [&](const Waiting& other) { return other.job.uri == job.uri; });
     if (job.uri == runningUri_) runningStop_.request_stop();
     if (same != waiting_.end()) {
-      *same = std::move(job);
+      *same = {std::move(job), notBefore};
     } else {
-      waiting_.push_back(std::move(job));
+      waiting_.push_back({std::move(job), notBefore});
     }
   }
   wake_.notify_one();
@@ -68,7 +72,13 @@ void CheckWorker::schedule(CheckJob job) {
 void CheckWorker::forget(const std::string& uri) {
   std::lock_guard lock(mutex_);
   if (uri == runningUri_) runningStop_.request_stop();
-  std::erase_if(waiting_, [&](const CheckJob& job) { return job.uri == uri; });
+  std::erase_if(waiting_, [&](const Waiting& waiting) { return waiting.job.uri == uri; });
+}
+
+void CheckWorker::close(const std::string& uri) {
+  forget(uri);
+  std::lock_guard lock(mutex_);
+  lastTook_.erase(uri);
 }
 
 void CheckWorker::release(std::shared_ptr<Analysis> analysis) {
@@ -91,21 +101,42 @@ void CheckWorker::work() {
     std::vector<std::shared_ptr<Analysis>> released;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [this] { return stopping_ || !waiting_.empty() || !released_.empty(); });
+      auto ready = waiting_.end();
+      auto wakeAt = CheckJob::Clock::time_point::max();
+      // The first job whose time has come, else a wait until the earliest
+      // one's, or until a job, a release or the end comes.
+      auto look = [&] {
+        if (stopping_ || !released_.empty()) return true;
+        auto now = CheckJob::Clock::now();
+        wakeAt = CheckJob::Clock::time_point::max();
+        ready = std::find_if(waiting_.begin(), waiting_.end(),
+                             [&](const Waiting& waiting) { return waiting.notBefore <= now; });
+        for (const Waiting& waiting : waiting_) wakeAt = std::min(wakeAt, waiting.notBefore);
+        return ready != waiting_.end();
+      };
+      while (!look()) {
+        if (wakeAt == CheckJob::Clock::time_point::max()) {
+          wake_.wait(lock);
+        } else {
+          wake_.wait_until(lock, wakeAt);
+        }
+      }
       if (stopping_) return;
       released.swap(released_);
-      if (waiting_.empty()) continue;
-      job = std::move(waiting_.front());
-      waiting_.erase(waiting_.begin());
+      if (ready == waiting_.end()) continue;
+      job = std::move(ready->job);
+      waiting_.erase(ready);
       runningUri_ = job.uri;
       runningStop_ = std::stop_source();
       stop = runningStop_.get_token();
     }
     released.clear();
+    auto start = CheckJob::Clock::now();
     std::shared_ptr<Analysis> analysis = analyse(job, stop);
     {
       std::lock_guard lock(mutex_);
       runningUri_.clear();
+      if (!stop.stop_requested()) lastTook_[job.uri] = CheckJob::Clock::now() - start;
     }
     // A stopped check is partial and of a text the document has left.
     if (stop.stop_requested()) continue;

@@ -3,13 +3,18 @@
 // waiting: a newer version replaces it unchecked, so that a burst of edits
 // costs one check of the last, and stops the check of an older version
 // that is running (ReadOptions::stop), so that the newest waits for no
-// stale one to finish.
+// stale one to finish. A check waits an eighth of the document's last
+// check's time (at most 150 ms) for a further edit, as clangd's debounce
+// does: while keys are typed into a large document, no check holds its
+// text, which each edit then changes in place rather than copies.
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <stop_token>
@@ -22,6 +27,7 @@
 namespace sfls {
 
 struct CheckJob {
+  using Clock = std::chrono::steady_clock;
   std::string uri;
   std::int64_t version = 0;
   std::shared_ptr<const std::string> text;
@@ -46,8 +52,10 @@ class CheckWorker {
 
   void schedule(CheckJob job);
   // Drops the document's waiting check and stops its running one (the
-  // document was closed, or changed again).
+  // document changed again).
   void forget(const std::string& uri);
+  // The same, and forgets how long its checks took (it was closed).
+  void close(const std::string& uri);
   // Frees `analysis` on the worker's thread, before its next check: the
   // scene of a million objects takes tens of milliseconds to free, which
   // the thread that answers requests should not spend.
@@ -59,11 +67,18 @@ class CheckWorker {
   Checked checked_;
   std::mutex mutex_;
   std::condition_variable wake_;
-  std::vector<CheckJob> waiting_;
+  // A job, and when it may start.
+  struct Waiting {
+    CheckJob job;
+    CheckJob::Clock::time_point notBefore;
+  };
+  std::vector<Waiting> waiting_;
   std::vector<std::shared_ptr<Analysis>> released_;
   // The document being checked, and how to stop that check.
   std::string runningUri_;
   std::stop_source runningStop_;
+  // How long each document's last finished check took.
+  std::map<std::string, CheckJob::Clock::duration> lastTook_;
   bool stopping_ = false;
   std::thread thread_;
 };

@@ -414,7 +414,7 @@ void Server::didChange(const nlohmann::json& params) {
 
 void Server::didClose(const nlohmann::json& params) {
   std::string uri = uriOf(params);
-  checks_.forget(uri);
+  checks_.close(uri);
   analyses_.erase(uri);
   staleOutlines_.erase(uri);
   if (documents_.erase(uri) == 0) return;
@@ -442,8 +442,12 @@ void Server::cancelRequest(const nlohmann::json& params) {
 }
 
 void Server::scheduleCheck(const Document& document) {
-  checks_.schedule({document.uri(), document.version(), document.sharedText(),
-                    pathOfUri(document.uri()).value_or(std::filesystem::path())});
+  CheckJob job;
+  job.uri = document.uri();
+  job.version = document.version();
+  job.text = document.sharedText();
+  job.file = pathOfUri(document.uri()).value_or(std::filesystem::path());
+  checks_.schedule(std::move(job));
 }
 
 void Server::checked(const std::string& uri, std::shared_ptr<Analysis> analysis) {
