@@ -63,10 +63,10 @@ std::string diagnosticsDocUri() {
     std::filesystem::path installed =
         exe.parent_path().parent_path() / "share/doc/scenefile/DIAGNOSTICS.md";
     if (std::filesystem::exists(installed, error)) {
-      return uriOfPath(std::filesystem::weakly_canonical(installed, error)) + "#codes";
+      return uriOfPath(std::filesystem::weakly_canonical(installed, error));
     }
   }
-  return uriOfPath(std::filesystem::path(SFLS_SOURCE_DOCS) / "DIAGNOSTICS.md") + "#codes";
+  return uriOfPath(std::filesystem::path(SFLS_SOURCE_DOCS) / "DIAGNOSTICS.md");
 }
 
 nlohmann::json lspDiagnostic(const Document& document, const scene::Diagnostic& diagnostic,
@@ -74,12 +74,13 @@ nlohmann::json lspDiagnostic(const Document& document, const scene::Diagnostic& 
   std::string hint = tools::hintText(diagnostic);
   std::string message = diagnostic.message;
   if (!hint.empty()) message += "\nhint: " + hint;
-  nlohmann::json out = {{"range", document.toLsp(diagnostic.span)},
-                        {"severity", lspSeverity(diagnostic.severity)},
-                        {"code", scene::codeName(diagnostic.code)},
-                        {"codeDescription", {{"href", docUri}}},
-                        {"source", "scenefile"},
-                        {"message", message}};
+  nlohmann::json out = {
+      {"range", document.toLsp(diagnostic.span)},
+      {"severity", lspSeverity(diagnostic.severity)},
+      {"code", scene::codeName(diagnostic.code)},
+      {"codeDescription", {{"href", docUri + "#" + std::string(scene::codeName(diagnostic.code))}}},
+      {"source", "scenefile"},
+      {"message", message}};
   if (!diagnostic.notes.empty()) {
     nlohmann::json related = nlohmann::json::array();
     for (const scene::DiagnosticNote& note : diagnostic.notes) {

@@ -16,8 +16,8 @@ namespace sfls {
 
 // Where a diagnostic's code is explained: the DIAGNOSTICS.md installed
 // beside the program (PREFIX/share/doc/scenefile), else the source tree's.
-// Its codes are one table, under the heading "Codes", which is as close as
-// a link can point.
+// Each code's row of its table carries an anchor of the code's name, which
+// a diagnostic's link adds (DIAGNOSTICS.md#unknown-keyword).
 std::string diagnosticsDocUri();
 
 // One diagnostic: range, severity (error 1, warning 2, note 3), code,

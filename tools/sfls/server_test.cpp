@@ -104,7 +104,7 @@ Session serve(const std::vector<nlohmann::json>& messages, std::string tail = {}
   std::ostringstream out;
   std::ostringstream log;
   Session session;
-  session.status = Server(in, out, log, ServerOptions{"file:///doc#codes"}).run();
+  session.status = Server(in, out, log, ServerOptions{"file:///doc"}).run();
   std::istringstream written(out.str());
   MessageReader reader(written);
   for (IncomingMessage m = reader.next(); m.kind == IncomingMessage::Kind::Message;
@@ -254,7 +254,7 @@ TEST(Server, PublishesSfchecksDiagnosticsAndTheirFixes) {
   std::istream in(&input);
   std::ostream out(&output);
   std::ostringstream log;
-  Server server(in, out, log, ServerOptions{"file:///doc#codes"});
+  Server server(in, out, log, ServerOptions{"file:///doc"});
   int status = -1;
   std::thread serving([&] { status = server.run(); });
   // The code action waits for the document's check, then is answered.
@@ -278,7 +278,7 @@ TEST(Server, PublishesSfchecksDiagnosticsAndTheirFixes) {
   EXPECT_EQ(diagnostic["code"], "unknown-keyword");
   EXPECT_EQ(diagnostic["range"]["start"], (nlohmann::json{{"line", 12}, {"character", 0}}));
   EXPECT_EQ(diagnostic["range"]["end"], (nlohmann::json{{"line", 12}, {"character", 5}}));
-  EXPECT_EQ(diagnostic["codeDescription"]["href"], "file:///doc#codes");
+  EXPECT_EQ(diagnostic["codeDescription"]["href"], "file:///doc#unknown-keyword");
   EXPECT_NE(diagnostic["message"].get<std::string>().find("\nhint: did you mean 'SPHERE'?"),
             std::string::npos);
   nlohmann::json action = session.response(2)["result"][0];
