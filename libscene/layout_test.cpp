@@ -12,6 +12,7 @@
 #include "libscene/formats/instruction/instruction_writer.h"
 #include "libscene/formats/sf/sf_writer.h"
 #include "libscene/testing/random_scenes.h"
+#include "libscene/testing/test_support.h"
 #include "libscene/text/text_lines.h"
 #include "scenefile/convert.h"
 #include "scenefile/read.h"
@@ -21,12 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using scene::testing::readText;
 
 std::vector<std::string_view> wordsOf(std::string_view text) {
   std::vector<std::string_view> words;

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "libscene/testing/test_support.h"
 #include "scenefile/read.h"
 
 namespace scene {
@@ -16,12 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using scene::testing::readText;
 
 // What holds for the outline of any text: items in the order they start,
 // each inside the one that holds it, and innermostAt finding them.

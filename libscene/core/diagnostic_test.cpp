@@ -11,15 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "libscene/testing/test_support.h"
+
 namespace scene {
 namespace {
 
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using scene::testing::readText;
 
 TEST(DiagnosticCodes, NamesAreUniqueKebabCase) {
   std::set<std::string_view> names;

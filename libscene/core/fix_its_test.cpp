@@ -7,17 +7,13 @@
 #include <sstream>
 #include <string>
 
+#include "libscene/testing/test_support.h"
 #include "scenefile/read.h"
 
 namespace scene {
 namespace {
 
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using scene::testing::readText;
 
 FixIt fix(std::uint32_t line, std::uint32_t column, std::uint32_t length, std::string text) {
   return FixIt{SourceSpan{line, column, length}, std::move(text)};

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,14 @@
 #include "scenefile/transform.h"
 
 namespace scene::testing {
+
+// The bytes of a file, for a test that reads one of the repository's.
+inline std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 // Every diagnostic of `list` with `code`.
 inline std::vector<Diagnostic> withCode(const DiagnosticList& list, DiagnosticCode code) {
@@ -41,8 +52,7 @@ inline Diagnostic expectOne(const DiagnosticList& list, DiagnosticCode code, std
 }
 
 // A valid scene file's first record, to prefix records under test.
-inline const std::string kCameraRecord =
-    "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n";
+inline const std::string kCameraRecord = "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n";
 inline const std::string kLightRecord = "LIGHT\n1 1 1\n1 0 0 3\n0 1 0 3\n0 0 1 3\n0 0 0 1\n";
 
 // A camera, one light and a red sphere whose translation holds -0 and

@@ -16,9 +16,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "libscene/text/number.h"
 #include "libscene/formats/pov/pov_reader.h"
 #include "libscene/formats/pov/pov_writer.h"
+#include "libscene/testing/test_support.h"
+#include "libscene/text/number.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
 #include "tests/pov/povray_runner.h"
@@ -30,12 +31,7 @@ namespace fs = std::filesystem;
 constexpr double kAgreement = 0.98;
 constexpr int kWidth = 200;
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using scene::testing::readText;
 
 // The original text with each converted object's flat colour layered on top.
 std::string flatVersion(const std::string& text, const std::vector<std::size_t>& ends) {

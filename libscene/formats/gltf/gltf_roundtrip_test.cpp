@@ -14,6 +14,7 @@
 #include "libscene/formats/sf/sf_writer.h"
 #include "libscene/testing/random_cases.h"
 #include "libscene/testing/random_scenes.h"
+#include "libscene/testing/test_support.h"
 #include "scenefile/convert.h"
 #include "scenefile/read.h"
 
@@ -22,12 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using scene::testing::readText;
 
 std::string firstError(const DiagnosticList& list) {
   for (const Diagnostic& d : list.items()) {

@@ -9,12 +9,12 @@
 #include <set>
 #include <sstream>
 
-#include "scenefile/convert.h"
-#include "libscene/text/number.h"
 #include "libscene/formats/pov/pov_reader.h"
-#include "scenefile/read.h"
 #include "libscene/formats/sf/sf_writer.h"
 #include "libscene/testing/test_support.h"
+#include "libscene/text/number.h"
+#include "scenefile/convert.h"
+#include "scenefile/read.h"
 #include "scenefile/transform.h"
 
 namespace scene {
@@ -162,12 +162,7 @@ TEST(PovWriter, FlatColoursAreDistinctAndDecodeBack) {
   EXPECT_GT(std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]), 100);
 }
 
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using scene::testing::readText;
 
 // sf -> pov -> sf gives the same bytes as sf -> sf, for every valid file of
 // the corpus (instruction files included), and instruction -> pov ->
@@ -192,8 +187,7 @@ TEST(PovRoundTrip, EveryCorpusSceneComesBackByteIdentical) {
     EXPECT_FALSE(back.view.mirrored);
     if (ext == ".txt") {
       DiagnosticList a, b;
-      std::optional<std::string> direct =
-          convertScene(read.scene, Format::InstructionFile, {}, a);
+      std::optional<std::string> direct = convertScene(read.scene, Format::InstructionFile, {}, a);
       std::optional<std::string> viaPov =
           convertScene(back.read.scene, Format::InstructionFile, {}, b);
       ASSERT_TRUE(direct && viaPov);
