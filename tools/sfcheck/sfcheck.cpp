@@ -73,8 +73,8 @@ class Checker {
  private:
   void report(const std::string& shown, std::optional<scene::Format> detected,
               const scene::DiagnosticList& diagnostics, const SourceExcerpts* sources);
-  std::size_t fix(const std::string& file, const std::string& shown, std::string& text,
-                  DocumentCheck& checked);
+  std::size_t fix(const std::string& file, const std::string& shown,
+                  const std::filesystem::path& folder, std::string& text, DocumentCheck& checked);
 
   const SfcheckOptions& options_;
   ToolOutput& output_;
@@ -109,11 +109,10 @@ void Checker::report(const std::string& shown, std::optional<scene::Format> dete
 // the file written, or with --dry-run the change printed as a diff; the
 // count of fix-its. Standard input's fixed text goes to standard output
 // whole, fixed or not, as a filter's would.
-std::size_t Checker::fix(const std::string& file, const std::string& shown, std::string& text,
+std::size_t Checker::fix(const std::string& file, const std::string& shown,
+                         const std::filesystem::path& folder, std::string& text,
                          DocumentCheck& checked) {
   stage_.set("fixing " + printableText(shown));
-  std::filesystem::path folder =
-      isStandardStream(file) ? std::filesystem::path() : std::filesystem::path(file).parent_path();
   FixedDocument fixed = fixDocument(text, checked, shown, folder, options_.read);
   fixEntry_ = {{options_.dryRun ? "fixable" : "fixed", fixed.applied}};
   tally_.fixes += fixed.applied;
@@ -183,7 +182,7 @@ void Checker::check(const std::string& file) {
       isStandardStream(file) ? std::filesystem::path() : std::filesystem::path(file).parent_path();
   DocumentCheck checked = checkDocument(text, shown, folder, options_.read);
   // The diagnostics reported are those left after the fixes.
-  if (options_.fix) fix(file, shown, text, checked);
+  if (options_.fix) fix(file, shown, folder, text, checked);
   const std::optional<scene::Format>& detected = checked.format;
   scene::ReadResult& result = checked.result;
   if (detected) {
