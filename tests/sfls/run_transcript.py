@@ -90,6 +90,12 @@ class Session:
         except BrokenPipeError:
             pass
 
+    def send_message(self, message):
+        """Sends `message` framed with its Content-Length ("jsonrpc" added where left out)."""
+        message.setdefault("jsonrpc", "2.0")
+        body = json.dumps(message).encode("utf-8")
+        self.send(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+
     def next_message(self):
         try:
             return self.messages.get(timeout=TIMEOUT)
@@ -150,10 +156,7 @@ def run(arguments):
                     line = line.replace(name, value)
                 kind, _, rest = line.partition(" ")
                 if kind == "-->":
-                    message = json.loads(rest)
-                    message.setdefault("jsonrpc", "2.0")
-                    body = json.dumps(message).encode("utf-8")
-                    session.send(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+                    session.send_message(json.loads(rest))
                 elif kind == "<--":
                     failure = session.expect(json.loads(rest))
                 elif kind == "==>":
