@@ -37,14 +37,8 @@ SEVERITIES = {"error": 1, "warning": 2, "note": 3}
 BOM = b"\xef\xbb\xbf"
 
 # Differences known, by file under testdata: each must still be there, as
-# written, so that the entry goes when sfls no longer differs. sfls counts a
-# byte-order mark's bytes into the first line's columns, where sfcheck's
-# columns start after it.
-KNOWN_DIFFERENCES = {
-    "invalid/bom-output-file-two-names.txt": "diagnostics[0].range.start.character: 16, not 19",
-    "invalid/bom-then-lower-case-camera.sf": "diagnostics[0].range.start.character: 0, not 1",
-    "hostile/sf/utf8-bom-twice.sf": "diagnostics[0].range.start.character: 0, not 1",
-}
+# written, so that the entry goes when sfls no longer differs.
+KNOWN_DIFFERENCES = {}
 
 
 def corpus(testdata):

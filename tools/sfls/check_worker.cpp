@@ -12,7 +12,6 @@ namespace sfls {
 namespace {
 
 constexpr int kCheckNiceness = 10;
-constexpr std::chrono::milliseconds kMaxDelay(150);
 
 }  // namespace
 
@@ -56,7 +55,7 @@ void CheckWorker::schedule(CheckJob job) {
     std::lock_guard lock(mutex_);
     auto took = lastTook_.find(job.uri);
     auto delay = took == lastTook_.end() ? CheckJob::Clock::duration::zero() : took->second / 8;
-    auto notBefore = CheckJob::Clock::now() + std::min<CheckJob::Clock::duration>(delay, kMaxDelay);
+    auto notBefore = CheckJob::Clock::now() + std::min<CheckJob::Clock::duration>(delay, kMaxWait);
     auto same = std::find_if(waiting_.begin(), waiting_.end(),
                              [&](const Waiting& other) { return other.job.uri == job.uri; });
     if (job.uri == runningUri_) runningStop_.request_stop();

@@ -45,6 +45,9 @@ class CheckWorker {
   // `checked` is called on the worker's thread with each finished check.
   using Checked = std::function<void(const std::string& uri, std::shared_ptr<Analysis>)>;
 
+  // The longest a check waits for a further edit.
+  static constexpr std::chrono::milliseconds kMaxWait{150};
+
   explicit CheckWorker(Checked checked);
   ~CheckWorker();
   CheckWorker(const CheckWorker&) = delete;

@@ -158,19 +158,25 @@ std::string_view Document::lineText(std::uint32_t line0) const {
   return line;
 }
 
+std::size_t Document::bytesBeforeColumns(std::uint32_t line0) const {
+  return line0 == 0 && text_->starts_with("\xEF\xBB\xBF") ? 3 : 0;
+}
+
 SourcePosition Document::toSource(LspPosition position) const {
   if (position.line >= lineCount()) {
     std::uint32_t last = lineCount() - 1;
-    return {last + 1, static_cast<std::uint32_t>(lineText(last).size()) + 1};
+    std::size_t size = lineText(last).size() - bytesBeforeColumns(last);
+    return {last + 1, static_cast<std::uint32_t>(size) + 1};
   }
   std::size_t bytes = bytesBefore(lineText(position.line), position.character);
-  return {position.line + 1, static_cast<std::uint32_t>(bytes) + 1};
+  std::size_t skipped = bytesBeforeColumns(position.line);
+  return {position.line + 1, static_cast<std::uint32_t>(bytes - std::min(bytes, skipped)) + 1};
 }
 
 LspPosition Document::toLsp(std::uint32_t line, std::uint32_t column) const {
   if (line == 0) return {};
   std::uint32_t line0 = std::min(line - 1, lineCount() - 1);
-  std::size_t bytes = column == 0 ? 0 : column - 1;
+  std::size_t bytes = (column == 0 ? 0 : column - 1) + bytesBeforeColumns(line0);
   return {line0, unitsBefore(lineText(line0), bytes)};
 }
 

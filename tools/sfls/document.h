@@ -29,7 +29,9 @@ struct LspRange {
   friend bool operator==(const LspRange&, const LspRange&) = default;
 };
 
-// A place in the text as the library counts: line from 1, byte column from 1.
+// A place in the text as the library counts: line from 1, byte column from
+// 1, the first line's columns counted after a byte-order mark, as the
+// readers count them (the protocol counts the mark as a character).
 struct SourcePosition {
   std::uint32_t line = 1;
   std::uint32_t column = 1;
@@ -73,6 +75,9 @@ class Document {
 
  private:
   void indexLines();
+  // The bytes of line `line0` before the library's first column: a
+  // byte-order mark's three on the first line, none elsewhere.
+  std::size_t bytesBeforeColumns(std::uint32_t line0) const;
 
   std::string uri_;
   std::int64_t version_ = 0;

@@ -33,6 +33,21 @@ TEST(Document, CountsUtf16UnitsOfEachCodePoint) {
   EXPECT_EQ(document.toSource({0, 99}).column, 8u);
 }
 
+// The library counts the first line's columns after a byte-order mark; the
+// protocol counts the mark, U+FEFF, as one character.
+TEST(Document, CountsTheFirstLinesColumnsAfterAByteOrderMark) {
+  Document document("file:///a.sf", 1,
+                    "\xEF\xBB\xBF"
+                    "camera\ncamera\n");
+  EXPECT_EQ(document.toLsp(scene::SourceSpan{1, 1, 6}), (LspRange{{0, 1}, {0, 7}}));
+  EXPECT_EQ(document.toLsp(scene::SourceSpan{2, 1, 6}), (LspRange{{1, 0}, {1, 6}}));
+  EXPECT_EQ(document.toSource({0, 1}).column, 1u);
+  EXPECT_EQ(document.toSource({0, 0}).column, 1u);
+  EXPECT_EQ(document.toSource({0, 7}).column, 7u);
+  EXPECT_EQ(document.toSource({1, 0}).column, 1u);
+  EXPECT_EQ(document.offsetOf({0, 1}), 3u);
+}
+
 TEST(Document, CountsEachInvalidByteAsOneUnit) {
   // A stray continuation byte, an overlong '/', a sequence cut short.
   Document document("file:///a.sf", 1, "\x80\xC0\xAF\xE2\x82x");
