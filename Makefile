@@ -2,7 +2,7 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps configure build run test bench docs clean
+.PHONY: all deps configure build run test bench docs clean web web-serve
 
 all: build
 
@@ -19,8 +19,18 @@ build: configure
 run: build
 	@bash scripts/run-example.sh $(BUILD_DIR)
 
-test: build
+test: build web
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The page (web/, docs/WEB.md): the library and the renderer compiled to
+# WebAssembly by Debian's emscripten, and the page bundled, into the static
+# folder $(BUILD_DIR)/web; web-serve serves it on localhost with the headers
+# that threads need.
+WEB_PORT ?= 8043
+web: deps
+	@bash scripts/build-web.sh $(BUILD_DIR) $(JOBS)
+web-serve: web
+	@python3 scripts/web-serve.py $(BUILD_DIR)/web --port $(WEB_PORT)
 
 # The API reference, from the public headers (Doxygen): $(BUILD_DIR)/docs/html;
 # the pictures of docs/GUIDE.md, from the scenes in the repository; and
