@@ -63,6 +63,13 @@ packages=(
   # The language server's editor test runs Neovim headless against sfls;
   # docs/EDITORS.md's picture (make docs) shows Neovim in xterm under Xvfb.
   neovim xterm
+  # make web compiles the library and the renderer to WebAssembly with
+  # Debian's Emscripten (em++, with its own clang, binaryen and libc++).
+  emscripten
+  # The page's tests (tests/web) and make bench's load times run it in a real
+  # browser: Debian's Chromium, driven by playwright-core, which downloads
+  # no browser of its own.
+  chromium
 )
 # The glTF Validator and the VS Code extension's build (tsc, vsce) run on
 # Node.js; a machine with node and npm already (from Debian or elsewhere)
@@ -102,9 +109,21 @@ install_vscode_extension() {
   fi
 }
 
+# playwright-core and pngjs for the page's tests, pinned by
+# tests/web/package-lock.json (its .npmrc runs no install scripts).
+install_web_tests() {
+  local folder
+  folder="$(cd "$(dirname "$0")/.." && pwd)/tests/web"
+  if [ ! -d "$folder/node_modules/playwright-core" ] || [ ! -d "$folder/node_modules/pngjs" ]; then
+    echo "install-deps: npm ci in tests/web" >&2
+    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  fi
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   install_validator
   install_vscode_extension
+  install_web_tests
   exit 0
 fi
 
@@ -124,3 +143,4 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 install_validator
 install_vscode_extension
+install_web_tests
