@@ -18,6 +18,7 @@
 #include "tools/common/resource_guard.h"
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
+#include "tools/sfconvert/conversion_options.h"
 
 namespace tools {
 
@@ -220,30 +221,7 @@ MaybeFailure Converter::read(std::optional<scene::ReadResult>& parsed) {
 }
 
 scene::ConversionOptions Converter::conversionOptions() const {
-  scene::ConversionOptions options;
-  options.noLoss = o_.noLoss;
-  options.instructions.approximate = o_.approximate;
-  if (!plan_.toStdout) {
-    options.instructions.outputFile = scene::outputFileNameFor(o_.output);
-  }
-  options.gltf.yfovDegrees = o_.fov;
-  options.gltf.width = o_.width;
-  options.gltf.height = o_.height;
-  options.gltf.segments = o_.tessellation;
-  options.gltf.externalBuffer = plan_.bufferFile;
-  options.gltf.generator = std::string("sfconvert ") + SCENEFILE_VERSION;
-  options.pov.verticalFovDegrees = o_.fov;
-  if (o_.width > 0 && o_.height > 0) {
-    options.pov.width = o_.width;
-    options.pov.height = o_.height;
-  } else if (o_.width > 0 || o_.height > 0) {
-    // One side given: the other keeps sfrender's 4:3.
-    options.pov.width =
-        o_.width > 0 ? o_.width : std::clamp(o_.height * 4 / 3, 1, scene::kMaxImageSide);
-    options.pov.height = o_.height > 0 ? o_.height : std::max(1, o_.width * 3 / 4);
-  }
-  options.pov.flat = o_.flat;
-  return options;
+  return conversionOptionsFor(o_, plan_.toStdout, plan_.bufferFile);
 }
 
 MaybeFailure Converter::write(const scene::ConvertedFiles& converted, const scene::Scene& scene) {

@@ -1,0 +1,30 @@
+#include "web/wasm/web_convert.h"
+
+#include "scenefile/convert.h"
+#include "scenefile/format.h"
+#include "tools/common/diagnostic_printer.h"
+#include "tools/sfconvert/conversion_options.h"
+#include "web/wasm/module_threads.h"
+
+namespace web {
+
+WebConversion convertText(std::string_view text, const std::string& name, const std::string& to) {
+  WebConversion conversion;
+  conversion.diagnostics = "[]";
+  const scene::FormatInfo* format = scene::findFormatByName(to);
+  if (!format || !format->write) return conversion;
+  conversion.binary = format->binary;
+  tools::SfconvertOptions flags;  // sfconvert's defaults: no flag given
+  flags.to = to;
+  scene::ReadResult result = scene::parseScene(text, name, moduleReadOptions());
+  if (result.ok()) {
+    std::optional<scene::ConvertedFiles> converted = scene::convertSceneToFiles(
+        result.scene, format->format, tools::conversionOptionsFor(flags, true, ""),
+        result.diagnostics);
+    if (converted) conversion.output = std::move(converted->main);
+  }
+  conversion.diagnostics = tools::diagnosticsToJson(result.diagnostics).dump();
+  return conversion;
+}
+
+}  // namespace web
