@@ -1,0 +1,215 @@
+// The page: the editor, the progressive render, the glTF view, the problems
+// list, open and download, and window.scenefile. Everything the page needs
+// is in its own folder: nothing is fetched from elsewhere.
+import { createEditor, replaceText, goTo } from './editor.js';
+import { Library } from './library.js';
+import { RenderClient } from './render-client.js';
+import { RenderView } from './render-view.js';
+import { showProblems } from './problems.js';
+import { readSettings, watchSettings } from './settings.js';
+import { readSceneFile, fileNameFor, saveBlob, acceptDrops } from './files.js';
+import { spanToRange } from './positions.js';
+import { createScenefileApi } from './scenefile-api.js';
+import { compileWasm, instantiateModule } from './wasm-loader.js';
+
+/* global SCENEFILE_VERSION */
+const RENDER_DEBOUNCE_MS = 100;
+const GLTF_DEBOUNCE_MS = 300;
+
+const $ = (id) => document.getElementById(id);
+
+// The render worker starts first: the first image waits only for it and
+// for the main module, which compile at the same time.
+const mainWasm = compileWasm('scenefile.wasm');
+const renderer = new RenderClient(mainWasm);
+const library = new Library(await instantiateModule(self.createScenefileModule, mainWasm));
+
+// The document: its name (diagnostics' file, downloads' names) and, for a
+// file that is not UTF-8, its bytes, checked until the text is edited.
+const documentState = { name: 'default.sf', bytes: null, loadedDoc: null };
+const view = new RenderView({ canvas: $('canvas'), progress: $('progress'), status: $('status') });
+let editor = null;
+
+function notice(text, isError = false) {
+  const node = $('notice');
+  node.textContent = text;
+  node.classList.toggle('error', isError);
+  node.hidden = !text;
+}
+
+function documentInput(state) {
+  return documentState.bytes && state.doc === documentState.loadedDoc ? documentState.bytes : state.doc.toString();
+}
+
+function selectDiagnostic(d) {
+  const range = spanToRange(editor.state.doc, d.line, d.column, d.length) ?? spanToRange(editor.state.doc, 1, 0, 0);
+  goTo(editor, range);
+}
+
+// ---- the render: coarse, 1 spp, then the settings; every edit restarts it
+let renderTimer = 0;
+let renderStarted = 0;
+
+function startRender() {
+  const progressive = true;
+  renderStarted = performance.now();
+  renderer.render(documentInput(editor.state), documentState.name, readSettings($('settings')), progressive, {
+    status: ({ status }) => { if (status.ok) view.begin(status, progressive); },
+    band: (message) => view.band(message),
+    done: () => view.finish(performance.now() - renderStarted),
+    error: ({ message }) => view.fail(message),
+  });
+}
+
+function scheduleRender() {
+  renderer.cancel();
+  clearTimeout(renderTimer);
+  renderTimer = setTimeout(startRender, RENDER_DEBOUNCE_MS);
+}
+
+// ---- the glTF view, refreshed after a check without errors
+let gltfTimer = 0;
+let gltfView = null;
+const firstImage = new Promise((resolve) => {
+  new PerformanceObserver((list, observer) => {
+    if (list.getEntriesByName('scenefile-1spp-image').length) { observer.disconnect(); resolve(); }
+  }).observe({ type: 'mark', buffered: true });
+});
+
+async function refreshGltf() {
+  // three.js loads after the first full image: it would compete with it.
+  await firstImage;
+  let glb;
+  try {
+    glb = library.convert(documentInput(editor.state), documentState.name, 'glb');
+  } catch {
+    return;
+  }
+  if (!gltfView) {
+    const { GltfView } = await import('./gltf-view.js');
+    try {
+      gltfView = new GltfView($('gltf-view'));
+    } catch (error) {
+      $('gltf-view').textContent = `The 3D view needs WebGL: ${error.message}`;
+      return;
+    }
+  }
+  gltfView.show(glb.buffer.slice(glb.byteOffset, glb.byteOffset + glb.byteLength)).catch((error) => {
+    $('gltf-view').dataset.error = String(error.message ?? error);
+  });
+}
+
+function checkDocument(state) {
+  const result = library.check(documentInput(state), documentState.name);
+  showProblems($('problems'), result.diagnostics, selectDiagnostic);
+  $('problems-count').textContent = String(result.diagnostics.length);
+  if (!result.diagnostics.some((d) => d.severity === 'error')) {
+    clearTimeout(gltfTimer);
+    gltfTimer = setTimeout(refreshGltf, GLTF_DEBOUNCE_MS);
+  }
+  return result.diagnostics;
+}
+
+// ---- documents: the default scene, an example, an opened file
+function loadDocument({ name, text, bytes = null }) {
+  documentState.name = name;
+  documentState.bytes = bytes;
+  replaceText(editor, text);
+  documentState.loadedDoc = editor.state.doc;
+  $('document-name').textContent = name;
+}
+
+async function openFile(file) {
+  const opened = await readSceneFile(file, library);
+  notice(opened.notice, opened.diagnostics.length > 0);
+  if (opened.diagnostics.length) {
+    showProblems($('problems'), opened.diagnostics, selectDiagnostic);
+    return;
+  }
+  loadDocument(opened);
+}
+
+async function openExample(path) {
+  if (path === '') {
+    loadDocument(library.defaultScene());
+  } else {
+    const response = await fetch(`examples/${path}`);
+    loadDocument({ name: path.split('/').pop(), text: await response.text() });
+  }
+  notice('');
+}
+
+async function fillExamples() {
+  const select = $('examples');
+  const index = await (await fetch('examples/index.json')).json();
+  for (const group of index.groups) {
+    const optgroup = document.createElement('optgroup');
+    optgroup.label = group.label;
+    for (const path of group.files) {
+      const option = document.createElement('option');
+      option.value = path;
+      option.textContent = path.split('/').pop();
+      optgroup.append(option);
+    }
+    select.append(optgroup);
+  }
+}
+
+function download(to) {
+  if (to === 'png') {
+    $('canvas').toBlob((blob) => saveBlob(blob, fileNameFor([], documentState.name, 'png')), 'image/png');
+    return;
+  }
+  try {
+    const output = library.convert(documentInput(editor.state), documentState.name, to);
+    const type = to === 'glb' ? 'model/gltf-binary' : 'text/plain';
+    saveBlob(new Blob([output], { type }), fileNameFor(library.formats, documentState.name, to));
+    notice('');
+  } catch (error) {
+    notice(`Not downloaded: ${error.message}`, true);
+    if (error.diagnostics?.length) showProblems($('problems'), error.diagnostics, selectDiagnostic);
+  }
+}
+
+function wireToolbar() {
+  $('file-input').addEventListener('change', (event) => {
+    const file = event.target.files?.[0];
+    if (file) openFile(file);
+    event.target.value = '';
+  });
+  acceptDrops(window, openFile);
+  $('examples').addEventListener('change', (event) => openExample(event.target.value));
+  $('download').addEventListener('change', (event) => {
+    if (event.target.value) download(event.target.value);
+    event.target.value = '';
+  });
+  watchSettings($('settings'), scheduleRender);
+}
+
+function showThreads(threads) {
+  $('threads').textContent = self.crossOriginIsolated
+    ? `${threads} thread${threads === 1 ? '' : 's'}`
+    : '1 thread: the page is not cross-origin isolated';
+  const setting = $('threads-setting');
+  setting.max = String(threads);
+  if (!self.crossOriginIsolated) {
+    setting.value = '1';
+    setting.disabled = true;
+  }
+}
+
+const start = library.defaultScene();
+documentState.name = start.name;
+$('document-name').textContent = start.name;
+editor = createEditor($('editor'), start.text, {
+  check: checkDocument,
+  hover: (text, line, character) => library.hover(text, line, character),
+  completion: (text, line, character) => library.completion(text, line, character),
+}, scheduleRender);
+documentState.loadedDoc = editor.state.doc;
+startRender();
+wireToolbar();
+renderer.ready.then(showThreads);
+window.scenefile = createScenefileApi(library, mainWasm, SCENEFILE_VERSION);
+fillExamples().catch((error) => notice(`No examples: ${error.message}`, true));
+document.body.dataset.ready = 'true';
