@@ -120,10 +120,25 @@ install_web_tests() {
   fi
 }
 
+# The page's editor, three.js, esbuild (its binary is the npm package
+# @esbuild/linux-x64) and coi-serviceworker, pinned by web/package-lock.json
+# (its .npmrc runs no install scripts).
+install_web_page() {
+  local folder
+  folder="$(cd "$(dirname "$0")/.." && pwd)/web"
+  if [ ! -x "$folder/node_modules/.bin/esbuild" ] || [ ! -d "$folder/node_modules/three" ] ||
+     [ ! -d "$folder/node_modules/@codemirror/view" ] ||
+     [ ! -d "$folder/node_modules/coi-serviceworker" ]; then
+    echo "install-deps: npm ci in web" >&2
+    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  fi
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
   install_validator
   install_vscode_extension
   install_web_tests
+  install_web_page
   exit 0
 fi
 
@@ -144,3 +159,4 @@ $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 install_validator
 install_vscode_extension
 install_web_tests
+install_web_page
