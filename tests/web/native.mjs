@@ -1,0 +1,113 @@
+// The native tools' answers, which the page's must equal: sfcheck's JSON
+// diagnostics, sfconvert's bytes, sfrender's PNG.
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { PNG } from 'pngjs';
+import { bin } from './harness.mjs';
+
+function run(tool, args, { cwd, input } = {}) {
+  const r = spawnSync(path.join(bin, tool), args, {
+    cwd, input, maxBuffer: 1 << 30, timeout: 120000,
+  });
+  if (r.error) throw r.error;
+  return { status: r.status, stdout: r.stdout, stderr: r.stderr.toString() };
+}
+
+// sfcheck --format json on FILE, run in its folder (so that `file` is its
+// name, as the page names an opened file): {format, diagnostics}.
+export function sfcheck(file) {
+  const r = run('sfcheck', ['--format', 'json', path.basename(file)], { cwd: path.dirname(file) });
+  const json = JSON.parse(r.stdout.toString());
+  return json.files[0];
+}
+
+// sfcheck --fix on a copy of TEXT: the fixed text.
+export function sfcheckFix(text, name = 'scene.txt') {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'web-fix-'));
+  try {
+    const file = path.join(dir, name);
+    fs.writeFileSync(file, text);
+    run('sfcheck', ['--fix', name], { cwd: dir });
+    return fs.readFileSync(file, 'utf8');
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+// sfconvert --to TO of BYTES from standard input to standard output, as the
+// page converts the editor's text (named "<stdin>"): {status, output, stderr}.
+export function sfconvert(bytes, to) {
+  const r = run('sfconvert', ['-q', '--to', to, '-', '-'], { input: bytes });
+  return { status: r.status, output: r.stdout, stderr: r.stderr };
+}
+
+// sfrender's options for the page's render() options.
+export function sfrenderArgs(options) {
+  const args = [];
+  for (const key of ['width', 'height', 'spp', 'depth', 'fov', 'threads', 'seed']) {
+    if (options[key] !== undefined) args.push(`--${key}`, String(options[key]));
+  }
+  if (typeof options.adaptive === 'number') args.push('--adaptive', String(options.adaptive));
+  return args;
+}
+
+// sfrender of FILE (the default scene when null) with OPTIONS, to a PNG:
+// {status, stderr, image: {width, height, data (RGBA)} or null}.
+export function sfrender(file, options = {}) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'web-render-'));
+  try {
+    const png = path.join(dir, 'render.png');
+    const args = ['-q', ...sfrenderArgs(options), '-o', png];
+    if (file) args.push(file);
+    const r = run('sfrender', args);
+    const image = r.status === 0 ? PNG.sync.read(fs.readFileSync(png)) : null;
+    return { status: r.status, stderr: r.stderr, image };
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+// The default scene's text as write_default_scene (tests/gltf) writes it.
+export function defaultSceneText() {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'web-default-'));
+  try {
+    const file = path.join(dir, 'default.txt');
+    const r = spawnSync(path.join(bin, 'write_default_scene'), [file]);
+    if (r.status !== 0) throw new Error(`write_default_scene failed: ${r.stderr}`);
+    return fs.readFileSync(file, 'utf8');
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+// Channel by channel: how many are identical and the largest difference.
+export function compareImages(got, want) {
+  if (got.width !== want.width || got.height !== want.height) {
+    return { sizeDiffers: true, identical: 0, total: want.width * want.height * 4, maxDiff: 255 };
+  }
+  let identical = 0;
+  let maxDiff = 0;
+  const n = want.width * want.height * 4;
+  for (let i = 0; i < n; ++i) {
+    const d = Math.abs(got.data[i] - want.data[i]);
+    if (d === 0) ++identical;
+    else if (d > maxDiff) maxDiff = d;
+  }
+  return { sizeDiffers: false, identical, total: n, maxDiff };
+}
+
+// The short form of sfcheck's diagnostics (what the .expect files hold,
+// tools/common/diagnostic_printer.cpp) from their JSON.
+export function shortForm(diagnostics) {
+  const place = (file, s) => (s.endLine !== undefined ? `${file}:${s.line}:${s.column}:` : `${file}:`);
+  let out = '';
+  for (const d of diagnostics) {
+    const file = d.file === '' ? '<input>' : d.file;
+    out += `${place(file, d)} ${d.severity}: ${d.message} [${d.code}]\n`;
+    if (d.hint !== undefined) out += `  hint: ${d.hint}\n`;
+    for (const note of d.notes ?? []) out += `${place(file, note)} note: ${note.message}\n`;
+  }
+  return out;
+}

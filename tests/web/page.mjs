@@ -1,0 +1,59 @@
+// The page's elements as the tests read them (web/index.html's ids).
+import assert from 'node:assert/strict';
+
+// The editor's whole text. CodeMirror keeps it in its state, not in the
+// DOM (it draws only the lines in view): the state is reached through the
+// view that @codemirror/view (pinned by web/package-lock.json) hangs on its
+// content element.
+export function editorText(page) {
+  return page.evaluate(() => {
+    const content = document.querySelector('#editor .cm-content');
+    const view = content?.cmTile?.view ?? content?.cmView?.view;
+    if (!view) throw new Error('no CodeMirror view under #editor');
+    return view.state.doc.toString();
+  });
+}
+
+// The problems list: {line, column, code, message} of each item.
+export function problems(page) {
+  return page.$$eval('#problems [data-code]', (items) => items.map((i) => ({
+    line: Number(i.dataset.line),
+    column: Number(i.dataset.column),
+    code: i.dataset.code,
+    message: i.querySelector('.message')?.textContent ?? null,
+  })));
+}
+
+// The canvas's pixels: {width, height, data (a Buffer of RGBA)}.
+export async function canvasPixels(page) {
+  const r = await page.evaluate(() => {
+    const canvas = document.querySelector('#canvas');
+    const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
+    let s = '';
+    for (let i = 0; i < data.length; i += 0x8000)
+      s += String.fromCharCode.apply(null, data.subarray(i, i + 0x8000));
+    return { width: canvas.width, height: canvas.height, b64: btoa(s) };
+  });
+  return { width: r.width, height: r.height, data: Buffer.from(r.b64, 'base64') };
+}
+
+// The time of each of the page's marks since navigation start, in ms.
+export function marks(page) {
+  return page.evaluate(() => Object.fromEntries(
+    performance.getEntriesByType('mark').map((m) => [m.name, m.startTime])));
+}
+
+// Waits until the problems list is WANT (as problems() gives it, or only
+// the fields WANT's items have); fails with the difference after TIMEOUT ms.
+export async function waitForProblems(page, want, what, timeout = 5000) {
+  const pick = (list) => list.map((p, i) => (want[i]
+    ? Object.fromEntries(Object.keys(want[i]).map((k) => [k, p[k]])) : p));
+  const deadline = Date.now() + timeout;
+  let got;
+  for (;;) {
+    got = pick(await problems(page));
+    if (JSON.stringify(got) === JSON.stringify(want) || Date.now() > deadline) break;
+    await new Promise((r) => setTimeout(r, 25));
+  }
+  assert.deepEqual(got, want, `${what} after ${timeout} ms`);
+}

@@ -1,0 +1,147 @@
+// window.scenefile.render(text, options) against sfrender's PNG of the same
+// scene and options: the default scene, every scene of examples/ and of the
+// guide, a POV-Ray and a glTF scene; at least 99.9% of the channels
+// identical and none off by more than 1/255. Served cross-origin isolated
+// the page renders on every core (window.scenefile.threads > 1), served
+// without COOP/COEP on one thread; a bad scene or option is refused with
+// sfrender's words.
+// Usage: node run.mjs render.test.mjs BUILD_DIR
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import {
+  assertClean, filesIn, launchBrowser, openPage, relative, root, startServer,
+} from './harness.mjs';
+import { compareImages, defaultSceneText, sfcheck, sfrender, sfrenderArgs } from './native.mjs';
+
+const scenes = [
+  null,  // the default scene
+  ...filesIn(path.join(root, 'examples'), /\.(sf|txt)$/),
+  ...filesIn(path.join(root, 'docs/guide'), /\.(sf|txt)$/),
+  path.join(root, 'testdata/pov/tutorial/tutorial-first-scene.pov'),
+  path.join(root, 'testdata/gltf/own-all-primitives.gltf'),
+];
+
+let browser;
+const served = {};
+before(async () => {
+  browser = await launchBrowser();
+  for (const isolation of [true, false]) {
+    const server = await startServer({ isolation });
+    served[isolation] = { server, ...(await openPage(browser, server.url)) };
+  }
+});
+after(async () => {
+  await browser?.close();
+  for (const s of Object.values(served)) await s.server.close();
+});
+
+// The page's render: {width, height, threads, data} or {message, diagnostics}.
+async function renderInPage(page, text, options) {
+  const r = await page.evaluate(async ({ text, options }) => {
+    try {
+      const pixels = await window.scenefile.render(text, options);
+      let s = '';
+      const bytes = new Uint8Array(pixels.buffer, pixels.byteOffset, pixels.byteLength);
+      for (let i = 0; i < bytes.length; i += 0x8000)
+        s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+      return { width: pixels.width, height: pixels.height, threads: pixels.threads,
+               length: pixels.length, isClamped: pixels instanceof Uint8ClampedArray, b64: btoa(s) };
+    } catch (e) {
+      return { rejected: true, message: e.message, diagnostics: e.diagnostics ?? null };
+    }
+  }, { text, options });
+  if (r.b64 !== undefined) r.data = Buffer.from(r.b64, 'base64');
+  return r;
+}
+
+// Renders FILE (null: the default scene) in the page and with sfrender and
+// compares them; returns the page's result.
+async function compareRender(page, file, options = {}) {
+  const text = file ? fs.readFileSync(file, 'utf8') : defaultSceneText();
+  const what = file ? relative(file) : 'the default scene';
+  const want = sfrender(file, options);
+  const got = await renderInPage(page, text, options);
+  if (want.status !== 0) {
+    assert.ok(got.rejected, `sfrender refuses ${what}; the page must too`);
+    const first = sfcheck(file).diagnostics.find((d) => d.severity === 'error');
+    assert.equal(got.message, first.message, `the rejection of ${what}`);
+    assert.ok(Array.isArray(got.diagnostics) && got.diagnostics.length > 0, 'its diagnostics');
+    console.log(`${what}: refused, as sfrender refuses it: ${got.message}`);
+    return got;
+  }
+  assert.ok(!got.rejected, `render of ${what} rejected: ${got.message}`);
+  assert.ok(got.isClamped, 'a Uint8ClampedArray');
+  assert.equal(got.length, got.width * got.height * 4);
+  const c = compareImages(got, want.image);
+  assert.equal(c.sizeDiffers, false,
+               `${what}: ${got.width}x${got.height}, sfrender ${want.image.width}x${want.image.height}`);
+  const share = c.identical / c.total;
+  console.log(`${what} ${sfrenderArgs(options).join(' ')}: ${c.identical} of ${c.total} channels ` +
+              `identical (${(100 * share).toFixed(3)}%), largest difference ${c.maxDiff}/255, ` +
+              `${got.threads} thread(s)`);
+  assert.ok(share >= 0.999, `${what}: only ${(100 * share).toFixed(3)}% of the channels identical`);
+  assert.ok(c.maxDiff <= 1, `${what}: a channel differs by ${c.maxDiff}/255`);
+  return got;
+}
+
+test('cross-origin isolated: every core', async () => {
+  const { page } = served[true];
+  const [isolated, cores, threads] = await page.evaluate(
+    () => [self.crossOriginIsolated, navigator.hardwareConcurrency, window.scenefile.threads]);
+  assert.equal(isolated, true);
+  assert.ok(cores > 1, `Chromium reports ${cores} core(s)`);
+  assert.equal(threads, cores);
+});
+
+for (const file of scenes) {
+  test(file ? relative(file) : 'the default scene', async () => {
+    const got = await compareRender(served[true].page, file);
+    if (!got.rejected) assert.ok(got.threads > 1, `rendered on ${got.threads} thread(s)`);
+  });
+}
+
+test('options: width, height, spp, adaptive, depth, fov', async () => {
+  const scene = path.join(root, 'docs/guide/reflectivity.txt');
+  await compareRender(served[true].page, scene,
+                      { width: 320, height: 200, spp: 4, adaptive: 0.05, depth: 2, fov: 40 });
+  await compareRender(served[true].page, scene, { width: 200, spp: 16, adaptive: 0.1, seed: 3 });
+});
+
+test('options: threads', async () => {
+  const scene = path.join(root, 'examples/red-sphere.sf');
+  for (const threads of [1, 2]) {
+    const got = await compareRender(served[true].page, scene, { width: 160, height: 120, threads });
+    assert.equal(got.threads, threads);
+  }
+});
+
+test('a bad option is refused with sfrender\'s words', async () => {
+  const scene = fs.readFileSync(path.join(root, 'examples/red-sphere.sf'), 'utf8');
+  for (const [option, value] of [['spp', 0], ['width', 0], ['fov', 200], ['depth', -1],
+                                 ['adaptive', 2], ['height', 100000]]) {
+    const native = sfrender(null, { [option]: value });
+    assert.notEqual(native.status, 0, `sfrender --${option} ${value}`);
+    const words = /^sfrender: error: --(.*)$/m.exec(native.stderr)[1];
+    const got = await renderInPage(served[true].page, scene, { [option]: value });
+    assert.ok(got.rejected, `{${option}: ${value}} rendered`);
+    assert.equal(got.message, words);
+  }
+});
+
+test('not cross-origin isolated: one thread', async () => {
+  const { page } = served[false];
+  const [isolated, threads] = await page.evaluate(
+    () => [self.crossOriginIsolated, window.scenefile.threads]);
+  assert.equal(isolated, false);
+  assert.equal(threads, 1);
+  for (const file of [null, path.join(root, 'examples/blue-cube.txt')]) {
+    const got = await compareRender(page, file);
+    assert.equal(got.threads, 1);
+  }
+});
+
+test('the pages stayed clean', () => {
+  for (const s of Object.values(served)) assertClean(assert, s.watch);
+});
