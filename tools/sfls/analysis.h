@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,5 +25,14 @@ struct Analysis {
   // How long the check took, for sfls --verbose.
   double seconds = 0;
 };
+
+// sfcheck's check of `text` (tools::checkDocument), shown as `shownName`,
+// with OUTPUT_FILE taken in `folder`, and its outline; `version` is the
+// document's. Once options.stop is requested the check ends early with a
+// partial result, and no outline.
+std::shared_ptr<Analysis> analyseText(std::shared_ptr<const std::string> text, std::int64_t version,
+                                      const std::string& shownName,
+                                      const std::filesystem::path& folder,
+                                      const scene::ReadOptions& options);
 
 }  // namespace sfls

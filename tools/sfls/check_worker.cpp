@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <chrono>
 
-#include "tools/common/document_check.h"
-
 namespace sfls {
 namespace {
 
@@ -16,24 +14,10 @@ constexpr int kCheckNiceness = 10;
 }  // namespace
 
 std::shared_ptr<Analysis> analyse(const CheckJob& job, std::stop_token stop) {
-  auto start = std::chrono::steady_clock::now();
   std::string shownName = job.file.empty() ? job.uri : job.file.string();
   scene::ReadOptions options;
   options.stop = stop;
-  tools::DocumentCheck check =
-      tools::checkDocument(*job.text, shownName, job.file.parent_path(), options);
-  auto analysis = std::make_shared<Analysis>();
-  analysis->version = job.version;
-  analysis->text = job.text;
-  analysis->format = check.format;
-  analysis->result = std::move(check.result);
-  if (stop.stop_requested()) return analysis;
-  if (check.format == scene::Format::SceneFile || check.format == scene::Format::InstructionFile) {
-    analysis->outline = scene::outlineOf(*job.text, *check.format);
-  }
-  analysis->seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return analysis;
+  return analyseText(job.text, job.version, shownName, job.file.parent_path(), options);
 }
 
 CheckWorker::CheckWorker(Checked checked) : checked_(std::move(checked)) {
