@@ -8,6 +8,8 @@
 #include "web/wasm/js_values.h"
 #include "web/wasm/web_check.h"
 #include "web/wasm/web_convert.h"
+#include "web/wasm/web_editor.h"
+#include "web/wasm/web_render.h"
 
 namespace web {
 namespace {
@@ -33,6 +35,35 @@ emscripten::val convert(const emscripten::val& input, const std::string& name,
   return answer;
 }
 
+std::string hover(const std::string& text, std::uint32_t line, std::uint32_t character) {
+  return hoverJson(text, line, character);
+}
+
+std::string completion(const std::string& text, std::uint32_t line, std::uint32_t character) {
+  return completionJson(text, line, character);
+}
+
+// RenderSession as JavaScript sees it: the input a string or bytes, the
+// band a Uint8Array (null when it cannot be rendered: status() says why).
+class JsRenderSession {
+ public:
+  JsRenderSession(const emscripten::val& input, const std::string& name,
+                  const std::string& optionsJson)
+      : session_(bytesOf(input), name, optionsJson) {}
+
+  std::string status() const { return session_.statusJson(); }
+
+  emscripten::val renderRows(int y0, int y1, const std::string& overridesJson) {
+    std::optional<std::vector<unsigned char>> rows = session_.renderRows(y0, y1, overridesJson);
+    if (!rows) return emscripten::val::null();
+    return uint8ArrayOf(
+        std::string_view(reinterpret_cast<const char*>(rows->data()), rows->size()));
+  }
+
+ private:
+  RenderSession session_;
+};
+
 }  // namespace
 }  // namespace web
 
@@ -40,4 +71,12 @@ EMSCRIPTEN_BINDINGS(scenefile) {
   emscripten::function("check", &web::check);
   emscripten::function("convert", &web::convert);
   emscripten::function("formats", &web::formatsJson);
+  emscripten::function("defaultScene", &web::defaultSceneText);
+  emscripten::function("defaultSceneName", &web::defaultSceneName);
+  emscripten::function("hover", &web::hover);
+  emscripten::function("completion", &web::completion);
+  emscripten::class_<web::JsRenderSession>("RenderSession")
+      .constructor<const emscripten::val&, const std::string&, const std::string&>()
+      .function("status", &web::JsRenderSession::status)
+      .function("renderRows", &web::JsRenderSession::renderRows);
 }
