@@ -1,6 +1,7 @@
 // The page: the editor, the progressive render, the glTF view, the problems
 // list, open and download, and window.scenefile. Everything the page needs
 // is in its own folder: nothing is fetched from elsewhere.
+import { forceLinting } from '@codemirror/lint';
 import { createEditor, replaceText, goTo } from './editor.js';
 import { Library } from './library.js';
 import { RenderClient } from './render-client.js';
@@ -105,7 +106,7 @@ function checkDocument(state) {
   $('problems-count').textContent = String(result.diagnostics.length);
   if (!result.diagnostics.some((d) => d.severity === 'error')) {
     clearTimeout(gltfTimer);
-    gltfTimer = setTimeout(refreshGltf, GLTF_DEBOUNCE_MS);
+    gltfTimer = setTimeout(() => refreshGltf().catch((error) => { $('gltf-view').dataset.error = error.message; }), GLTF_DEBOUNCE_MS);
   }
   return result.diagnostics;
 }
@@ -117,16 +118,16 @@ function loadDocument({ name, text, bytes = null }) {
   replaceText(editor, text);
   documentState.loadedDoc = editor.state.doc;
   $('document-name').textContent = name;
+  // The same text (an empty one) is no edit: the check and the render are
+  // started here for the new name and bytes.
+  forceLinting(editor);
+  scheduleRender();
 }
 
 async function openFile(file) {
   const opened = await readSceneFile(file, library);
-  notice(opened.notice, opened.diagnostics.length > 0);
-  if (opened.diagnostics.length) {
-    showProblems($('problems'), opened.diagnostics, selectDiagnostic);
-    return;
-  }
   loadDocument(opened);
+  notice(opened.notice, opened.bytes !== null && opened.text === '');
 }
 
 async function openExample(path) {
@@ -174,11 +175,13 @@ function download(to) {
 function wireToolbar() {
   $('file-input').addEventListener('change', (event) => {
     const file = event.target.files?.[0];
-    if (file) openFile(file);
+    if (file) openFile(file).catch((error) => notice(`Not opened: ${error.message}`, true));
     event.target.value = '';
   });
-  acceptDrops(window, openFile);
-  $('examples').addEventListener('change', (event) => openExample(event.target.value));
+  acceptDrops(window, (file) => openFile(file).catch((error) => notice(`Not opened: ${error.message}`, true)));
+  $('examples').addEventListener('change', (event) => {
+    openExample(event.target.value).catch((error) => notice(`Not opened: ${error.message}`, true));
+  });
   $('download').addEventListener('change', (event) => {
     if (event.target.value) download(event.target.value);
     event.target.value = '';

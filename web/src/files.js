@@ -23,27 +23,28 @@ export function fileNameFor(formats, documentName, to) {
   return withoutExtension(documentName) + extension;
 }
 
-// What the editor gets for a file: {name, text, bytes, notice, diagnostics}.
-// Text formats go in as they are; bytes are kept where the text is not
-// UTF-8, so that the check sees the file itself. A binary format (.glb) is
-// converted to a scene file for the editor.
+// What the editor gets for a file: {name, text, bytes, notice}. Text
+// formats go in as they are; bytes are kept where the text is not UTF-8,
+// so that the check sees the file itself until the text is edited. A
+// binary format (.glb) is converted to a scene file for the editor; one
+// that cannot be leaves the editor empty, with the file's diagnostics.
 export async function readSceneFile(file, library) {
   const bytes = new Uint8Array(await file.arrayBuffer());
   const format = formatOfName(library.formats, file.name);
   if (format?.binary) {
-    const result = library.convertRaw(bytes, file.name, 'sf');
-    if (result.output === null) {
-      return { name: file.name, text: '', bytes, notice: `${file.name} cannot be converted to a scene file:`, diagnostics: result.diagnostics };
+    const { output } = library.convertRaw(bytes, file.name, 'sf');
+    if (output === null) {
+      return { name: file.name, text: '', bytes, notice: `${file.name} cannot be converted to a scene file: see its problems.` };
     }
     const name = `${withoutExtension(file.name)}.sf`;
-    return { name, text: result.output, bytes: null, notice: `${file.name} is binary: it was converted to ${name} for the editor.`, diagnostics: [] };
+    return { name, text: output, bytes: null, notice: `${file.name} is binary: it was converted to ${name} for the editor.` };
   }
   try {
     const text = new TextDecoder('utf-8', { fatal: true, ignoreBOM: true }).decode(bytes);
-    return { name: file.name, text, bytes: null, notice: '', diagnostics: [] };
+    return { name: file.name, text, bytes: null, notice: '' };
   } catch {
     const text = new TextDecoder('utf-8', { ignoreBOM: true }).decode(bytes);
-    return { name: file.name, text, bytes, notice: `${file.name} is not UTF-8: its diagnostics are of the file's own bytes until it is edited.`, diagnostics: [] };
+    return { name: file.name, text, bytes, notice: `${file.name} is not UTF-8: its problems are those of the file's own bytes until it is edited.` };
   }
 }
 

@@ -17,7 +17,11 @@ const threaded = self.crossOriginIsolated === true;
 const scriptName = threaded ? 'scenefile-threads.js' : 'scenefile.js';
 const wasmName = threaded ? 'scenefile-threads.wasm' : 'scenefile.wasm';
 
-let modulePromise = null;
+// Settles with the module once it is loaded; a render sent before 'init'
+// waits for it.
+let startedModule = false;
+let resolveModule;
+const modulePromise = new Promise((resolve) => { resolveModule = resolve; });
 let currentId = null;
 
 async function loadModule(given) {
@@ -61,7 +65,10 @@ function renderPass(session, pass, id, sizer) {
       const started = performance.now();
       const view = session.renderRows(y0, y1, overrides);
       sizer.record(pass, y1 - y0, performance.now() - started);
-      const pixels = new Uint8Array(view);
+      // The module's answer is a copy of its own; a view of its memory (a
+      // SharedArrayBuffer with threads) is copied before it is sent.
+      const own = view.buffer instanceof ArrayBuffer && view.byteOffset === 0 && view.byteLength === view.buffer.byteLength;
+      const pixels = own ? view : new Uint8Array(view);
       self.postMessage({ id, type: 'band', pass: pass.name, width: pass.width, height: pass.height, y0, y1, pixels },
         [pixels.buffer]);
       y0 = y1;
@@ -102,8 +109,10 @@ async function render({ id, text, name, options, progressive }) {
 }
 
 function startModule(given) {
-  modulePromise = loadModule(given);
-  modulePromise.catch((error) => self.postMessage({ type: 'failed', message: errorMessage(error) }));
+  startedModule = true;
+  const loading = loadModule(given);
+  loading.catch((error) => self.postMessage({ type: 'failed', message: errorMessage(error) }));
+  resolveModule(loading);
 }
 
 // The threads module starts as soon as the worker does: the page's first
@@ -114,7 +123,7 @@ if (threaded) startModule(null);
 self.onmessage = (event) => {
   const message = event.data;
   if (message.type === 'init') {
-    if (!modulePromise) startModule(message.wasmModule);
+    if (!startedModule) startModule(message.wasmModule);
   } else if (message.type === 'render') {
     render(message);
   } else if (message.type === 'cancel' && currentId === message.id) {
