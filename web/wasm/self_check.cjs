@@ -74,6 +74,11 @@ function compareRender(M, what, text, options, flags, input) {
 
 async function main() {
   const name = threaded ? 'scenefile-threads.js' : 'scenefile.js';
+  // The threaded module starts a worker for each of navigator's cores,
+  // which Node 20 has no navigator to tell.
+  if (typeof navigator === 'undefined') {
+    globalThis.navigator = { hardwareConcurrency: require('os').cpus().length };
+  }
   const create = require(path.join(build, 'web', name));
   const M = await create();
   const example = fs.readFileSync(path.join(root, 'examples/red-sphere.sf'));
