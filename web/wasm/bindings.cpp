@@ -3,6 +3,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <exception>
 #include <string>
 
 #include "web/wasm/js_values.h"
@@ -14,15 +15,27 @@
 namespace web {
 namespace {
 
+// `work`'s result; a C++ exception that escapes it (none should) becomes a
+// JavaScript Error with its message, which the page can show, rather than
+// an opaque WebAssembly.Exception.
+template <typename Work>
+auto guarded(Work&& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const std::exception& e) {
+    emscripten::val::global("Error").new_(std::string(e.what())).throw_();
+  }
+}
+
 std::string check(const emscripten::val& input, const std::string& name) {
-  return checkJson(bytesOf(input), name);
+  return guarded([&] { return checkJson(bytesOf(input), name); });
 }
 
 // {output, diagnostics}: output a string, a Uint8Array for a binary format,
 // or null where sfconvert would refuse.
 emscripten::val convert(const emscripten::val& input, const std::string& name,
                         const std::string& to) {
-  WebConversion conversion = convertText(bytesOf(input), name, to);
+  WebConversion conversion = guarded([&] { return convertText(bytesOf(input), name, to); });
   emscripten::val answer = emscripten::val::object();
   if (!conversion.output) {
     answer.set("output", emscripten::val::null());
@@ -36,11 +49,11 @@ emscripten::val convert(const emscripten::val& input, const std::string& name,
 }
 
 std::string hover(const std::string& text, std::uint32_t line, std::uint32_t character) {
-  return hoverJson(text, line, character);
+  return guarded([&] { return hoverJson(text, line, character); });
 }
 
 std::string completion(const std::string& text, std::uint32_t line, std::uint32_t character) {
-  return completionJson(text, line, character);
+  return guarded([&] { return completionJson(text, line, character); });
 }
 
 // RenderSession as JavaScript sees it: the input a string or bytes, the
@@ -49,12 +62,13 @@ class JsRenderSession {
  public:
   JsRenderSession(const emscripten::val& input, const std::string& name,
                   const std::string& optionsJson)
-      : session_(bytesOf(input), name, optionsJson) {}
+      : session_(guarded([&] { return RenderSession(bytesOf(input), name, optionsJson); })) {}
 
   std::string status() const { return session_.statusJson(); }
 
   emscripten::val renderRows(int y0, int y1, const std::string& overridesJson) {
-    std::optional<std::vector<unsigned char>> rows = session_.renderRows(y0, y1, overridesJson);
+    std::optional<std::vector<unsigned char>> rows =
+        guarded([&] { return session_.renderRows(y0, y1, overridesJson); });
     if (!rows) return emscripten::val::null();
     return uint8ArrayOf(
         std::string_view(reinterpret_cast<const char*>(rows->data()), rows->size()));

@@ -5,6 +5,7 @@
 #include "scenefile/format.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/document_check.h"
+#include "web/wasm/json_text.h"
 #include "web/wasm/module_threads.h"
 
 namespace web {
@@ -21,7 +22,7 @@ std::string checkJson(std::string_view text, const std::string& name) {
   }
   nlohmann::json answer = {{"format", format},
                            {"diagnostics", tools::diagnosticsToJson(check.result.diagnostics)}};
-  return answer.dump();
+  return jsonText(answer);
 }
 
 std::string formatsJson() {
@@ -36,7 +37,7 @@ std::string formatsJson() {
                     {"writes", row.write != nullptr},
                     {"binary", row.binary}});
   }
-  return rows.dump();
+  return jsonText(rows);
 }
 
 }  // namespace web

@@ -4,6 +4,7 @@
 #include "scenefile/format.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/sfconvert/conversion_options.h"
+#include "web/wasm/json_text.h"
 #include "web/wasm/module_threads.h"
 
 namespace web {
@@ -23,7 +24,7 @@ WebConversion convertText(std::string_view text, const std::string& name, const 
         result.diagnostics);
     if (converted) conversion.output = std::move(converted->main);
   }
-  conversion.diagnostics = tools::diagnosticsToJson(result.diagnostics).dump();
+  conversion.diagnostics = jsonText(tools::diagnosticsToJson(result.diagnostics));
   return conversion;
 }
 

@@ -5,6 +5,7 @@
 #include "tools/sfls/analysis.h"
 #include "tools/sfls/document.h"
 #include "tools/sfls/features.h"
+#include "web/wasm/json_text.h"
 #include "web/wasm/module_threads.h"
 
 namespace web {
@@ -27,12 +28,13 @@ OpenDocument open(std::string text) {
 
 std::string hoverJson(std::string text, std::uint32_t line, std::uint32_t character) {
   OpenDocument opened = open(std::move(text));
-  return sfls::hover(opened.document, opened.analysis.get(), {line, character}).dump();
+  return jsonText(sfls::hover(opened.document, opened.analysis.get(), {line, character}));
 }
 
 std::string completionJson(std::string text, std::uint32_t line, std::uint32_t character) {
   OpenDocument opened = open(std::move(text));
-  return sfls::completion(opened.document, opened.analysis.get(), {line, character}, false).dump();
+  return jsonText(
+      sfls::completion(opened.document, opened.analysis.get(), {line, character}, false));
 }
 
 }  // namespace web

@@ -12,6 +12,7 @@
 #include "scenefile/convert.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/document_check.h"
+#include "web/wasm/json_text.h"
 #include "web/wasm/module_threads.h"
 
 namespace web {
@@ -100,7 +101,7 @@ std::string RenderSession::statusJson() const {
                  {"depth", settings_.maxDepth},
                  {"fov", settings_.verticalFovDegrees},
                  {"threads", settings_.threads}};
-  return status.dump();
+  return jsonText(status);
 }
 
 std::optional<render::RenderSettings> RenderSession::settingsWith(
