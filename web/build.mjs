@@ -38,8 +38,11 @@ await build({
   splitting: true,
   chunkNames: 'chunks/[name]-[hash]',
 });
-// A classic script: the worker loads the modules with importScripts.
-await build({ ...common, entryPoints: ['src/render-worker.js'], outfile: join(out, 'render-worker.js'), format: 'iife' });
+// Classic scripts: the worker loads the modules with importScripts, and
+// boot.js runs before the page's bundle has loaded.
+for (const name of ['render-worker.js', 'boot.js']) {
+  await build({ ...common, entryPoints: [`src/${name}`], outfile: join(out, name), format: 'iife' });
+}
 
 for (const file of ['index.html', 'style.css']) copyFileSync(join(webDir, file), join(out, file));
 const require = createRequire(import.meta.url);

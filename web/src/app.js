@@ -1,8 +1,6 @@
 // The page: the editor, the progressive render, the glTF view, the problems
 // list, open and download, and window.scenefile. Everything the page needs
 // is in its own folder: nothing is fetched from elsewhere.
-import { forceLinting } from '@codemirror/lint';
-import { createEditor, replaceText, goTo } from './editor.js';
 import { Library } from './library.js';
 import { RenderClient } from './render-client.js';
 import { RenderView } from './render-view.js';
@@ -12,6 +10,7 @@ import { readSceneFile, fileNameFor, saveBlob, acceptDrops } from './files.js';
 import { spanToRange } from './positions.js';
 import { createScenefileApi } from './scenefile-api.js';
 import { compileWasm, instantiateModule } from './wasm-loader.js';
+import { planPasses } from './render-passes.js';
 
 /* global SCENEFILE_VERSION */
 const RENDER_DEBOUNCE_MS = 100;
@@ -19,10 +18,13 @@ const GLTF_DEBOUNCE_MS = 300;
 
 const $ = (id) => document.getElementById(id);
 
-// The render worker starts first: the first image waits only for it and
-// for the main module, which compile at the same time.
-const mainWasm = compileWasm('scenefile.wasm');
-const renderer = new RenderClient(mainWasm);
+// The editor (CodeMirror, most of the page's script) loads while the first
+// image renders.
+const editorModule = import('./editor.js');
+// boot.js started the main module's compile and the render worker.
+const boot = self.scenefileBoot ?? { mainWasm: compileWasm('scenefile.wasm'), worker: null };
+const mainWasm = boot.mainWasm;
+const renderer = new RenderClient(mainWasm, boot.worker ? boot : null);
 const library = new Library(await instantiateModule(self.createScenefileModule, mainWasm));
 
 // The document: its name (diagnostics' file, downloads' names) and, for a
@@ -30,6 +32,7 @@ const library = new Library(await instantiateModule(self.createScenefileModule, 
 const documentState = { name: 'default.sf', bytes: null, loadedDoc: null };
 const view = new RenderView({ canvas: $('canvas'), progress: $('progress'), status: $('status') });
 let editor = null;
+let cm = null; // editor.js, once loaded
 
 function notice(text, isError = false) {
   const node = $('notice');
@@ -44,22 +47,51 @@ function documentInput(state) {
 
 function selectDiagnostic(d) {
   const range = spanToRange(editor.state.doc, d.line, d.column, d.length) ?? spanToRange(editor.state.doc, 1, 0, 0);
-  goTo(editor, range);
+  cm.goTo(editor, range);
 }
 
 // ---- the render: coarse, 1 spp, then the settings; every edit restarts it
 let renderTimer = 0;
 let renderStarted = 0;
 
-function startRender() {
-  const progressive = true;
-  renderStarted = performance.now();
-  renderer.render(documentInput(editor.state), documentState.name, readSettings($('settings')), progressive, {
-    status: ({ status }) => { if (status.ok) view.begin(status, progressive); },
+function renderHandlers() {
+  return {
+    status: ({ status }) => { if (status.ok) view.begin(status, true); },
     band: (message) => view.band(message),
     done: () => view.finish(performance.now() - renderStarted),
     error: ({ message }) => view.fail(message),
-  });
+  };
+}
+
+function startRender() {
+  renderStarted = performance.now();
+  renderer.render(documentInput(editor.state), documentState.name, readSettings($('settings')), true, renderHandlers());
+}
+
+// The page's first image: while the render worker still loads its module,
+// the coarse pass (80×60 at 1 spp for the default size) is drawn here by
+// the main module, and the worker goes on from the 1 spp pass.
+function startFirstRender(input) {
+  renderStarted = performance.now();
+  const options = readSettings($('settings'));
+  const session = new library.module.RenderSession(input, documentState.name, JSON.stringify(options));
+  let coarse = false;
+  try {
+    const status = JSON.parse(session.status());
+    if (status.ok) {
+      const [pass] = planPasses(status, true);
+      const pixels = session.renderRows(0, pass.height, JSON.stringify(pass.overrides));
+      view.begin(status, true);
+      view.band({ pass: pass.name, width: pass.width, height: pass.height, y0: 0, y1: pass.height, pixels });
+      coarse = true;
+    }
+  } finally {
+    session.delete();
+  }
+  const handlers = renderHandlers();
+  // The worker's status keeps the progress the coarse pass made.
+  if (coarse) handlers.status = ({ status }) => { if (status.ok) view.settings = status; };
+  renderer.render(input, documentState.name, options, true, handlers, !coarse);
 }
 
 function scheduleRender() {
@@ -115,12 +147,12 @@ function checkDocument(state) {
 function loadDocument({ name, text, bytes = null }) {
   documentState.name = name;
   documentState.bytes = bytes;
-  replaceText(editor, text);
+  cm.replaceText(editor, text);
   documentState.loadedDoc = editor.state.doc;
   $('document-name').textContent = name;
   // The same text (an empty one) is no edit: the check and the render are
   // started here for the new name and bytes.
-  forceLinting(editor);
+  cm.forceLinting(editor);
   scheduleRender();
 }
 
@@ -204,13 +236,14 @@ function showThreads(threads) {
 const start = library.defaultScene();
 documentState.name = start.name;
 $('document-name').textContent = start.name;
-editor = createEditor($('editor'), start.text, {
+startFirstRender(start.text);
+cm = await editorModule;
+editor = cm.createEditor($('editor'), start.text, {
   check: checkDocument,
   hover: (text, line, character) => library.hover(text, line, character),
   completion: (text, line, character) => library.completion(text, line, character),
 }, scheduleRender);
 documentState.loadedDoc = editor.state.doc;
-startRender();
 wireToolbar();
 renderer.ready.then(showThreads);
 window.scenefile = createScenefileApi(library, mainWasm, SCENEFILE_VERSION);

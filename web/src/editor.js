@@ -8,13 +8,15 @@ import {
 } from '@codemirror/view';
 import { defaultKeymap, history, historyKeymap, indentWithTab } from '@codemirror/commands';
 import { syntaxHighlighting, defaultHighlightStyle } from '@codemirror/language';
-import { linter, lintGutter, lintKeymap } from '@codemirror/lint';
+import { linter, lintGutter, lintKeymap, forceLinting } from '@codemirror/lint';
 import { autocompletion, completionKeymap, snippet } from '@codemirror/autocomplete';
 import { searchKeymap, highlightSelectionMatches } from '@codemirror/search';
 import { sceneLanguage, sceneHighlightStyle } from './scene-language.js';
 import { toEditorDiagnostics } from './diagnostics.js';
 import { lspPosition, fromLspPosition } from './positions.js';
 import { markupToDom } from './markdown.js';
+
+export { forceLinting };
 
 const LINT_DELAY_MS = 150;
 

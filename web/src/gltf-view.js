@@ -5,6 +5,17 @@ import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
+// A light exported from a scene file carries its colour and the distance
+// at which that colour is what it gives (extras.sf). Its candela are for a
+// renderer with exposure; here the light gives at that distance the
+// irradiance that lets a white diffuse surface show the colour itself.
+function matchSceneLight(light) {
+  const sf = light.userData?.sf ?? light.parent?.userData?.sf;
+  if (!sf?.referenceDistance || !sf.colour) return;
+  const brightest = Math.max(...sf.colour);
+  light.intensity = Math.PI * brightest * sf.referenceDistance ** 2;
+}
+
 export class GltfView {
   constructor(container) {
     this.container = container;
@@ -50,7 +61,11 @@ export class GltfView {
     const scene = gltf.scene;
     scene.updateMatrixWorld(true);
     let lights = 0;
-    scene.traverse((node) => { if (node.isLight) lights += 1; });
+    scene.traverse((node) => {
+      if (!node.isLight) return;
+      lights += 1;
+      matchSceneLight(node);
+    });
     const shown = new THREE.Scene();
     shown.background = this.scene.background;
     shown.add(scene);

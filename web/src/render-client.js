@@ -8,8 +8,11 @@ const STUCK_MS = 1000;
 export class RenderClient {
   // wasmModule: a Promise of the single-thread module's compiled wasm,
   // handed to a worker that is not cross-origin isolated.
-  constructor(wasmModule) {
+  // started: {worker, messages} of a worker already started (boot.js),
+  // with the messages it has posted so far, or null.
+  constructor(wasmModule, started = null) {
     this.wasmModule = wasmModule;
+    this.started = started;
     this.nextId = 1;
     this.active = null; // {id, handlers}
     this.threads = null;
@@ -18,13 +21,16 @@ export class RenderClient {
   }
 
   start() {
-    this.worker = new Worker('render-worker.js', { name: 'render' });
+    this.worker = this.started?.worker ?? new Worker('render-worker.js', { name: 'render' });
     this.lastHeard = performance.now();
     this.workerReady = false;
     this.worker.onmessage = (event) => this.receive(event.data);
+    for (const message of this.started?.messages ?? []) this.receive(message);
+    this.started = null;
     this.worker.onerror = (event) => this.fail(event.message ?? 'the render worker failed');
     if (!self.crossOriginIsolated) {
-      this.wasmModule.then((module) => this.worker.postMessage({ type: 'init', wasmModule: module }));
+      const worker = this.worker;
+      this.wasmModule.then((module) => worker.postMessage({ type: 'init', wasmModule: module }));
     }
   }
 
@@ -53,12 +59,13 @@ export class RenderClient {
   }
 
   // Starts a render, cancelling the one running. handlers: {status, band,
-  // done, error}, each given the worker's message.
-  render(text, name, options, progressive, handlers) {
+  // done, error}, each given the worker's message. Without `coarse`, a
+  // progressive render leaves out its coarse pass.
+  render(text, name, options, progressive, handlers, coarse = true) {
     this.cancel();
     const id = this.nextId++;
     this.active = { id, handlers };
-    this.worker.postMessage({ type: 'render', id, text, name, options, progressive });
+    this.worker.postMessage({ type: 'render', id, text, name, options, progressive, coarse });
     return id;
   }
 

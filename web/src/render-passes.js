@@ -8,8 +8,9 @@ const BAND_TARGET_MS = 40;
 
 // The passes for a session's settings (its status): coarse (1/8 size,
 // 1 spp), 1 spp at full size, then the settings themselves where they ask
-// for more; a single pass of the settings when not progressive.
-export function planPasses(status, progressive) {
+// for more; a single pass of the settings when not progressive. Without
+// `coarse`, the coarse pass is left out (the page drew it already).
+export function planPasses(status, progressive, coarse = true) {
   const { width, height } = status;
   const final = { name: 'final', width, height, samples: status.spp, overrides: {} };
   if (!progressive) return [final];
@@ -21,7 +22,7 @@ export function planPasses(status, progressive) {
     { name: '1spp', width, height, samples: 1, overrides: { spp: 1, adaptive: false } },
   ];
   if (status.spp > 1 || status.adaptive) passes.push(final);
-  return passes;
+  return coarse ? passes : passes.slice(1);
 }
 
 // Sizes bands from the time the last ones took per sample.

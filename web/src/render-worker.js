@@ -3,7 +3,7 @@
 // a cancel, or a newer render, stops the running one within a band.
 //
 // Protocol (page → worker): {type:'init', wasmModule?}, {type:'render', id,
-// text, name, options, progressive}, {type:'cancel', id}.
+// text, name, options, progressive, coarse}, {type:'cancel', id}.
 // Worker → page: {type:'ready', threads, wasmModule}, then per render
 // {id, type:'status', status}, {id, type:'band', pass, width, height, y0,
 // y1, pixels}..., {id, type:'done'} or {id, type:'error', message,
@@ -81,7 +81,7 @@ function errorMessage(error) {
   return error?.message ?? String(error);
 }
 
-async function render({ id, text, name, options, progressive }) {
+async function render({ id, text, name, options, progressive, coarse }) {
   currentId = id;
   let session = null;
   try {
@@ -96,7 +96,7 @@ async function render({ id, text, name, options, progressive }) {
       return;
     }
     const sizer = new BandSizer();
-    for (const pass of planPasses(status, progressive)) {
+    for (const pass of planPasses(status, progressive, coarse !== false)) {
       if (!(await renderPass(session, pass, id, sizer))) return;
     }
     self.postMessage({ id, type: 'done' });
