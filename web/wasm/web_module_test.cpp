@@ -1,0 +1,93 @@
+// The web module's check() and convert() give what sfcheck --format json
+// and sfconvert --to TO - - give for the same text: the page promises
+// their output, so each is held to the tool itself, run in this process.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "libscene/testing/test_support.h"
+#include "scenefile/format.h"
+#include "tools/common/tool_streams.h"
+#include "tools/sfcheck/sfcheck.h"
+#include "tools/sfconvert/sfconvert.h"
+#include "web/wasm/web_check.h"
+#include "web/wasm/web_convert.h"
+
+namespace {
+
+struct ToolRun {
+  int status = 0;
+  std::string out;
+  std::string err;
+};
+
+// `tool` run on `input` given on standard input.
+template <typename Tool>
+ToolRun runOnStandardInput(Tool tool, std::vector<const char*> args, const std::string& input) {
+  std::istringstream in(input);
+  std::ostringstream out;
+  std::ostringstream err;
+  tools::ToolStreams streams(in, out, err);
+  ToolRun run;
+  run.status = tool(static_cast<int>(args.size()), args.data(), streams);
+  run.out = out.str();
+  run.err = err.str();
+  return run;
+}
+
+const std::filesystem::path kExamples = std::filesystem::path(SCENE_TESTDATA_DIR) / "../examples";
+
+const std::vector<std::string>& sampleTexts() {
+  static const std::vector<std::string> texts = {
+      scene::testing::readText(kExamples / "red-sphere.sf"),
+      scene::testing::readText(kExamples / "blue-cube.txt"),
+      "CAMERA\n1 2 3\nSPHERE 1\n",
+      "SPHERE\nnot a colour\n",
+      "",
+      "\xff\xfe not UTF-8\n",
+  };
+  return texts;
+}
+
+TEST(WebModule, CheckGivesSfchecksDiagnosticsAndTheRegistrysFormatName) {
+  for (const std::string& text : sampleTexts()) {
+    nlohmann::json mine = nlohmann::json::parse(web::checkJson(text, "<stdin>"));
+    ToolRun native =
+        runOnStandardInput(tools::runSfcheck, {"sfcheck", "--format", "json", "-"}, text);
+    nlohmann::json report = nlohmann::json::parse(native.out);
+    EXPECT_EQ(mine["diagnostics"], report["files"][0]["diagnostics"]) << text;
+    std::optional<scene::Format> format = scene::detectFormat(text, "<stdin>");
+    EXPECT_EQ(mine["format"], format ? nlohmann::json(std::string(scene::formatInfo(*format).name))
+                                     : nlohmann::json(nullptr))
+        << text;
+  }
+}
+
+TEST(WebModule, ConvertGivesSfconvertsOutputToStandardOutput) {
+  for (const std::string& text : sampleTexts()) {
+    for (const scene::FormatInfo& row : scene::formats()) {
+      std::string to(row.name);
+      web::WebConversion mine = web::convertText(text, "<stdin>", to);
+      ToolRun native =
+          runOnStandardInput(tools::runSfconvert,
+                             {"sfconvert", "--to", to.c_str(), "--format", "json", "-", "-"}, text);
+      ASSERT_EQ(mine.output.has_value(), native.status == 0) << to << "\n" << text;
+      if (mine.output) {
+        EXPECT_EQ(*mine.output, native.out) << to << "\n" << text;
+      }
+      EXPECT_EQ(mine.binary, row.binary);
+    }
+  }
+}
+
+TEST(WebModule, ConvertRefusesAFormatNotInTheRegistry) {
+  web::WebConversion mine = web::convertText(sampleTexts()[0], "<stdin>", "obj");
+  EXPECT_FALSE(mine.output);
+  EXPECT_EQ(mine.diagnostics, "[]");
+}
+
+}  // namespace
