@@ -4,7 +4,7 @@
 // image), index.html, the style, coi-serviceworker's script, and the
 // scenes of examples/ and docs/guide/ with an index for the page's menu.
 import { build } from 'esbuild';
-import { copyFileSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -17,6 +17,8 @@ if (process.argv.length !== 3) {
 }
 const out = resolve(process.argv[2]);
 mkdirSync(out, { recursive: true });
+// Chunks are named by their hash: the last build's would stay beside them.
+rmSync(join(out, 'chunks'), { recursive: true, force: true });
 
 // The project's version, from the root CMakeLists.txt's project().
 const version = /project\(scenefile VERSION ([0-9.]+)/.exec(readFileSync(join(root, 'CMakeLists.txt'), 'utf8'))[1];
