@@ -34,7 +34,7 @@ std::string hoverJson(std::string text, std::uint32_t line, std::uint32_t charac
 std::string completionJson(std::string text, std::uint32_t line, std::uint32_t character) {
   OpenDocument opened = open(std::move(text));
   return jsonText(
-      sfls::completion(opened.document, opened.analysis.get(), {line, character}, false));
+      sfls::completion(opened.document, opened.analysis.get(), {line, character}, true));
 }
 
 }  // namespace web

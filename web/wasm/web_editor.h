@@ -8,9 +8,10 @@
 namespace web {
 
 // textDocument/hover's and textDocument/completion's result as JSON (a
-// Hover, a CompletionList with plain-text items; "null" when none) at
-// `line` and `character` (from 0, the character in UTF-16 code units, as
-// CodeMirror counts) of `text`, checked as sfls checks an open document.
+// Hover, a CompletionList whose items may be snippets, as for an editor
+// that takes them; "null" when none) at `line` and `character` (from 0,
+// the character in UTF-16 code units, as CodeMirror counts) of `text`,
+// checked as sfls checks an open document.
 std::string hoverJson(std::string text, std::uint32_t line, std::uint32_t character);
 std::string completionJson(std::string text, std::uint32_t line, std::uint32_t character);
 
