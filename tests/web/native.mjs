@@ -15,12 +15,19 @@ function run(tool, args, { cwd, input } = {}) {
   return { status: r.status, stdout: r.stdout, stderr: r.stderr.toString() };
 }
 
-// sfcheck --format json on FILE, run in its folder (so that `file` is its
-// name, as the page names an opened file): {format, diagnostics}.
+// sfcheck --format json on FILE alone: a copy in an empty folder, as the
+// page holds a file opened in it, without the files beside it (a glTF's
+// .bin, an OUTPUT_FILE's links); run there, so that `file` is its name, as
+// the page names an opened file. {format, diagnostics}.
 export function sfcheck(file) {
-  const r = run('sfcheck', ['--format', 'json', path.basename(file)], { cwd: path.dirname(file) });
-  const json = JSON.parse(r.stdout.toString());
-  return json.files[0];
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'web-check-'));
+  try {
+    fs.copyFileSync(file, path.join(dir, path.basename(file)));
+    const r = run('sfcheck', ['--format', 'json', path.basename(file)], { cwd: dir });
+    return JSON.parse(r.stdout.toString()).files[0];
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
 }
 
 // sfcheck --fix on a copy of TEXT: the fixed text.

@@ -117,17 +117,34 @@ test('options: threads', async () => {
   }
 });
 
+// sfrender's refusal of OPTIONS, without its "sfrender: error: --".
+function sfrenderRefusal(options) {
+  const native = sfrender(null, options);
+  assert.notEqual(native.status, 0, `sfrender ${JSON.stringify(options)}`);
+  return /^sfrender: error: (?:--)?(.*)$/m.exec(native.stderr)[1];
+}
+
 test('a bad option is refused with sfrender\'s words', async () => {
   const scene = fs.readFileSync(path.join(root, 'examples/red-sphere.sf'), 'utf8');
-  for (const [option, value] of [['spp', 0], ['width', 0], ['fov', 200], ['depth', -1],
-                                 ['adaptive', 2], ['height', 100000]]) {
-    const native = sfrender(null, { [option]: value });
-    assert.notEqual(native.status, 0, `sfrender --${option} ${value}`);
-    const words = /^sfrender: error: --(.*)$/m.exec(native.stderr)[1];
-    const got = await renderInPage(served[true].page, scene, { [option]: value });
-    assert.ok(got.rejected, `{${option}: ${value}} rendered`);
-    assert.equal(got.message, words);
+  const refused = async (options) => {
+    const got = await renderInPage(served[true].page, scene, options);
+    assert.ok(got.rejected, `${JSON.stringify(options)} rendered`);
+    return got.message;
+  };
+  for (const [option, value] of [['width', 0], ['height', 100000], ['fov', 200], ['adaptive', 2],
+                                 ['threads', -1], ['seed', -1], ['width', 1.5]]) {
+    assert.equal(await refused({ [option]: value }), sfrenderRefusal({ [option]: value }));
   }
+  // Samples and bounces: sfrender holds them to --max-spp and --max-depth,
+  // which the page has not; its range ends at their defaults.
+  for (const [option, low, over] of [['spp', 0, 2000], ['depth', -1, 100]]) {
+    const limit = /more than the limit of (\d+)/.exec(sfrenderRefusal({ [option]: over }))[1];
+    const range = sfrenderRefusal({ [option]: low }).replace(/and \d+$/, `and ${limit}`);
+    assert.equal(await refused({ [option]: low }), range);
+    assert.equal(await refused({ [option]: over }), `${option}: ${over} is not between ${low + 1} and ${limit}`);
+  }
+  // Too many pixels for the memory: refused, not tried.
+  assert.match(await refused({ width: 20000, height: 20000 }), /more than the limit of/);
 });
 
 test('not cross-origin isolated: one thread', async () => {
