@@ -47,6 +47,7 @@ bench: build
 	@bash bench/equal_error.sh $(BUILD_DIR)
 	@bash bench/tiles_bench.sh $(BUILD_DIR)
 	@bash bench/sfls_bench.sh $(BUILD_DIR)
+	@bash bench/web_bench.sh $(BUILD_DIR)
 
 # The whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (but the label "slurm", which tests the Slurm scripts on a cluster, not memory safety):

@@ -86,12 +86,12 @@ export function launchBrowser() {
 
 // Opens the page at URL in a new context and waits for window.scenefile.
 // The returned watch lists the page's uncaught errors, console errors,
-// crashes and every request to another origin than the page's.
+// crashes, its requests, and those to another origin than the page's.
 export async function openPage(browser, url, { wait = true, acceptDownloads = false } = {}) {
   const context = await browser.newContext({ acceptDownloads });
   const page = await context.newPage();
   const origin = new URL(url).origin;
-  const watch = { errors: [], consoleErrors: [], foreignRequests: [], crashed: false };
+  const watch = { errors: [], consoleErrors: [], requests: [], foreignRequests: [], crashed: false };
   page.on('pageerror', (e) => watch.errors.push(String(e)));
   page.on('console', (m) => {
     if (m.type() === 'error') watch.consoleErrors.push(m.text());
@@ -100,6 +100,7 @@ export async function openPage(browser, url, { wait = true, acceptDownloads = fa
   // Requests of the page and of its workers (the render worker's module).
   context.on('request', (r) => {
     const u = r.url();
+    watch.requests.push(u);
     if (!u.startsWith(origin + '/') && !u.startsWith('data:') && !u.startsWith('blob:')) {
       watch.foreignRequests.push(u);
     }
