@@ -80,7 +80,8 @@ function startFirstRender(input) {
     const status = JSON.parse(session.status());
     if (status.ok) {
       const [pass] = planPasses(status, true);
-      const pixels = session.renderRows(0, pass.height, JSON.stringify(pass.overrides));
+      const answer = session.renderRows(0, pass.height, JSON.stringify(pass.overrides));
+      const pixels = new Uint8Array(answer.buffer, answer.byteOffset, answer.byteLength).slice();
       view.begin(status, true);
       view.band({ pass: pass.name, width: pass.width, height: pass.height, y0: 0, y1: pass.height, pixels });
       coarse = true;

@@ -17,8 +17,9 @@ export class Library {
   convertRaw(input, name, to) {
     const result = this.module.convert(input, name, to);
     let output = result.output ?? null;
-    // A view of the module's memory would change under the next call.
-    if (output instanceof Uint8Array) output = output.slice();
+    // Bytes as a Uint8Array whatever typed array the module answers, and
+    // copied: a view of the module's memory would change under the next call.
+    if (ArrayBuffer.isView(output)) output = new Uint8Array(output.buffer, output.byteOffset, output.byteLength).slice();
     return { output, diagnostics: JSON.parse(result.diagnostics || '[]') };
   }
 

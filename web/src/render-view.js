@@ -33,7 +33,7 @@ export class RenderView {
 
   band(message) {
     const { pass, width, height, y0, y1, pixels } = message;
-    const image = new ImageData(new Uint8ClampedArray(pixels.buffer), width, y1 - y0);
+    const image = new ImageData(new Uint8ClampedArray(pixels.buffer, pixels.byteOffset, pixels.byteLength), width, y1 - y0);
     if (pass === 'coarse') this.drawCoarse(image, width, height, y0);
     else this.context.putImageData(image, 0, y0);
     this.done += (y1 - y0) * width * (pass === 'final' ? this.settings.spp : 1);

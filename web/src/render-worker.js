@@ -65,10 +65,12 @@ function renderPass(session, pass, id, sizer) {
       const started = performance.now();
       const view = session.renderRows(y0, y1, overrides);
       sizer.record(pass, y1 - y0, performance.now() - started);
-      // The module's answer is a copy of its own; a view of its memory (a
-      // SharedArrayBuffer with threads) is copied before it is sent.
-      const own = view.buffer instanceof ArrayBuffer && view.byteOffset === 0 && view.byteLength === view.buffer.byteLength;
-      const pixels = own ? view : new Uint8Array(view);
+      // The bytes as a Uint8Array, whatever typed array the module answers;
+      // a view of its memory (a SharedArrayBuffer with threads) is copied
+      // before it is sent, a copy of its own is handed over.
+      const bytes = new Uint8Array(view.buffer, view.byteOffset, view.byteLength);
+      const own = bytes.buffer instanceof ArrayBuffer && bytes.byteOffset === 0 && bytes.byteLength === bytes.buffer.byteLength;
+      const pixels = own ? bytes : bytes.slice();
       self.postMessage({ id, type: 'band', pass: pass.name, width: pass.width, height: pass.height, y0, y1, pixels },
         [pixels.buffer]);
       y0 = y1;
