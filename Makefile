@@ -33,11 +33,11 @@ web-serve: web
 	@python3 scripts/web-serve.py $(BUILD_DIR)/web --port $(WEB_PORT)
 
 # The API reference, from the public headers (Doxygen): $(BUILD_DIR)/docs/html;
-# the pictures of docs/GUIDE.md, from the scenes in the repository; and
-# docs/EDITORS.md's, of Neovim with sfls.
-docs: configure
-	@cmake --build $(BUILD_DIR) -j $(JOBS) --target docs docs-images docs-editor-images
-	@echo "The API reference is in $(BUILD_DIR)/docs/html/index.html; the guide's pictures in docs/images/guide, the editors' in docs/images/editors."
+# the pictures of docs/GUIDE.md, from the scenes in the repository;
+# docs/EDITORS.md's, of Neovim with sfls; and docs/WEB.md's, of the page.
+docs: configure web
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target docs docs-images docs-editor-images docs-web-images
+	@echo "The API reference is in $(BUILD_DIR)/docs/html/index.html; the guide's pictures in docs/images/guide, the editors' in docs/images/editors, the page's in docs/images/web."
 
 bench: build
 	@bash bench/run.sh $(BUILD_DIR)
