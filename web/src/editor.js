@@ -87,6 +87,9 @@ export function createEditor(parent, text, features, onChange) {
   const state = EditorState.create({
     doc: text,
     extensions: [
+      // Only \n ends a line: a file's \r\n or lone \r stays in the text, so
+      // that the check sees the file as it is.
+      EditorState.lineSeparator.of('\n'),
       lineNumbers(), highlightActiveLineGutter(), highlightActiveLine(), history(), drawSelection(),
       highlightSelectionMatches(), sceneLanguage, syntaxHighlighting(sceneHighlightStyle), syntaxHighlighting(defaultHighlightStyle, { fallback: true }),
       lint, lintGutter(), hoverExtension(features),

@@ -29,7 +29,10 @@ export function createScenefileApi(library, wasmModule, version) {
           resolve(image);
         },
         error({ message, diagnostics }) {
-          const error = new Error(message);
+          // As convert(): a scene's first error's own message; an option
+          // refused, sfrender's message.
+          const first = diagnostics?.find((d) => d.severity === 'error');
+          const error = new Error(first ? first.message : message);
           error.diagnostics = diagnostics ?? [];
           reject(error);
         },
