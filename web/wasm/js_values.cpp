@@ -1,20 +1,28 @@
 #include "web/wasm/js_values.h"
 
 namespace web {
+namespace {
+
+// A Uint8Array over `size` bytes of the module's memory at `data` (a view
+// of char would be an Int8Array).
+emscripten::val byteView(std::size_t size, const char* data) {
+  return emscripten::val(
+      emscripten::typed_memory_view(size, reinterpret_cast<const unsigned char*>(data)));
+}
+
+}  // namespace
 
 std::string bytesOf(const emscripten::val& input) {
   if (input.isString()) return input.as<std::string>();
   std::string bytes(input["length"].as<std::size_t>(), '\0');
-  // A view of the string's memory, filled by Uint8Array.set in one copy.
-  emscripten::val view(emscripten::typed_memory_view(bytes.size(), bytes.data()));
-  view.call<void>("set", input);
+  // Filled by Uint8Array.set, in one copy.
+  byteView(bytes.size(), bytes.data()).call<void>("set", input);
   return bytes;
 }
 
 emscripten::val uint8ArrayOf(std::string_view bytes) {
-  emscripten::val view(emscripten::typed_memory_view(bytes.size(), bytes.data()));
   // slice() copies: the view would move with the module's memory.
-  return view.call<emscripten::val>("slice");
+  return byteView(bytes.size(), bytes.data()).call<emscripten::val>("slice");
 }
 
 }  // namespace web

@@ -53,6 +53,7 @@ function compareRender(M, what, text, options, flags, input) {
   const band = 16;
   for (let y = 0; y < status.height; y += band) {
     const rows = session.renderRows(y, Math.min(y + band, status.height), '{}');
+    if (!(rows instanceof Uint8Array)) expect('a band is a Uint8Array', false, String(rows));
     pixels.set(rows, y * status.width * 4);
   }
   const seconds = (Date.now() - started) / 1000;
@@ -95,7 +96,8 @@ async function main() {
                                 ['blue-cube.txt', fs.readFileSync(path.join(root, 'examples/blue-cube.txt'), 'utf8')]]) {
       const mine = M.convert(text, '<stdin>', format.name);
       const native = run('sfconvert', ['--to', format.name, '-', '-'], text);
-      const bytes = typeof mine.output === 'string' ? Buffer.from(mine.output) : Buffer.from(mine.output);
+      if (format.binary && !(mine.output instanceof Uint8Array)) expect('glb is a Uint8Array', false);
+      const bytes = Buffer.from(mine.output);
       expect(`convert ${what} to ${format.name}`, native.status === 0 && bytes.equals(native.out),
              `${bytes.length} bytes`);
     }
