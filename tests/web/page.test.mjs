@@ -45,17 +45,16 @@ function settings(page) {
   });
 }
 
-// window.scenefile.render's image of the editor's text with the form's
-// settings: {width, height, data}.
-async function expectedImage(page) {
-  const r = await page.evaluate(async (options) => {
-    const view = document.querySelector('#editor .cm-content').cmTile.view;
-    const pixels = await window.scenefile.render(view.state.doc.toString(), options);
+// window.scenefile.render's image of the editor's text with OPTIONS (the
+// form's settings unless given): {width, height, data}.
+async function expectedImage(page, options) {
+  const r = await page.evaluate(async ({ text, options }) => {
+    const pixels = await window.scenefile.render(text, options);
     let s = '';
     for (let i = 0; i < pixels.length; i += 0x8000)
       s += String.fromCharCode.apply(null, pixels.subarray(i, i + 0x8000));
     return { width: pixels.width, height: pixels.height, b64: btoa(s) };
-  }, await settings(page));
+  }, { text: await editorText(page), options: options ?? await settings(page) });
   return { width: r.width, height: r.height, data: Buffer.from(r.b64, 'base64') };
 }
 
@@ -189,14 +188,8 @@ test('the examples menu loads each scene, and the default scene', async () => {
   }
   // The first entry: the default scene, whose render is sfrender's without a scene.
   await page.selectOption('#examples', '');
-  await page.waitForFunction(() => document.querySelector('#examples').value === '');
-  await new Promise((r) => setTimeout(r, 200));
-  const pixels = await page.evaluate(async () => {
-    const view = document.querySelector('#editor .cm-content').cmTile.view;
-    const p = await window.scenefile.render(view.state.doc.toString(), { width: 160, height: 120 });
-    return { width: p.width, height: p.height, data: [...p] };
-  });
-  assert.ok(same(pixels, sfrender(null, { width: 160, height: 120 }).image),
+  const size = { width: 160, height: 120 };
+  assert.ok(same(await expectedImage(page, size), sfrender(null, size).image),
             'the menu\'s default scene is not sfrender\'s');
 });
 
