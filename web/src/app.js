@@ -15,6 +15,10 @@ import { planPasses } from './render-passes.js';
 /* global SCENEFILE_VERSION */
 const RENDER_DEBOUNCE_MS = 100;
 const GLTF_DEBOUNCE_MS = 300;
+// The glTF view converts on the main thread: a scene of 150,000 spheres
+// (10 MB) takes seconds and makes a 60 MB .glb. Larger texts than this are
+// left out of it.
+const GLTF_MAX_TEXT = 1 << 20;
 
 const $ = (id) => document.getElementById(id);
 
@@ -137,7 +141,9 @@ function checkDocument(state) {
   const result = library.check(documentInput(state), documentState.name);
   showProblems($('problems'), result.diagnostics, selectDiagnostic);
   $('problems-count').textContent = String(result.diagnostics.length);
-  if (!result.diagnostics.some((d) => d.severity === 'error')) {
+  const size = state.doc.length;
+  $('gltf-pane').classList.toggle('too-large', size > GLTF_MAX_TEXT);
+  if (size <= GLTF_MAX_TEXT && !result.diagnostics.some((d) => d.severity === 'error')) {
     clearTimeout(gltfTimer);
     gltfTimer = setTimeout(() => refreshGltf().catch((error) => { $('gltf-view').dataset.error = error.message; }), GLTF_DEBOUNCE_MS);
   }

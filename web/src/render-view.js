@@ -43,7 +43,9 @@ export class RenderView {
 
   drawCoarse(image, width, height, y0) {
     if (!this.coarse || this.coarse.width !== width || this.coarse.height !== height) {
-      this.coarse = new OffscreenCanvas(width, height);
+      this.coarse = document.createElement('canvas');
+      this.coarse.width = width;
+      this.coarse.height = height;
     }
     this.coarse.getContext('2d').putImageData(image, 0, y0);
     this.context.imageSmoothingEnabled = true;
