@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import {
-  assertClean, base64, filesIn, installPageHelpers, launchBrowser, openPage, relative,
+  assertClean, base64, filesIn, launchBrowser, openPage, relative,
   root, startServer,
 } from './harness.mjs';
 import { sfcheck } from './native.mjs';
@@ -34,7 +34,6 @@ before(async () => {
   server = await startServer();
   browser = await launchBrowser();
   opened = await openPage(browser, server.url);
-  await installPageHelpers(opened.page);
 });
 after(async () => {
   await browser?.close();

@@ -46,11 +46,7 @@ async function convertInPage(text, to) {
     try {
       const out = window.scenefile.convert(text, to);
       if (typeof out === 'string') return { text: out };
-      const bytes = new Uint8Array(out.buffer, out.byteOffset, out.byteLength);
-      let s = '';
-      for (let i = 0; i < bytes.length; i += 0x8000)
-        s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
-      return { isBytes: out instanceof Uint8Array, type: out.constructor.name, b64: btoa(s) };
+      return { isBytes: out instanceof Uint8Array, type: out.constructor.name, b64: window.__base64(out) };
     } catch (e) {
       return { thrown: true, message: e.message, diagnostics: e.diagnostics ?? null };
     }

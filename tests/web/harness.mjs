@@ -89,6 +89,7 @@ export function launchBrowser() {
 // crashes, its requests, and those to another origin than the page's.
 export async function openPage(browser, url, { wait = true, acceptDownloads = false } = {}) {
   const context = await browser.newContext({ acceptDownloads });
+  await context.addInitScript(pageHelpers);
   const page = await context.newPage();
   const origin = new URL(url).origin;
   const watch = { errors: [], consoleErrors: [], requests: [], foreignRequests: [], crashed: false };
@@ -123,24 +124,22 @@ export function assertClean(assert, watch, what = 'the page') {
 }
 
 // A file's bytes for page.evaluate, which carries strings: base64, which
-// the page turns back into a Uint8Array with fromBase64 below.
+// the page turns back into a Uint8Array with window.__bytes.
 export function base64(file) {
   return fs.readFileSync(file).toString('base64');
 }
 
-// Run in the page (page.evaluate): base64 to bytes.
-export const pageHelpers = `
+// Bytes through page.evaluate: window.__bytes(base64) in the page gives a
+// Uint8Array, window.__base64(typedArray) the base64 of its bytes.
+const pageHelpers = `
   window.__bytes = (b64) => Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
-  window.__toBase64 = (bytes) => {
+  window.__base64 = (array) => {
+    const bytes = new Uint8Array(array.buffer, array.byteOffset, array.byteLength);
     let s = '';
     for (let i = 0; i < bytes.length; i += 0x8000)
       s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
     return btoa(s);
   };`;
-
-export function installPageHelpers(page) {
-  return page.evaluate(pageHelpers);
-}
 
 // The files of a folder (not recursive) whose names match RE, sorted.
 export function filesIn(dir, re = /./) {

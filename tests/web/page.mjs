@@ -29,10 +29,7 @@ export async function canvasPixels(page) {
   const r = await page.evaluate(() => {
     const canvas = document.querySelector('#canvas');
     const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
-    let s = '';
-    for (let i = 0; i < data.length; i += 0x8000)
-      s += String.fromCharCode.apply(null, data.subarray(i, i + 0x8000));
-    return { width: canvas.width, height: canvas.height, b64: btoa(s) };
+    return { width: canvas.width, height: canvas.height, b64: window.__base64(data) };
   });
   return { width: r.width, height: r.height, data: Buffer.from(r.b64, 'base64') };
 }

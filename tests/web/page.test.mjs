@@ -50,10 +50,7 @@ function settings(page) {
 async function expectedImage(page, options) {
   const r = await page.evaluate(async ({ text, options }) => {
     const pixels = await window.scenefile.render(text, options);
-    let s = '';
-    for (let i = 0; i < pixels.length; i += 0x8000)
-      s += String.fromCharCode.apply(null, pixels.subarray(i, i + 0x8000));
-    return { width: pixels.width, height: pixels.height, b64: btoa(s) };
+    return { width: pixels.width, height: pixels.height, b64: window.__base64(pixels) };
   }, { text: await editorText(page), options: options ?? await settings(page) });
   return { width: r.width, height: r.height, data: Buffer.from(r.b64, 'base64') };
 }

@@ -42,12 +42,9 @@ async function renderInPage(page, text, options) {
   const r = await page.evaluate(async ({ text, options }) => {
     try {
       const pixels = await window.scenefile.render(text, options);
-      let s = '';
-      const bytes = new Uint8Array(pixels.buffer, pixels.byteOffset, pixels.byteLength);
-      for (let i = 0; i < bytes.length; i += 0x8000)
-        s += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
       return { width: pixels.width, height: pixels.height, threads: pixels.threads,
-               length: pixels.length, isClamped: pixels instanceof Uint8ClampedArray, b64: btoa(s) };
+               length: pixels.length, isClamped: pixels instanceof Uint8ClampedArray,
+               b64: window.__base64(pixels) };
     } catch (e) {
       return { rejected: true, message: e.message, diagnostics: e.diagnostics ?? null };
     }
