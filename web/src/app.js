@@ -10,7 +10,7 @@ import { readSceneFile, fileNameFor, saveBlob, acceptDrops } from './files.js';
 import { spanToRange } from './positions.js';
 import { createScenefileApi } from './scenefile-api.js';
 import { compileWasm, instantiateModule } from './wasm-loader.js';
-import { planPasses } from './render-passes.js';
+import { drawFirstPasses } from './first-passes.js';
 
 /* global SCENEFILE_VERSION */
 const RENDER_DEBOUNCE_MS = 100;
@@ -57,6 +57,8 @@ function selectDiagnostic(d) {
 // ---- the render: coarse, 1 spp, then the settings; every edit restarts it
 let renderTimer = 0;
 let renderStarted = 0;
+// Counts edits: a first render drawn by the page stops at the next one.
+let renderGeneration = 0;
 
 function renderHandlers() {
   return {
@@ -72,34 +74,23 @@ function startRender() {
   renderer.render(documentInput(editor.state), documentState.name, readSettings($('settings')), true, renderHandlers());
 }
 
-// The page's first image: while the render worker still loads its module,
-// the coarse pass (80×60 at 1 spp for the default size) is drawn here by
-// the main module, and the worker goes on from the 1 spp pass.
-function startFirstRender(input) {
+// The page's first image: the main module draws what it can while the
+// render worker loads its own (first-passes.js); the worker goes on from there.
+async function startFirstRender(input) {
   renderStarted = performance.now();
+  const generation = renderGeneration;
   const options = readSettings($('settings'));
-  const session = new library.module.RenderSession(input, documentState.name, JSON.stringify(options));
-  let coarse = false;
-  try {
-    const status = JSON.parse(session.status());
-    if (status.ok) {
-      const [pass] = planPasses(status, true);
-      const answer = session.renderRows(0, pass.height, JSON.stringify(pass.overrides));
-      const pixels = new Uint8Array(answer.buffer, answer.byteOffset, answer.byteLength).slice();
-      view.begin(status, true);
-      view.band({ pass: pass.name, width: pass.width, height: pass.height, y0: 0, y1: pass.height, pixels });
-      coarse = true;
-    }
-  } finally {
-    session.delete();
-  }
+  const drawn = await drawFirstPasses(library.module, input, documentState.name, options, view,
+    () => renderer.threads !== null, () => generation === renderGeneration);
+  if (generation !== renderGeneration) return;
   const handlers = renderHandlers();
-  // The worker's status keeps the progress the coarse pass made.
-  if (coarse) handlers.status = ({ status }) => { if (status.ok) view.settings = status; };
-  renderer.render(input, documentState.name, options, true, handlers, !coarse);
+  // The worker's status keeps the progress the page's passes made.
+  if (drawn > 0) handlers.status = ({ status }) => { if (status.ok) view.settings = status; };
+  renderer.render(input, documentState.name, options, true, handlers, drawn);
 }
 
 function scheduleRender() {
+  renderGeneration += 1;
   renderer.cancel();
   clearTimeout(renderTimer);
   renderTimer = setTimeout(startRender, RENDER_DEBOUNCE_MS);
@@ -243,7 +234,7 @@ function showThreads(threads) {
 const start = library.defaultScene();
 documentState.name = start.name;
 $('document-name').textContent = start.name;
-startFirstRender(start.text);
+startFirstRender(start.text).catch((error) => view.fail(error.message));
 cm = await editorModule;
 editor = cm.createEditor($('editor'), start.text, {
   check: checkDocument,

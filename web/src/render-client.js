@@ -59,13 +59,13 @@ export class RenderClient {
   }
 
   // Starts a render, cancelling the one running. handlers: {status, band,
-  // done, error}, each given the worker's message. Without `coarse`, a
-  // progressive render leaves out its coarse pass.
-  render(text, name, options, progressive, handlers, coarse = true) {
+  // done, error}, each given the worker's message. A progressive render
+  // leaves out the first `drawn` passes (the page drew them).
+  render(text, name, options, progressive, handlers, drawn = 0) {
     this.cancel();
     const id = this.nextId++;
     this.active = { id, handlers };
-    this.worker.postMessage({ type: 'render', id, text, name, options, progressive, coarse });
+    this.worker.postMessage({ type: 'render', id, text, name, options, progressive, drawn });
     return id;
   }
 

@@ -8,9 +8,9 @@ const BAND_TARGET_MS = 40;
 
 // The passes for a session's settings (its status): coarse (1/8 size,
 // 1 spp), 1 spp at full size, then the settings themselves where they ask
-// for more; a single pass of the settings when not progressive. Without
-// `coarse`, the coarse pass is left out (the page drew it already).
-export function planPasses(status, progressive, coarse = true) {
+// for more; a single pass of the settings when not progressive. The first
+// `drawn` passes are left out (the page drew them already).
+export function planPasses(status, progressive, drawn = 0) {
   const { width, height } = status;
   const final = { name: 'final', width, height, samples: status.spp, overrides: {} };
   if (!progressive) return [final];
@@ -22,7 +22,7 @@ export function planPasses(status, progressive, coarse = true) {
     { name: '1spp', width, height, samples: 1, overrides: { spp: 1, adaptive: false } },
   ];
   if (status.spp > 1 || status.adaptive) passes.push(final);
-  return coarse ? passes : passes.slice(1);
+  return passes.slice(drawn);
 }
 
 // Sizes bands from the time the last ones took per sample.
@@ -43,4 +43,17 @@ export class BandSizer {
     const samples = rows * pass.width * pass.samples;
     if (samples > 0) this.msPerSample = Math.max(ms, 0.01) / samples;
   }
+}
+
+// A zero-delay yield: a MessageChannel's message is a task, so pending
+// events (a cancel, an edit) run before the render goes on, without
+// setTimeout's minimum delay.
+export function yielder() {
+  const channel = new MessageChannel();
+  const waiting = [];
+  channel.port1.onmessage = () => waiting.shift()();
+  return () => new Promise((resolve) => {
+    waiting.push(resolve);
+    channel.port2.postMessage(null);
+  });
 }

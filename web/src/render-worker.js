@@ -3,12 +3,12 @@
 // a cancel, or a newer render, stops the running one within a band.
 //
 // Protocol (page → worker): {type:'init', wasmModule?}, {type:'render', id,
-// text, name, options, progressive, coarse}, {type:'cancel', id}.
+// text, name, options, progressive, drawn}, {type:'cancel', id}.
 // Worker → page: {type:'ready', threads, wasmModule}, then per render
 // {id, type:'status', status}, {id, type:'band', pass, width, height, y0,
 // y1, pixels}..., {id, type:'done'} or {id, type:'error', message,
 // diagnostics}.
-import { planPasses, BandSizer } from './render-passes.js';
+import { planPasses, BandSizer, yielder } from './render-passes.js';
 import { compileWasm } from './wasm-loader.js';
 
 // Threads need SharedArrayBuffer, which only a cross-origin isolated page
@@ -42,18 +42,7 @@ async function loadModule(given) {
   return module;
 }
 
-// A zero-delay yield: a MessageChannel's message is a task, so the
-// worker's pending messages (a cancel) run before the render goes on,
-// without setTimeout's minimum delay.
-const channel = new MessageChannel();
-const waiting = [];
-channel.port1.onmessage = () => waiting.shift()();
-function yieldToEvents() {
-  return new Promise((resolve) => {
-    waiting.push(resolve);
-    channel.port2.postMessage(null);
-  });
-}
+const yieldToEvents = yielder();
 
 function renderPass(session, pass, id, sizer) {
   return (async () => {
@@ -83,7 +72,7 @@ function errorMessage(error) {
   return error?.message ?? String(error);
 }
 
-async function render({ id, text, name, options, progressive, coarse }) {
+async function render({ id, text, name, options, progressive, drawn }) {
   currentId = id;
   let session = null;
   try {
@@ -98,7 +87,7 @@ async function render({ id, text, name, options, progressive, coarse }) {
       return;
     }
     const sizer = new BandSizer();
-    for (const pass of planPasses(status, progressive, coarse !== false)) {
+    for (const pass of planPasses(status, progressive, drawn ?? 0)) {
       if (!(await renderPass(session, pass, id, sizer))) return;
     }
     self.postMessage({ id, type: 'done' });
