@@ -99,10 +99,12 @@ function scheduleRender() {
 // ---- the glTF view, refreshed after a check without errors
 let gltfTimer = 0;
 let gltfView = null;
+// The first full image, or 2 s where an edit or an error comes first.
 const firstImage = new Promise((resolve) => {
   new PerformanceObserver((list, observer) => {
     if (list.getEntriesByName('scenefile-1spp-image').length) { observer.disconnect(); resolve(); }
   }).observe({ type: 'mark', buffered: true });
+  setTimeout(resolve, 2000);
 });
 
 async function refreshGltf() {
@@ -165,6 +167,7 @@ async function openExample(path) {
     loadDocument(library.defaultScene());
   } else {
     const response = await fetch(`examples/${path}`);
+    if (!response.ok) throw new Error(`examples/${path}: ${response.status} ${response.statusText}`);
     loadDocument({ name: path.split('/').pop(), text: await response.text() });
   }
   notice('');
