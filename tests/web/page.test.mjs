@@ -190,4 +190,25 @@ test('the examples menu loads each scene, and the default scene', async () => {
             'the menu\'s default scene is not sfrender\'s');
 });
 
+test('the glTF view draws the scene in three.js', async () => {
+  const { page } = opened;
+  await page.selectOption('#examples', 'examples/red-sphere.sf');
+  const canvas = page.locator('#gltf-view canvas');
+  await canvas.waitFor({ timeout: 10000 });
+  // The export of the scene drawn: red (the sphere) among the pixels.
+  const deadline = Date.now() + 10000;
+  let red = 0;
+  while (Date.now() < deadline && red === 0) {
+    const png = PNG.sync.read(await canvas.screenshot());
+    red = 0;
+    for (let i = 0; i < png.data.length; i += 4) {
+      if (png.data[i] > 100 && png.data[i] > 3 * png.data[i + 1] && png.data[i] > 3 * png.data[i + 2]) ++red;
+    }
+    if (red === 0) await new Promise((r) => setTimeout(r, 200));
+  }
+  assert.equal(await page.locator('#gltf-view').getAttribute('data-error'), null);
+  assert.ok(red > 0, 'no red sphere in the glTF view');
+  console.log(`the glTF view: ${red} red pixels`);
+});
+
 test('the page stayed clean', () => assertClean(assert, opened.watch));

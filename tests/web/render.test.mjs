@@ -90,6 +90,7 @@ test('cross-origin isolated: every core', async () => {
   assert.equal(isolated, true);
   assert.ok(cores > 1, `Chromium reports ${cores} core(s)`);
   assert.equal(threads, cores);
+  assert.equal(await page.textContent('#threads'), `${cores} threads`, 'the page says so');
 });
 
 for (const file of scenes) {
@@ -150,6 +151,7 @@ test('not cross-origin isolated: one thread', async () => {
     () => [self.crossOriginIsolated, window.scenefile.threads]);
   assert.equal(isolated, false);
   assert.equal(threads, 1);
+  assert.match(await page.textContent('#threads'), /^1 thread: the page is not cross-origin isolated/);
   for (const file of [null, path.join(root, 'examples/blue-cube.txt')]) {
     const got = await compareRender(page, file);
     assert.equal(got.threads, 1);
