@@ -2,6 +2,7 @@
 // its diagnostic in the problems list (line, column, message) and
 // underlined in the text; the fix in the diagnostic's tooltip, one click,
 // takes it away, and the text is then what `sfcheck --fix` makes of it.
+// Hover and completion give what sfls gives at the same place.
 // Usage: node run.mjs editor.test.mjs BUILD_DIR
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -9,8 +10,8 @@ import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { assertClean, launchBrowser, openPage, startServer } from './harness.mjs';
-import { sfcheck, sfcheckFix } from './native.mjs';
-import { editorText, waitForProblems } from './page.mjs';
+import { sfcheck, sfcheckFix, sflsAnswers } from './native.mjs';
+import { editorPlace, editorText, waitForProblems } from './page.mjs';
 
 // An instruction file whose object kind is in lower case (line 10): an
 // error with a fix-it ("SPHERE").
@@ -83,6 +84,38 @@ test('a typo typed, seen, and fixed in one click', async () => {
   await waitForProblems(page, [], 'the problems list after the fix');
   assert.equal(await page.locator('#editor .cm-lintRange-error').count(), 0, 'no underline left');
   assert.equal(await editorText(page), sfcheckFix(text), 'the text is sfcheck --fix\'s');
+});
+
+// Letters and digits only: markdown as text and as the page draws it.
+const words = (text) => text.replace(/[^A-Za-z0-9]+/g, ' ').trim();
+
+test('hover and completion are the language server\'s', async () => {
+  const { page } = opened;
+  const text = await editorText(page);
+  const hoverAt = { line: 6, character: 2 };  // LOCATION in the light
+  const completeAt = { line: 10, character: 0 };  // a new line in the object
+  const [hover, completion] = await sflsAnswers(
+    text, [['textDocument/hover', hoverAt], ['textDocument/completion', completeAt]]);
+
+  const place = await editorPlace(page, hoverAt);
+  await page.mouse.move(place.x, place.y);
+  const tooltip = page.locator('.cm-tooltip-hover');
+  await tooltip.waitFor({ timeout: 5000 });
+  assert.equal(words(await tooltip.innerText()), words(hover.contents.value), 'the hover');
+
+  await page.mouse.move(0, 0);
+  const at = await editorPlace(page, completeAt);
+  await page.evaluate((offset) => {
+    const view = document.querySelector('#editor .cm-content').cmTile.view;
+    view.dispatch({ selection: { anchor: offset } });
+    view.focus();
+  }, at.offset);
+  await page.keyboard.press('Control+Space');
+  const list = page.locator('.cm-tooltip-autocomplete .cm-completionLabel');
+  await list.first().waitFor({ timeout: 5000 });
+  const labels = (await list.allTextContents()).sort();
+  assert.deepEqual(labels, completion.items.map((i) => i.label).sort(), 'the completion list');
+  await page.keyboard.press('Escape');
 });
 
 test('the page stayed clean', () => assertClean(assert, opened.watch));

@@ -1,6 +1,6 @@
 // The native tools' answers, which the page's must equal: sfcheck's JSON
 // diagnostics, sfconvert's bytes, sfrender's PNG.
-import { spawnSync } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -117,4 +117,49 @@ export function shortForm(diagnostics) {
     for (const note of d.notes ?? []) out += `${place(file, note)} note: ${note.message}\n`;
   }
   return out;
+}
+
+// sfls's answers for TEXT (opened as file:///scene.txt): REQUESTS is a list
+// of [method, position] (LSP, 0-based, UTF-16); resolves to their results.
+export function sflsAnswers(text, requests) {
+  return new Promise((resolve, reject) => {
+    const server = spawn(path.join(bin, 'sfls'), [], { stdio: ['pipe', 'pipe', 'ignore'] });
+    const uri = 'file:///scene.txt';
+    const send = (message) => {
+      const body = Buffer.from(JSON.stringify({ jsonrpc: '2.0', ...message }));
+      server.stdin.write(`Content-Length: ${body.length}\r\n\r\n`);
+      server.stdin.write(body);
+    };
+    const results = new Map();
+    let done = false;
+    let buffer = Buffer.alloc(0);
+    server.stdout.on('data', (chunk) => {
+      buffer = Buffer.concat([buffer, chunk]);
+      for (;;) {
+        const end = buffer.indexOf('\r\n\r\n');
+        if (end < 0) return;
+        const length = Number(/Content-Length: *(\d+)/i.exec(buffer.subarray(0, end).toString())[1]);
+        if (buffer.length < end + 4 + length) return;
+        const message = JSON.parse(buffer.subarray(end + 4, end + 4 + length).toString());
+        buffer = buffer.subarray(end + 4 + length);
+        if (message.id !== undefined && message.id > 0) results.set(message.id, message.result);
+        if (results.size === requests.length && !done) {
+          done = true;
+          send({ id: 0, method: 'shutdown' });
+          send({ method: 'exit' });
+          resolve(requests.map((_, i) => results.get(i + 1)));
+        }
+      }
+    });
+    server.on('error', reject);
+    server.stdin.on('error', () => {});  // the server gone after exit
+    // A client that takes snippets, as the page's editor does.
+    const capabilities = { textDocument: { completion: { completionItem: { snippetSupport: true } } } };
+    send({ id: 0, method: 'initialize', params: { processId: null, rootUri: null, capabilities } });
+    send({ method: 'initialized', params: {} });
+    send({ method: 'textDocument/didOpen',
+           params: { textDocument: { uri, languageId: 'scenefile', version: 1, text } } });
+    requests.forEach(([method, position], i) =>
+      send({ id: i + 1, method, params: { textDocument: { uri }, position } }));
+  });
 }

@@ -54,3 +54,14 @@ export async function waitForProblems(page, want, what, timeout = 5000) {
   }
   assert.deepEqual(got, want, `${what} after ${timeout} ms`);
 }
+
+// The editor's place of an LSP position (0-based line, character): its
+// offset, and the middle of the character there on the screen.
+export function editorPlace(page, { line, character }) {
+  return page.evaluate(({ line, character }) => {
+    const view = document.querySelector('#editor .cm-content').cmTile.view;
+    const offset = view.state.doc.line(line + 1).from + character;
+    const box = view.coordsAtPos(offset);
+    return { offset, x: (box.left + box.right) / 2 + 2, y: (box.top + box.bottom) / 2 };
+  }, { line, character });
+}
