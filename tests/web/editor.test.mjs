@@ -106,7 +106,7 @@ test('hover and completion are the language server\'s', async () => {
   await page.mouse.move(0, 0);
   const at = await editorPlace(page, completeAt);
   await page.evaluate((offset) => {
-    const view = document.querySelector('#editor .cm-content').cmTile.view;
+    const view = window.__editorView();
     view.dispatch({ selection: { anchor: offset } });
     view.focus();
   }, at.offset);

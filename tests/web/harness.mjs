@@ -131,7 +131,17 @@ export function base64(file) {
 
 // Bytes through page.evaluate: window.__bytes(base64) in the page gives a
 // Uint8Array, window.__base64(typedArray) the base64 of its bytes.
+// window.__editorView() is the editor's CodeMirror view: CodeMirror keeps
+// the text in its state, not in the DOM (it draws only the lines in view),
+// and @codemirror/view (pinned by web/package-lock.json) hangs the view on
+// its content element.
 const pageHelpers = `
+  window.__editorView = () => {
+    const content = document.querySelector('#editor .cm-content');
+    const view = content?.cmTile?.view ?? content?.cmView?.view;
+    if (!view) throw new Error('no CodeMirror view under #editor');
+    return view;
+  };
   window.__bytes = (b64) => Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
   window.__base64 = (array) => {
     const bytes = new Uint8Array(array.buffer, array.byteOffset, array.byteLength);

@@ -1,17 +1,9 @@
 // The page's elements as the tests read them (web/index.html's ids).
 import assert from 'node:assert/strict';
 
-// The editor's whole text. CodeMirror keeps it in its state, not in the
-// DOM (it draws only the lines in view): the state is reached through the
-// view that @codemirror/view (pinned by web/package-lock.json) hangs on its
-// content element.
+// The editor's whole text.
 export function editorText(page) {
-  return page.evaluate(() => {
-    const content = document.querySelector('#editor .cm-content');
-    const view = content?.cmTile?.view ?? content?.cmView?.view;
-    if (!view) throw new Error('no CodeMirror view under #editor');
-    return view.state.doc.toString();
-  });
+  return page.evaluate(() => window.__editorView().state.doc.toString());
 }
 
 // The problems list: {line, column, code, message} of each item.
@@ -59,7 +51,7 @@ export async function waitForProblems(page, want, what, timeout = 5000) {
 // offset, and the middle of the character there on the screen.
 export function editorPlace(page, { line, character }) {
   return page.evaluate(({ line, character }) => {
-    const view = document.querySelector('#editor .cm-content').cmTile.view;
+    const view = window.__editorView();
     const offset = view.state.doc.line(line + 1).from + character;
     const box = view.coordsAtPos(offset);
     return { offset, x: (box.left + box.right) / 2 + 2, y: (box.top + box.bottom) / 2 };
