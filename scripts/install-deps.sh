@@ -85,60 +85,38 @@ for p in "${packages[@]}"; do
   fi
 done
 
-# The validator and glTF-Transform, pinned by tests/gltf/package-lock.json.
-install_validator() {
-  local folder
-  folder="$(cd "$(dirname "$0")/.." && pwd)/tests/gltf"
-  if [ ! -d "$folder/node_modules/gltf-validator" ] ||
-     [ ! -d "$folder/node_modules/@gltf-transform/functions" ]; then
-    echo "install-deps: npm ci in tests/gltf" >&2
-    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  fi
+# The npm trees, each pinned by its package-lock.json (and an .npmrc that
+# runs no install scripts): `npm ci` in FOLDER when one of the PATHS under
+# its node_modules is missing.
+npm_ci_unless_present() {
+  local folder="$1"
+  shift
+  local root
+  root="$(cd "$(dirname "$0")/.." && pwd)"
+  for path in "$@"; do
+    if [ ! -e "$root/$folder/node_modules/$path" ]; then
+      echo "install-deps: npm ci in $folder" >&2
+      (cd "$root/$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+      return
+    fi
+  done
 }
 
-# The VS Code extension's compiler, packager and grammar tests, pinned by
-# editors/vscode/package-lock.json (its .npmrc runs no install scripts).
-install_vscode_extension() {
-  local folder
-  folder="$(cd "$(dirname "$0")/.." && pwd)/editors/vscode"
-  if [ ! -x "$folder/node_modules/.bin/vsce" ] || [ ! -x "$folder/node_modules/.bin/tsc" ] ||
-     [ ! -x "$folder/node_modules/.bin/vscode-tmgrammar-snap" ] ||
-     [ ! -d "$folder/node_modules/vscode-languageclient" ]; then
-    echo "install-deps: npm ci in editors/vscode" >&2
-    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  fi
-}
-
-# playwright-core and pngjs for the page's tests, pinned by
-# tests/web/package-lock.json (its .npmrc runs no install scripts).
-install_web_tests() {
-  local folder
-  folder="$(cd "$(dirname "$0")/.." && pwd)/tests/web"
-  if [ ! -d "$folder/node_modules/playwright-core" ] || [ ! -d "$folder/node_modules/pngjs" ]; then
-    echo "install-deps: npm ci in tests/web" >&2
-    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  fi
-}
-
-# The page's editor, three.js, esbuild (its binary is the npm package
-# @esbuild/linux-x64) and coi-serviceworker, pinned by web/package-lock.json
-# (its .npmrc runs no install scripts).
-install_web_page() {
-  local folder
-  folder="$(cd "$(dirname "$0")/.." && pwd)/web"
-  if [ ! -x "$folder/node_modules/.bin/esbuild" ] || [ ! -d "$folder/node_modules/three" ] ||
-     [ ! -d "$folder/node_modules/@codemirror/view" ] ||
-     [ ! -d "$folder/node_modules/coi-serviceworker" ]; then
-    echo "install-deps: npm ci in web" >&2
-    (cd "$folder" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
-  fi
+install_npm_packages() {
+  # The glTF Validator and glTF-Transform.
+  npm_ci_unless_present tests/gltf gltf-validator @gltf-transform/functions
+  # The VS Code extension's compiler, packager and grammar tests.
+  npm_ci_unless_present editors/vscode .bin/vsce .bin/tsc .bin/vscode-tmgrammar-snap \
+    vscode-languageclient
+  # The page's tests: playwright-core (which downloads no browser) and pngjs.
+  npm_ci_unless_present tests/web playwright-core pngjs
+  # The page's editor, three.js, esbuild (its binary is the npm package
+  # @esbuild/linux-x64) and coi-serviceworker.
+  npm_ci_unless_present web .bin/esbuild three @codemirror/view coi-serviceworker
 }
 
 if [ ${#missing[@]} -eq 0 ]; then
-  install_validator
-  install_vscode_extension
-  install_web_tests
-  install_web_page
+  install_npm_packages
   exit 0
 fi
 
@@ -156,7 +134,4 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-install_validator
-install_vscode_extension
-install_web_tests
-install_web_page
+install_npm_packages

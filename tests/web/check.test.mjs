@@ -7,12 +7,9 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import { isDeepStrictEqual } from 'node:util';
-import {
-  assertClean, base64, filesIn, launchBrowser, openPage, relative,
-  root, startServer,
-} from './harness.mjs';
+import { assertClean, base64, filesIn, relative, root, servedPage } from './harness.mjs';
 import { sfcheck } from './native.mjs';
 import { sameAsNative } from './platform_differences.mjs';
 
@@ -29,18 +26,7 @@ const toName = {
   unknown: null,
 };
 
-let server;
-let browser;
-let opened;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-  opened = await openPage(browser, server.url);
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const opened = servedPage();
 
 // The page's check of each file: {format, diagnostics} or {thrown}.
 async function checkInPage(files) {

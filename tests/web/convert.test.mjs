@@ -8,10 +8,8 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
-import {
-  assertClean, filesIn, launchBrowser, openPage, relative, root, startServer,
-} from './harness.mjs';
+import { test } from 'node:test';
+import { assertClean, filesIn, relative, root, servedPage } from './harness.mjs';
 import { defaultSceneText, sfconvert } from './native.mjs';
 
 const formats = ['sf', 'instructions', 'gltf', 'glb', 'pov'];
@@ -27,18 +25,7 @@ const scenes = [
 const validatorPath = path.join(root, 'tests/gltf/node_modules/gltf-validator');
 const validator = fs.existsSync(validatorPath) ? createRequire(import.meta.url)(validatorPath) : null;
 
-let server;
-let browser;
-let opened;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-  opened = await openPage(browser, server.url);
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const opened = servedPage();
 
 // The page's conversion: {bytes (a Buffer), isBytes} or {message, diagnostics}.
 async function convertInPage(text, to) {

@@ -8,8 +8,8 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
-import { assertClean, launchBrowser, openPage, startServer } from './harness.mjs';
+import { test } from 'node:test';
+import { assertClean, servedPage } from './harness.mjs';
 import { sfcheck, sfcheckFix, sflsAnswers } from './native.mjs';
 import { editorPlace, editorText, waitForProblems } from './page.mjs';
 
@@ -21,18 +21,7 @@ const typed = [
   'END OBJECT',
 ];
 
-let server;
-let browser;
-let opened;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-  opened = await openPage(browser, server.url);
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const opened = servedPage();
 
 // sfcheck's diagnostics of TEXT as a file.
 function nativeCheck(text) {

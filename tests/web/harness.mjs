@@ -7,6 +7,7 @@ import fs from 'node:fs';
 import http from 'node:http';
 import net from 'node:net';
 import path from 'node:path';
+import { after, before } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
@@ -109,6 +110,25 @@ export async function openPage(browser, url, { wait = true, acceptDownloads = fa
   await page.goto(url + '/');
   if (wait) await waitForModule(page);
   return { page, context, watch };
+}
+
+// The page that a test file's tests share: served, opened in its own
+// browser before the first test and closed after the last. Its page,
+// context and watch (openPage's) are filled in by then.
+export function servedPage(pageOptions = {}) {
+  const opened = {};
+  let server;
+  let browser;
+  before(async () => {
+    server = await startServer();
+    browser = await launchBrowser();
+    Object.assign(opened, await openPage(browser, server.url, pageOptions));
+  });
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+  return opened;
 }
 
 export function waitForModule(page, timeout = 30000) {

@@ -8,11 +8,8 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
-import {
-  assertClean, base64, filesIn, launchBrowser, openPage, relative,
-  root, startServer,
-} from './harness.mjs';
+import { test } from 'node:test';
+import { assertClean, base64, filesIn, relative, root, servedPage } from './harness.mjs';
 import { sfcheck, shortForm } from './native.mjs';
 import { sameAsNative } from './platform_differences.mjs';
 import { waitForProblems } from './page.mjs';
@@ -27,18 +24,7 @@ const corpus = [
 // the problems list is seen to change for each.
 const clean = path.join(root, 'examples/red-sphere.sf');
 
-let server;
-let browser;
-let opened;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-  opened = await openPage(browser, server.url);
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const opened = servedPage();
 
 async function open(page, file) {
   await page.setInputFiles('#file-input', {

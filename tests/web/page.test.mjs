@@ -8,26 +8,13 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import { PNG } from 'pngjs';
-import {
-  assertClean, launchBrowser, openPage, root, startServer, webDir,
-} from './harness.mjs';
+import { assertClean, root, servedPage, webDir } from './harness.mjs';
 import { compareImages, sfconvert, sfrender } from './native.mjs';
 import { canvasPixels, editorText, marks } from './page.mjs';
 
-let server;
-let browser;
-let opened;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-  opened = await openPage(browser, server.url, { acceptDownloads: true });
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const opened = servedPage({ acceptDownloads: true });
 
 // The render options of the settings form, as the page reads them.
 function settings(page) {
