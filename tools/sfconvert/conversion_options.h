@@ -5,7 +5,7 @@
 #include <string>
 
 #include "scenefile/convert.h"
-#include "tools/sfconvert/sfconvert.h"
+#include "tools/sfconvert/sfconvert_options.h"
 
 namespace tools {
 
