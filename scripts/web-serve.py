@@ -10,6 +10,7 @@ script is answered empty): the page renders on one thread.
 import argparse
 import functools
 import http.server
+import io
 import os
 import sys
 
@@ -56,26 +57,12 @@ class PageHandler(http.server.SimpleHTTPRequestHandler):
             self.send_header("Content-Type", "text/javascript")
             self.send_header("Content-Length", str(len(body)))
             self.end_headers()
-            return _Body(body)
+            return io.BytesIO(body)
         return super().send_head()
 
     def log_message(self, format, *args):
         if self.verbose:
             super().log_message(format, *args)
-
-
-class _Body:
-    """A file-like answer for send_head's caller (copyfile, then close)."""
-
-    def __init__(self, data):
-        self.data = data
-
-    def read(self, size=-1):
-        data, self.data = self.data, b""
-        return data
-
-    def close(self):
-        pass
 
 
 def main():
