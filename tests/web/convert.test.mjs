@@ -9,18 +9,11 @@ import fs from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
 import { test } from 'node:test';
-import { assertClean, filesIn, relative, root, servedPage } from './harness.mjs';
+import { assertClean, relative, root, sampleScenes, servedPage } from './harness.mjs';
 import { defaultSceneText, sfconvert } from './native.mjs';
 
 const formats = ['sf', 'instructions', 'gltf', 'glb', 'pov'];
-const scenes = [
-  null,  // the default scene
-  ...filesIn(path.join(root, 'examples'), /\.(sf|txt)$/),
-  ...filesIn(path.join(root, 'docs/guide'), /\.(sf|txt)$/),
-  path.join(root, 'testdata/pov/tutorial/tutorial-first-scene.pov'),
-  path.join(root, 'testdata/gltf/own-all-primitives.gltf'),
-  path.join(root, 'testdata/valid/all-primitives.sf'),
-];
+const scenes = [...sampleScenes, path.join(root, 'testdata/valid/all-primitives.sf')];
 
 const validatorPath = path.join(root, 'tests/gltf/node_modules/gltf-validator');
 const validator = fs.existsSync(validatorPath) ? createRequire(import.meta.url)(validatorPath) : null;

@@ -179,6 +179,17 @@ export function filesIn(dir, re = /./) {
     .map((n) => path.join(dir, n));
 }
 
+// The scenes the page renders and converts against sfrender and sfconvert:
+// the default scene (null), the examples, the guide's, a POV-Ray and a glTF
+// scene.
+export const sampleScenes = [
+  null,
+  ...filesIn(path.join(root, 'examples'), /\.(sf|txt)$/),
+  ...filesIn(path.join(root, 'docs/guide'), /\.(sf|txt)$/),
+  path.join(root, 'testdata/pov/tutorial/tutorial-first-scene.pov'),
+  path.join(root, 'testdata/gltf/own-all-primitives.gltf'),
+];
+
 export function relative(file) {
   return path.relative(root, file);
 }

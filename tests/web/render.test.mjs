@@ -11,17 +11,9 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import {
-  assertClean, filesIn, launchBrowser, openPage, relative, root, startServer,
+  assertClean, launchBrowser, openPage, relative, root, sampleScenes, startServer,
 } from './harness.mjs';
 import { compareImages, defaultSceneText, sfcheck, sfrender, sfrenderArgs } from './native.mjs';
-
-const scenes = [
-  null,  // the default scene
-  ...filesIn(path.join(root, 'examples'), /\.(sf|txt)$/),
-  ...filesIn(path.join(root, 'docs/guide'), /\.(sf|txt)$/),
-  path.join(root, 'testdata/pov/tutorial/tutorial-first-scene.pov'),
-  path.join(root, 'testdata/gltf/own-all-primitives.gltf'),
-];
 
 let browser;
 const served = {};
@@ -93,7 +85,7 @@ test('cross-origin isolated: every core', async () => {
   assert.equal(await page.textContent('#threads'), `${cores} threads`, 'the page says so');
 });
 
-for (const file of scenes) {
+for (const file of sampleScenes) {
   test(file ? relative(file) : 'the default scene', async () => {
     const got = await compareRender(served[true].page, file);
     if (!got.rejected) assert.ok(got.threads > 1, `rendered on ${got.threads} thread(s)`);
