@@ -56,8 +56,11 @@ if (scopes !== 'source.scenefile source.scenefile-instructions') problems.push(`
 if (!(manifest.contributes.commands || []).some((c) => c.command === 'scenefile.render'))
   problems.push('no command scenefile.render');
 // VS Code gives extensions the module "vscode"; everything else must come
-// from the package. The stand-in answers any property with a constructor.
-const stub = new Proxy({}, { get: (_, name) => (name === '__esModule' ? false : function () {}) });
+// from the package. This test only loads the extension (runs its top
+// level), so in place of VS Code's API an object that answers any property
+// with an empty constructor will do; the extension's behaviour, against a
+// fuller stand-in, is editors.vscode.extension's to test.
+const vscodeApi = new Proxy({}, { get: (_, name) => (name === '__esModule' ? false : function () {}) });
 const resolve = Module._resolveFilename;
 Module._resolveFilename = function (request, parent, ...rest) {
   if (request === 'vscode') return 'vscode';
@@ -66,7 +69,7 @@ Module._resolveFilename = function (request, parent, ...rest) {
     problems.push(`${request} resolves outside the package: ${found}`);
   return found;
 };
-require.cache.vscode = { id: 'vscode', filename: 'vscode', loaded: true, exports: stub };
+require.cache.vscode = { id: 'vscode', filename: 'vscode', loaded: true, exports: vscodeApi };
 const extension = require(path.join(folder, manifest.main));
 if (typeof extension.activate !== 'function' || typeof extension.deactivate !== 'function')
   problems.push('out/extension.js exports no activate and deactivate');
