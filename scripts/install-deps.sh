@@ -27,6 +27,9 @@ packages=(
   libembree-dev
   # glTF tests: Blender exports and imports glTF (its glTF add-on needs numpy).
   blender python3-numpy
+  # Other programs that read the exports, in their tests: assimp (OBJ and glTF
+  # without lights) and f3d (glTF, in a bench of its materials).
+  assimp-utils f3d
   # The Python module (python/): pybind11 and Python's headers to build it,
   # pytest to test it; Blender runs the same Debian Python 3.11 that imports
   # it, and its add-on (blender/io_scene_sf) is tested there.
