@@ -80,8 +80,10 @@ TEST_P(PovTutorial, SfrenderDrawsTheObjectsWherePovRayDoes) {
   int width = kWidth;
   int height = static_cast<int>(std::lround(kWidth / imported.view.aspectRatio));
   std::string log;
-  std::optional<povtest::Image8> image =
-      povtest::renderWithPovray(flatVersion(text, imported.objectEnds), width, height, name, log);
+  // A hand-written scene's own assumed_gamma decides POV-Ray's output: the
+  // flat colours are decoded from linear levels.
+  std::optional<povtest::Image8> image = povtest::renderWithPovray(
+      flatVersion(text, imported.objectEnds), width, height, name, log, "File_Gamma=1.0");
   ASSERT_TRUE(image.has_value()) << log;
   std::vector<std::int32_t> povIds = povtest::flatObjectIds(*image, scene.objects.size());
 

@@ -42,7 +42,8 @@ std::optional<Image8> readImage8(const std::string& path) {
 }
 
 std::optional<Image8> renderWithPovray(const std::string& povText, int width, int height,
-                                       const std::string& name, std::string& log) {
+                                       const std::string& name, std::string& log,
+                                       const std::string& options) {
   std::optional<std::string> program = povrayProgram();
   if (!program) {
     log = "no povray program";
@@ -54,7 +55,7 @@ std::optional<Image8> renderWithPovray(const std::string& povText, int width, in
   // POV-Ray's own security settings let it write into the current folder.
   std::string command = "cd '" + dir.string() + "' && '" + *program +
                         "' +Iscene.pov +Oimage.ppm +FP -A -D -V +W" + std::to_string(width) +
-                        " +H" + std::to_string(height) + " File_Gamma=1.0 > povray.log 2>&1";
+                        " +H" + std::to_string(height) + " " + options + " > povray.log 2>&1";
   int status = std::system(command.c_str());
   std::ifstream logFile(dir / "povray.log");
   std::ostringstream text;

@@ -22,11 +22,14 @@ struct Image8 {
 std::optional<std::string> povrayProgram();
 
 // Renders POV-Ray scene text headless at width x height, one sample per
-// pixel at the pixel centre (-A), with linear output (File_Gamma=1.0), as
-// `povray +I... +O... +FP -A -D -V`. `name` names the files in a folder of
+// pixel at the pixel centre (-A), at POV-Ray's default gamma settings, as
+// `povray +I... +O... +FP -A -D -V`: the scene text itself must keep the
+// output linear, as the writer's does. `name` names the files in a folder of
 // its own (kept on failure). Nothing, with the reason in `log`, on failure.
+// `options` are added to the command line.
 std::optional<Image8> renderWithPovray(const std::string& povText, int width, int height,
-                                       const std::string& name, std::string& log);
+                                       const std::string& name, std::string& log,
+                                       const std::string& options = {});
 
 // The object each pixel of a flat render shows (pov_writer.h's colours), -1
 // for none, -2 for a colour that is no object's.

@@ -26,7 +26,7 @@ constexpr std::string_view kHeaderFov = "--fov ";
 constexpr std::string_view kHeaderWidth = " --width ";
 constexpr std::string_view kHeaderHeight = " --height ";
 constexpr std::string_view kHeaderRenderIt =
-    ".\n// Render it with linear output, as sfrender writes:\n//   povray +W";
+    ".\n// Render it at POV-Ray's default settings:\n//   povray +W";
 
 // The flat colours: object n + 1 (0 is the black of nothing hit) multiplied
 // by an odd constant modulo a power of two, a bijection that scatters
@@ -353,8 +353,8 @@ std::optional<std::string> writePovScene(const Scene& scene, const ConversionOpt
   text += std::to_string(options.height);
   if (options.flat) text += ",\n// flat: each object unlit in a colour of its own";
   text += kHeaderRenderIt;
-  text += std::to_string(options.width) + " +H" + std::to_string(options.height) +
-          " -A File_Gamma=1.0 +Iscene.pov\n";
+  text +=
+      std::to_string(options.width) + " +H" + std::to_string(options.height) + " -A +Iscene.pov\n";
   text += "// The '" + std::string(kPovExactComment) +
           "' comments carry exact values for reading back.\n";
   text += "#version 3.7;\n";
@@ -381,7 +381,11 @@ std::optional<std::string> writePovScene(const Scene& scene, const ConversionOpt
         .hint = "objects with AMBIENT above 0 render darker in POV-Ray than in the renderer";
     if (options.noLoss) return std::nullopt;
   }
-  text += "global_settings { assumed_gamma 1.0 max_trace_level " +
+  // POV-Ray computes in its working gamma and encodes the output from it to
+  // File_Gamma, sRGB by default: a working gamma of sRGB makes that encoding
+  // the identity, so POV-Ray's levels are linear, as sfrender's, without a
+  // File_Gamma setting. Colour literals are not converted either way.
+  text += "global_settings { assumed_gamma srgb max_trace_level " +
           std::to_string(options.maxDepth + 1) + " adc_bailout 0 ambient_light rgb ";
   appendVector(text, ambientLight);
   text += " }\nbackground { rgb 0 }\n";

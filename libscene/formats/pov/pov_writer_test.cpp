@@ -52,7 +52,7 @@ TEST(PovWriter, WritesTheSceneHeaderAndTheMaterial) {
   EXPECT_TRUE(has(text, "#version 3.7;\n")) << text;
   // ambient_light is the sum of the lights' colours, the bounces plus one.
   EXPECT_TRUE(has(text,
-                  "global_settings { assumed_gamma 1.0 max_trace_level 6 adc_bailout 0 "
+                  "global_settings { assumed_gamma srgb max_trace_level 6 adc_bailout 0 "
                   "ambient_light rgb <1, 0.5, 0.25> }"))
       << text;
   EXPECT_TRUE(has(text, "background { rgb 0 }")) << text;
