@@ -41,7 +41,7 @@ def _scenefile_or_report(operator, context):
 
 # The exporter's options by the settings they set (scenefile.Remedy), so
 # that a hint names the option its user sees.
-_OPTION_LABELS = {"approximate": "Approximate"}
+_OPTION_LABELS = {"approximate": "Approximate", "skip-unsupported": "Skip Unsupported"}
 
 
 def _in_options(remedy):
@@ -64,7 +64,11 @@ class ImportSceneFile(bpy.types.Operator, ImportHelper):
     bl_options = {"REGISTER", "UNDO"}
 
     filename_ext = ".sf"
-    filter_glob: StringProperty(default="*.sf;*.txt", options={"HIDDEN"})
+    filter_glob: StringProperty(default="*.sf;*.txt;*.pov", options={"HIDDEN"})
+    skip_unsupported: BoolProperty(
+        name=_OPTION_LABELS["skip-unsupported"], default=False,
+        description="POV-Ray scenes: skip what the reader does not convert (CSG, other shapes, "
+                    "macros, ...) with a warning, and import the rest")
 
     def execute(self, context):
         scenefile = _scenefile_or_report(self, context)
@@ -72,7 +76,8 @@ class ImportSceneFile(bpy.types.Operator, ImportHelper):
             return {"CANCELLED"}
         from . import importer
         try:
-            scene = importer.import_scene(context, self.filepath, scenefile)
+            scene = importer.import_scene(context, self.filepath, scenefile,
+                                          skip_unsupported=self.skip_unsupported)
         except scenefile.SceneError as error:
             _report_diagnostics(self, error.diagnostics)
             return {"CANCELLED"}

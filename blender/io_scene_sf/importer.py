@@ -146,10 +146,10 @@ def fill_mesh(scenefile, obj, kind, exact, plane_size, sf):
     sf["mesh"] = mapping.mesh_hash(*mesh_arrays(obj.data))
 
 
-def import_scene(context, filepath, scenefile):
+def import_scene(context, filepath, scenefile, skip_unsupported=False):
     """Reads the file and builds it in the active collection; returns the
     scene read (its diagnostics are its warnings and notes)."""
-    scene = scenefile.read(filepath)
+    scene = scenefile.read(filepath, skip_unsupported=skip_unsupported)
     collection = context.collection
     made = [add_camera(context, collection, scene, filepath)]
     point = mapping.reference_point(scene)

@@ -284,8 +284,9 @@ def _output_file(scene: Scene, path: str, format: str, options: Dict[str, Any]) 
 
 def _converted(scene: Scene, path: str, buffer: str, format: str, options: Dict[str, Any]
                ) -> Tuple[bytes, bytes, List[Diagnostic]]:
-    """The bytes of the scene in ``format``, for ``path``, its buffer's and the losses."""
-    source = scene.source or ""
+    """The bytes of the scene in ``format``, for ``path``, its buffer's and the losses,
+    which name the file read, or for a scene built in Python the file written."""
+    source = scene.source or path
     problems = _diagnostics(_core.validate(scene._to_data(), source))
     _raise_on_errors(problems)
     core_options = dict(options)

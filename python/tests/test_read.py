@@ -147,6 +147,25 @@ def test_limits_are_the_tools(tmp_path):
     assert len(scenefile.read(path, max_objects=1000).objects) > 2
 
 
+def test_skip_unsupported_is_sfconverts_flag(tmp_path):
+    path = tmp_path / "tutorial.pov"
+    path.write_text("camera { location <0, 1, -5> look_at 0 }\n"
+                    "light_source { <0, 5, -5> color rgb 1 }\n"
+                    "torus { 1, 0.25 }\nsphere { 0, 1 pigment { rgb <1, 0, 0> } }\n")
+    with pytest.raises(scenefile.SceneError) as caught:
+        scenefile.read(path)
+    error = caught.value.errors[0]
+    assert error.code == "pov-unsupported"
+    assert error.hint == "skip_unsupported=True converts the rest"
+    assert str(error).startswith(f"{path}:3:1: error: 'torus' is not supported")
+    scene = scenefile.read(path, skip_unsupported=True)
+    assert [o.kind.value for o in scene.objects] == ["SPHERE"]
+    assert [d.code for d in scene.warnings] == ["pov-unsupported"]
+    assert scenefile.check(path, skip_unsupported=True)[0].severity == scenefile.Severity.WARNING
+    image = scenefile.render(scene, width=8, height=6, fov=None)
+    assert image.shape == (6, 8, 3) and image.max() > 0
+
+
 def test_keyword_arguments_are_checked_as_flags_are():
     path = os.path.join(TESTDATA, "valid", "all-primitives.sf")
     with pytest.raises(TypeError, match="'max_objcts'; did you mean 'max_objects'"):

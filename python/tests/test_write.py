@@ -54,6 +54,15 @@ def test_a_hint_names_the_keyword_that_cures_it(tmp_path):
     assert not (tmp_path / "shear.txt").exists()
 
 
+def test_losses_name_the_file_read_else_the_file_written(tmp_path):
+    read = scenefile.read(CUBE)
+    assert all(d.file == CUBE for d in scenefile.write(read, tmp_path / "a.sf"))
+    built = scenefile.Scene(read.camera, read.lights, read.objects)
+    target = str(tmp_path / "b.sf")
+    losses = scenefile.write(built, target)
+    assert losses and all(str(d).startswith(target + ":") for d in losses), losses
+
+
 def sfconvert_losses(sfconvert, source, target, flags):
     result = run(sfconvert, source, target, *flags, "--format", "json", "--quiet", check=False)
     return result.returncode, [(d["code"], d["line"], d["message"])
