@@ -50,6 +50,16 @@ shown=$(on_terminal "$bin/sfrender $examples/red-sphere.sf -o - --width 8 --heig
 if ! grep -q "status=2" <<<"$shown"; then
   echo "sfrender -o - to a terminal was not refused: $shown" >&2; failed=1
 fi
+# sfrender's progress: on a terminal one line, rewritten, that ends with the
+# time taken; none on a pipe.
+shown=$(on_terminal "$bin/sfrender $examples/red-sphere.sf -o progress.png --width 64 --height 48")
+if ! grep -qE $'\rsfrender: rendering 100%, [0-9]+:[0-9]{2} elapsed' <<<"$shown"; then
+  echo "sfrender on a terminal showed no progress with the time taken: $shown" >&2; failed=1
+fi
+shown=$("$bin/sfrender" "$examples/red-sphere.sf" -o progress.png --width 64 --height 48 2>&1)
+if grep -q "rendering" <<<"$shown"; then
+  echo "sfrender on a pipe showed its progress: $shown" >&2; failed=1
+fi
 magic=$("$bin/sfconvert" -q "$examples/red-sphere.sf" - --to glb | head -c 4)
 [ "$magic" = glTF ] || { echo "sfconvert --to glb to a pipe wrote '$magic'" >&2; failed=1; }
 exit $failed
