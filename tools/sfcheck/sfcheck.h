@@ -20,6 +20,7 @@ struct SfcheckOptions {
   std::string format = "text";
   bool fix = false;     // --fix: every fix-it applied, in place
   bool dryRun = false;  // --dry-run: with --fix, the fixes printed as a diff instead
+  bool info = false;    // --info: what each file holds, on standard output
   scene::ReadOptions read;
 };
 

@@ -50,6 +50,74 @@ TEST_F(ToolTest, SfcheckPrintsDiagnosticsInTheCompilersForm) {
                 "sfcheck: 1 file checked, 1 error, 0 warnings\n");
 }
 
+// A clean file's notes are what was decided on the way: -v shows them; the
+// warnings print either way.
+TEST_F(ToolTest, SfcheckShowsNotesOnlyWhenVerbose) {
+  std::string pov = write("a.pov",
+                          "camera { location <0, 1, -5> look_at 0 }\n"
+                          "sphere { 0, 1 pigment { color rgb 1 } }\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", pov}), 0);
+  EXPECT_NE(err_.str().find("warning: scene has no LIGHT [no-light]"), std::string::npos);
+  EXPECT_EQ(err_.str().find("note:"), std::string::npos) << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "-v", pov}), 0);
+  EXPECT_NE(err_.str().find("note: the camera shows a vertical field of view"), std::string::npos)
+      << err_.str();
+  // JSON keeps every diagnostic: a program filters for itself.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", pov}), 0);
+  EXPECT_NE(out_.str().find("\"camera-fov\""), std::string::npos) << out_.str();
+}
+
+// --info: what each file holds, as `assimp info` says it.
+TEST_F(ToolTest, SfcheckInfoSaysWhatEachFileHolds) {
+  std::string pov = write("a.pov",
+                          "camera { location <0, 1, -5> look_at <0, 1, 0> angle 60 }\n"
+                          "light_source { <4, 8, -6> color rgb 1 }\n"
+                          "plane { y, 0 pigment { color rgb 1 } }\n"
+                          "sphere { <0, 1, 0>, 1 pigment { color rgb <1, 0, 0> } }\n"
+                          "sphere { <3, 1, 0>, 1 pigment { color rgb <1, 0, 0> } }\n"
+                          "box { <-1, 0, 2>, <1, 2, 4> pigment { color rgb <0, 0, 1> } }\n");
+  std::string unlit = write("unlit.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n");
+  std::string bad = write("bad.sf", "CAMERA\n");
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--info", pov, unlit, bad}), 1);
+  std::string size = std::to_string(fs::file_size(pov));
+  EXPECT_EQ(out_.str(),
+            pov + ": a POV-Ray scene, " + size +
+                " bytes\n"
+                "  objects: 4 (1 plane, 2 spheres, 0 cylinders, 1 cube)\n"
+                "  lights: 1\n"
+                "  camera: at (0 1 5), looking along (0 0 -1), a vertical field of view of "
+                "46.9311 degrees at an aspect ratio of 1.33\n"
+                "  box: (-1 0 -4) to (4 2 1), and 1 plane, infinite\n"
+                "  materials: 3 distinct\n" +
+                unlit +
+                ": a scene file, 45 bytes\n"
+                "  objects: 0 (0 planes, 0 spheres, 0 cylinders, 0 cubes)\n"
+                "  lights: 0\n"
+                "  camera: at (0 0 5), looking along (0 0 -1)\n"
+                "  box: none\n"
+                "  materials: 0 distinct\n")
+      << err_.str();
+  // JSON: each file's info, exact, null where the file has errors.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--info", "--format", "json", pov, bad}), 1);
+  nlohmann::json report = nlohmann::json::parse(out_.str());
+  const nlohmann::json& info = report["files"][0]["info"];
+  EXPECT_EQ(info["bytes"], fs::file_size(pov));
+  EXPECT_EQ(
+      info["objects"],
+      (nlohmann::json{{"total", 4}, {"plane", 1}, {"sphere", 2}, {"cylinder", 0}, {"cube", 1}}));
+  EXPECT_EQ(info["lights"], 1);
+  EXPECT_EQ(info["materials"], 3);
+  EXPECT_EQ(info["bounds"]["high"], (nlohmann::json{4.0, 2.0, 1.0}));
+  EXPECT_EQ(info["unbounded"], 1);
+  // POV-Ray's world is left-handed: z is mirrored.
+  EXPECT_EQ(info["camera"]["position"], (nlohmann::json{0.0, 1.0, 5.0}));
+  EXPECT_TRUE(info["camera"].contains("verticalFov"));
+  EXPECT_TRUE(report["files"][1]["info"].is_null());
+  // Without --info, no info.
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "--format", "json", pov}), 0);
+  EXPECT_FALSE(nlohmann::json::parse(out_.str())["files"][0].contains("info"));
+}
+
 TEST_F(ToolTest, SfcheckWerrorAndJson) {
   std::string unlit = write("unlit.sf", "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 5\n0 0 0 1\n");
   EXPECT_EQ(run(runSfcheck, {"sfcheck", unlit}), 0);
