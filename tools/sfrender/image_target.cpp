@@ -38,7 +38,7 @@ ImageTarget defaultImageTarget(const std::string& input,
                                const std::optional<std::string>& outputFile) {
   if (input.empty()) return {*outputFile, false};
   if (outputFile) return {inputFolder(input) / *outputFile, true};
-  return {fs::path(input).stem().string() + ".ppm", false};
+  return {fs::path(input).stem().string() + ".png", false};
 }
 
 std::vector<std::optional<fs::path>> readAheadImageTargets(const std::vector<std::string>& inputs,

@@ -17,7 +17,7 @@ struct ImageTarget {
 };
 
 // The OUTPUT_FILE of `input`'s scene taken in the input's folder (standard
-// input's: the current folder), else the input's stem with .ppm in the
+// input's: the current folder), else the input's stem with .png in the
 // current folder. `input` empty is the default scene, whose OUTPUT_FILE is
 // taken as it is.
 ImageTarget defaultImageTarget(const std::string& input,

@@ -28,14 +28,14 @@ TEST(ImageTarget, EachSceneOwnImageReadAhead) {
   std::vector<std::optional<fs::path>> targets = readAheadImageTargets(
       {scene, instructions, escapes, noImage, invalid, missing}, scene::ReadOptions{});
   ASSERT_EQ(targets.size(), 6u);
-  EXPECT_EQ(targets[0], fs::path("a.ppm"));
+  EXPECT_EQ(targets[0], fs::path("a.png"));
   EXPECT_EQ(targets[1], root / "in/sub/pic.png");
   // Those whose render writes nothing: refused there, with the reason.
   for (std::size_t i = 2; i < targets.size(); ++i) EXPECT_FALSE(targets[i]) << i;
 }
 
 TEST(ImageTarget, TheDefaultOfOneScene) {
-  EXPECT_EQ(defaultImageTarget("x/s.sf", std::nullopt).path, fs::path("s.ppm"));
+  EXPECT_EQ(defaultImageTarget("x/s.sf", std::nullopt).path, fs::path("s.png"));
   EXPECT_FALSE(defaultImageTarget("x/s.sf", std::nullopt).fromOutputFile);
   EXPECT_EQ(defaultImageTarget("x/i.txt", "p.png").path, fs::path("x/p.png"));
   EXPECT_TRUE(defaultImageTarget("x/i.txt", "p.png").fromOutputFile);

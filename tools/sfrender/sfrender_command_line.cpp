@@ -111,7 +111,7 @@ std::unique_ptr<CLI::App> makeSfrenderCommandLine(SfrenderOptions& o) {
                   "to merge)");
   app->add_option("-o,--output", o.output,
                   "the image to write; its extension picks the format (listed at the end); - "
-                  "writes PPM to standard output (default: the scene's name with .ppm, or an "
+                  "writes PPM to standard output (default: the scene's name with .png, or an "
                   "instruction file's OUTPUT_FILE); for several scenes a pattern: {stem} (the "
                   "scene's name without extension), {name}, {dir}")
       ->option_text("FILE");
@@ -133,6 +133,10 @@ std::unique_ptr<CLI::App> makeSfrenderCommandLine(SfrenderOptions& o) {
   app->add_flag("--stats", o.stats,
                 "print the time, the rays and the rays per second (also when quiet)");
   app->add_flag("--no-clobber", o.noClobber, "never write over an existing file");
+  // As sfconvert's: the same reader option, told in the same words.
+  app->add_flag("--skip-unsupported", o.read.pov.skipUnsupported,
+                "POV-Ray input: skip what is outside the subset, with a warning, and render the "
+                "rest");
   addLimitOptions(*app, o);
   return app;
 }

@@ -38,7 +38,29 @@ TEST_F(ToolTest, SfrenderNamesASceneFilesImageAfterIt) {
   int status = run(sfrender, {"sfrender", "ball.sf", "--width", "16", "--height", "12"});
   fs::current_path(before);
   EXPECT_EQ(status, 0) << err_.str();
-  EXPECT_TRUE(fs::exists(dir_ / "ball.ppm"));
+  // A PNG, as POV-Ray writes, in the current folder.
+  EXPECT_EQ(read("ball.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
+  EXPECT_NE(err_.str().find("sfrender: wrote ball.png (16x12)"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "ball.ppm"));
+}
+
+// What POV-Ray has and the subset does not fails the render, unless
+// --skip-unsupported leaves it out (with a warning) and renders the rest.
+TEST_F(ToolTest, SfrenderSkipsUnsupportedPovRayOnlyWhenAsked) {
+  std::string in = write("in.pov",
+                         "camera { location <0, 1, -5> look_at 0 }\n"
+                         "light_source { <4, 8, -6> color rgb 1 }\n"
+                         "torus { 1, 0.2 pigment { color rgb 1 } }\n"
+                         "sphere { 0, 1 pigment { color rgb <1, 0, 0> } }\n");
+  std::vector<std::string> args = {"sfrender", in, "-o", path("a.png"), "--width", "16"};
+  EXPECT_EQ(run(sfrender, args), toInt(ExitCode::InvalidInput));
+  EXPECT_NE(err_.str().find("error: 'torus' is not supported"), std::string::npos) << err_.str();
+  EXPECT_NE(err_.str().find("--skip-unsupported"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(path("a.png")));
+  args.push_back("--skip-unsupported");
+  EXPECT_EQ(run(sfrender, args), 0) << err_.str();
+  EXPECT_NE(err_.str().find("warning: 'torus' is not supported"), std::string::npos) << err_.str();
+  EXPECT_TRUE(fs::exists(path("a.png")));
 }
 
 TEST_F(ToolTest, SfrenderHonoursAndConfinesOutputFile) {

@@ -17,19 +17,19 @@ run $SFRENDER p.sf q.sf -o 'out/{stem}.png'
 rm out/q.png && ln -s p.png out/q.png
 run $SFRENDER p.sf q.sf -o 'out/{stem}.png'
 cat out/p.png
-# No -o: two s.sf in two folders would both write s.ppm here.
+# No -o: two s.sf in two folders would both write s.png here.
 cp S.sf y/s.sf && cp S.sf z/s.sf
 run $SFRENDER y/s.sf z/s.sf
-absent s.ppm
+absent s.png
 # Instruction files whose OUTPUT_FILEs land on one file.
 $SFCONVERT S.sf y/i.txt -q
 sed -i 's/^OUTPUT_FILE .*/OUTPUT_FILE pic.png/' y/i.txt
 cp y/i.txt y/j.txt
 run $SFRENDER y/i.txt y/j.txt
 absent y/pic.png
-sed 's/^OUTPUT_FILE .*/OUTPUT_FILE s.ppm/' y/i.txt >k.txt
+sed 's/^OUTPUT_FILE .*/OUTPUT_FILE s.png/' y/i.txt >k.txt
 run $SFRENDER k.txt z/s.sf -q
-absent s.ppm
+absent s.png
 # sfconvert: one output for two inputs, and glTF buffers shared.
 run $SFCONVERT x/a.sf x/a.txt -o 'out/{stem}.sf'
 cp S.sf m.x.sf && cp S.sf m.y.sf
