@@ -8,18 +8,22 @@ set(timeout 20)
 if(LAUNCHER)
   set(timeout 600)
 endif()
+# -v: the .expect files hold the notes too, which sfcheck prints only when
+# verbose.
 execute_process(
-  COMMAND ${LAUNCHER} ${SFCHECK} ${NAME}
+  COMMAND ${LAUNCHER} ${SFCHECK} -v ${NAME}
   WORKING_DIRECTORY ${DIR}
   RESULT_VARIABLE status
   OUTPUT_VARIABLE out
   ERROR_VARIABLE err
   TIMEOUT ${timeout})
-# The last line is the summary; the rest are the diagnostics, in the text
-# form with the source quoted under each (lines "   3 | ..." and
-# "     | ^~~"), which the .expect files leave out: they hold the short form
-# (sfcheck --format short), and the quotes have tests of their own.
-string(REGEX REPLACE "sfcheck: [^\n]*\n$" "" diagnostics "${err}")
+# The lines of sfcheck's own (what -v tells of the file, the summary) are
+# left out; the rest are the diagnostics, in the text form with the source
+# quoted under each (lines "   3 | ..." and "     | ^~~"), which the .expect
+# files leave out: they hold the short form (sfcheck --format short), and
+# the quotes have tests of their own.
+string(REGEX REPLACE "\nsfcheck: [^\n]*" "" diagnostics "\n${err}")
+string(REGEX REPLACE "^\n" "" diagnostics "${diagnostics}")
 string(REGEX REPLACE "\n *[0-9]* [|] [^\n]*" "" diagnostics "${diagnostics}")
 set(expected "")
 if(EXISTS ${DIR}/${NAME}.expect)

@@ -98,7 +98,8 @@ for name, fmt in (("blender.gltf", "GLTF_SEPARATE"), ("blender.glb", "GLB")):
     bpy.ops.export_scene.gltf(filepath=path, export_format=fmt, export_cameras=True,
                               export_lights=True)
     sf = os.path.join(work, name + ".sf")
-    run = subprocess.run([sfconvert, path, sf], capture_output=True, text=True)
+    # -v: the camera's and the light's notes, read below.
+    run = subprocess.run([sfconvert, "-v", path, sf], capture_output=True, text=True)
     print(run.stderr)
     if run.returncode != 0:
         sys.exit(f"sfconvert {name} failed with {run.returncode}")

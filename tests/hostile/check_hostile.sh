@@ -46,22 +46,23 @@ start=$(date +%s%N)
 if [ -x /usr/bin/time ]; then
   (cd "$input_dir" &&
     timeout --signal=KILL "$((max_seconds * 3))" \
-      /usr/bin/time -f %M -o "$work/peak_kib" "$sfcheck" "$name" >"$work/stdout" 2>"$work/stderr")
+      /usr/bin/time -f %M -o "$work/peak_kib" "$sfcheck" -v "$name" >"$work/stdout" 2>"$work/stderr")
   status=$?
 else
   (cd "$input_dir" && ulimit -v "$((max_mib * 1024))" &&
-    timeout --signal=KILL "$((max_seconds * 3))" "$sfcheck" "$name" >"$work/stdout" 2>"$work/stderr")
+    timeout --signal=KILL "$((max_seconds * 3))" "$sfcheck" -v "$name" >"$work/stdout" 2>"$work/stderr")
   status=$?
 fi
 end=$(date +%s%N)
 elapsed_ms=$(((end - start) / 1000000))
 
 failed=0
-# The last line of stderr is sfcheck's summary; the rest are diagnostics,
-# in the text form with the source quoted under each, which the .expect
-# files leave out (they hold the short form): sfcheck runs as users run it,
-# so that quoting is held to the same time and memory bounds.
-sed -e '$d' -e '/^ *[0-9]* | /d' "$work/stderr" >"$work/diagnostics"
+# sfcheck's own lines (what -v tells of the file, the summary) left out,
+# the rest are diagnostics, notes too (-v), in the text form with the source
+# quoted under each, which the .expect files leave out (they hold the short
+# form): sfcheck runs as users run it, so that quoting is held to the same
+# time and memory bounds.
+sed -e '/^sfcheck: /d' -e '/^ *[0-9]* | /d' "$work/stderr" >"$work/diagnostics"
 if ! cmp -s "$work/diagnostics" "$expect"; then
   echo "check_hostile: diagnostics differ for $name (expected < > got):" >&2
   diff "$expect" "$work/diagnostics" | head -40 >&2

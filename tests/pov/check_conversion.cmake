@@ -10,14 +10,17 @@ if(LAUNCHER)
   set(timeout 600)
 endif()
 file(MAKE_DIRECTORY ${WORK})
+# -v: the expected diagnostics hold the notes too.
 execute_process(
-  COMMAND ${LAUNCHER} ${SFCONVERT} --format short ${NAME} ${WORK}/${NAME}.pov
+  COMMAND ${LAUNCHER} ${SFCONVERT} -v --format short ${NAME} ${WORK}/${NAME}.pov
   WORKING_DIRECTORY ${DIR}
   RESULT_VARIABLE status
   ERROR_VARIABLE err
   TIMEOUT ${timeout})
-# What sfconvert says it wrote ends its output; the rest are diagnostics.
-string(REGEX REPLACE "sfconvert: wrote [^\n]*\n$" "" err "${err}")
+# sfconvert's own lines (what -v tells, what it wrote) left out, the rest
+# are diagnostics.
+string(REGEX REPLACE "\nsfconvert: [^\n]*" "" err "\n${err}")
+string(REGEX REPLACE "^\n" "" err "${err}")
 set(expected "")
 if(EXISTS ${DIR}/${NAME}.expect)
   file(READ ${DIR}/${NAME}.expect expected)

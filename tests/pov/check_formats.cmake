@@ -25,11 +25,14 @@ file(READ ${WORK}/${NAME}.direct.${kind} direct)
 foreach(format IN ITEMS sf txt gltf glb pov)
   set(out ${WORK}/${NAME}.${format})
   file(REMOVE ${out})
-  execute_process(COMMAND ${LAUNCHER} ${SFCONVERT} --format short ${NAME} ${out}
+  # -v: the expected diagnostics hold the notes too.
+  execute_process(COMMAND ${LAUNCHER} ${SFCONVERT} -v --format short ${NAME} ${out}
                   WORKING_DIRECTORY ${DIR} RESULT_VARIABLE status ERROR_VARIABLE err
                   TIMEOUT ${timeout})
-  # What sfconvert says it wrote ends its output; the rest are diagnostics.
-  string(REGEX REPLACE "sfconvert: wrote [^\n]*\n$" "" err "${err}")
+  # sfconvert's own lines (what -v tells, what it wrote) left out, the rest
+  # are diagnostics.
+  string(REGEX REPLACE "\nsfconvert: [^\n]*" "" err "\n${err}")
+  string(REGEX REPLACE "^\n" "" err "${err}")
   set(expected "")
   if(EXISTS ${DIR}/${NAME}.${format}.expect)
     file(READ ${DIR}/${NAME}.${format}.expect expected)

@@ -4,7 +4,7 @@
 # command line gives, changes it. Called as:
 #   cmake -DSFCHECK=... -DSFRENDER=... -DSCENE=... -DWORK=... -P this
 file(MAKE_DIRECTORY ${WORK})
-execute_process(COMMAND ${SFCHECK} ${SCENE} RESULT_VARIABLE status ERROR_VARIABLE report)
+execute_process(COMMAND ${SFCHECK} -v ${SCENE} RESULT_VARIABLE status ERROR_VARIABLE report)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "sfcheck ${SCENE} failed:\n${report}")
 endif()

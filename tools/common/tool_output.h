@@ -56,7 +56,8 @@ class ToolOutput {
   void step(std::string_view what);
 
   // How diagnostics print for these flags: coloured as --color says, the
-  // source quoted unless `format` is short, only errors when quiet.
+  // source quoted unless `format` is short, only errors when quiet, notes
+  // only when verbose.
   DiagnosticStyle diagnosticStyle(DiagnosticFormat format, bool warningsAsErrors = false) const;
 
  private:

@@ -29,5 +29,29 @@ TEST(ToolOutput, ReportsAFailureAndGivesItsExitStatus) {
   EXPECT_EQ(err.str(), "sfrender: error: out of memory\n");
 }
 
+// A clean run is quiet: notes print with --verbose only, warnings unless
+// --quiet, errors always.
+TEST(ToolOutput, NotesPrintOnlyWhenVerbose) {
+  scene::DiagnosticList list("a.sf");
+  list.note(scene::DiagnosticCode::CameraFov, {}, "decided");
+  list.warning(scene::DiagnosticCode::NoLight, {}, "lost");
+  list.error(scene::DiagnosticCode::UnknownFormat, {}, "wrong");
+  auto shown = [&](CommonFlags flags) {
+    std::istringstream in;
+    std::ostringstream out, err;
+    ToolStreams streams(in, out, err);
+    flags.color = "never";
+    ToolOutput output("sfcheck", streams, flags);
+    DiagnosticPrinter(err, output.diagnosticStyle(DiagnosticFormat::Short)).print(list);
+    return err.str();
+  };
+  const std::string note = "a.sf: note: decided [camera-fov]\n";
+  const std::string warning = "a.sf: warning: lost [no-light]\n";
+  const std::string error = "a.sf: error: wrong [unknown-format]\n";
+  EXPECT_EQ(shown(CommonFlags{}), warning + error);
+  EXPECT_EQ(shown(CommonFlags{.quiet = false, .verbose = true}), note + warning + error);
+  EXPECT_EQ(shown(CommonFlags{.quiet = true}), error);
+}
+
 }  // namespace
 }  // namespace tools

@@ -105,7 +105,9 @@ TEST_F(ToolTest, SfconvertWritesAndReadsGltfAndGlb) {
   EXPECT_EQ(read("b.glb").substr(0, 4), "glTF");
   ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("normal.sf")}), 0);
   for (const char* name : {"a.gltf", "b.glb"}) {
-    ASSERT_EQ(run(runSfconvert, {"sfconvert", path(name), path(std::string(name) + ".sf")}), 0)
+    // -v: the camera's note, checked below.
+    ASSERT_EQ(run(runSfconvert, {"sfconvert", "-v", path(name), path(std::string(name) + ".sf")}),
+              0)
         << err_.str();
     EXPECT_EQ(read(std::string(name) + ".sf"), read("normal.sf")) << name;
   }
@@ -156,7 +158,7 @@ TEST_F(ToolTest, SfconvertWritesAndReadsPovRay) {
   ASSERT_EQ(run(runSfconvert, {"sfconvert", path("a.pov"), path("b.sf")}), 0) << err_.str();
   ASSERT_EQ(run(runSfconvert, {"sfconvert", in, path("n.sf")}), 0) << err_.str();
   EXPECT_EQ(read("b.sf"), read("n.sf"));
-  ASSERT_EQ(run(runSfconvert, {"sfconvert", path("a.pov"), path("c.sf")}), 0);
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", "-v", path("a.pov"), path("c.sf")}), 0);
   EXPECT_NE(err_.str().find("hint: render with sfrender --fov 45 --width 320 --height 200"),
             std::string::npos)
       << err_.str();
@@ -180,7 +182,7 @@ TEST_F(ToolTest, SfconvertSkipsUnsupportedPovRayOnlyWhenAsked) {
   EXPECT_NE(read("a.sf").find("SPHERE\n1 0 0\n"), std::string::npos);
   // A file named .pov with nothing in it is an empty POV-Ray scene.
   std::string empty = write("empty.pov", "// nothing yet\n");
-  EXPECT_EQ(run(runSfcheck, {"sfcheck", empty}), 0) << err_.str();
+  EXPECT_EQ(run(runSfcheck, {"sfcheck", "-v", empty}), 0) << err_.str();
   EXPECT_NE(err_.str().find("POV-Ray's default camera"), std::string::npos) << err_.str();
 }
 

@@ -10,13 +10,13 @@ for format in pov gltf glb; do
   for value in 0.001 179.999; do
     run $SFCONVERT -q S.sf "fov-$value.$format" --fov "$value"
     run $SFCHECK -q "fov-$value.$format"
-    $SFCHECK "fov-$value.$format" 2>&1 | grep -o 'render with sfrender.*'
+    $SFCHECK -v "fov-$value.$format" 2>&1 | grep -o 'render with sfrender.*'
   done
   run $SFCONVERT S.sf "wide.$format" --width 32769 --height 1
   run $SFCONVERT S.sf "tall.$format" --height 32769
   run $SFCONVERT -q S.sf "wide.$format" --width 32768 --height 1
   run $SFCHECK -q "wide.$format"
-  $SFCHECK "wide.$format" 2>&1 | grep -o 'render with sfrender.*'
+  $SFCHECK -v "wide.$format" 2>&1 | grep -o 'render with sfrender.*'
   run $SFCONVERT -q S.sf "tall.$format" --width 1 --height 32768
   run $SFCHECK -q "tall.$format"
   run $SFCONVERT -q S.sf "tall-default.$format" --height 32768
