@@ -70,6 +70,10 @@ def setup_render(scene, png):
     scene.cycles.samples = samples
     scene.cycles.use_denoising = False
     scene.cycles.seed = 0
+    # sfrender traces as Whitted did: no light is focused by mirrors or
+    # glass (caustics). Diffuse bounces stay: they stand in for AMBIENT.
+    scene.cycles.caustics_reflective = False
+    scene.cycles.caustics_refractive = False
     scene.render.resolution_x = width
     scene.render.resolution_y = height
     scene.render.resolution_percentage = 100

@@ -19,6 +19,9 @@ scene::ConversionOptions conversionOptionsFor(const SfconvertOptions& o, bool to
   options.gltf.height = o.height;
   options.gltf.segments = o.tessellation;
   options.gltf.externalBuffer = bufferFile;
+  options.gltf.lights = !o.noLights;
+  options.gltf.lightFalloff = o.lightFalloff == "none" ? scene::GltfLightFalloff::None
+                                                       : scene::GltfLightFalloff::InverseSquare;
   options.gltf.generator = std::string("sfconvert ") + SCENEFILE_VERSION;
   options.pov.verticalFovDegrees = o.fov;
   if (o.width > 0 && o.height > 0) {

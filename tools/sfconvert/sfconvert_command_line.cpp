@@ -42,6 +42,14 @@ void addFormatOptions(CLI::App& app, SfconvertOptions& o) {
   app.add_option("--tessellation", o.tessellation,
                  "glTF: segments around a sphere or cylinder (the sphere gets half as many rings)")
       ->transform(wholeNumberIn(scene::kMinSegments, scene::kMaxSegments));
+  app.add_flag("--no-lights", o.noLights,
+               "glTF: leave the lights out (each reported), for readers that refuse "
+               "KHR_lights_punctual, as assimp 5.2 does");
+  app.add_option("--light-falloff", o.lightFalloff,
+                 "glTF: how the viewer's point lights fall off, which their intensities are made "
+                 "for: inverse-square (glTF's rule: Blender, three.js; default) or none (f3d 1.3)")
+      ->option_text("RULE")
+      ->check(oneOf({"inverse-square", "none"}));
   app.add_flag("--flat", o.flat,
                "POV-Ray output: every object unlit in a colour of its own (an object-identity "
                "picture)");

@@ -30,6 +30,8 @@ struct SfconvertOptions {
   int height = 0;
   bool externalBuffers = false;
   int tessellation = scene::kDefaultSegments;
+  bool noLights = false;
+  std::string lightFalloff = "inverse-square";
   bool flat = false;
   bool skipUnsupported = false;
   scene::ReadOptions read;

@@ -28,6 +28,18 @@ struct GltfReadOptions {
   friend bool operator==(const GltfReadOptions&, const GltfReadOptions&) = default;
 };
 
+/// How a viewer makes a glTF point light fall off, which the writer's light
+/// intensities are made for.
+enum class GltfLightFalloff {
+  /// With the square of the distance, in candela (glTF's definition;
+  /// Blender, three.js): each light is matched at a reference distance.
+  InverseSquare,
+  /// Not at all, the intensity a plain factor (f3d 1.3, VTK): each light's
+  /// intensity is the largest channel of its COLOUR, as a scene file's
+  /// LIGHT, which does not fall off either.
+  None,
+};
+
 /// Options of the glTF writer. Whether the output is JSON text or a .glb is
 /// the format written (Format::Gltf or Format::Glb), not an option.
 struct GltfWriteOptions {
@@ -43,6 +55,12 @@ struct GltfWriteOptions {
   int height = 0;
   /// How finely curved surfaces are tessellated (scenefile/mesh.h).
   int segments = 32;
+  /// Whether the lights are written (KHR_lights_punctual); false leaves
+  /// them out, each reported (gltf-light-left-out), for readers that refuse
+  /// the extension (assimp 5.2).
+  bool lights = true;
+  /// How the lights are scaled (docs/GLTF.md, "Lights").
+  GltfLightFalloff lightFalloff = GltfLightFalloff::InverseSquare;
   /// The asset's generator string.
   std::string generator = "scenefile";
 

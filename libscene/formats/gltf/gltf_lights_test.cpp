@@ -37,9 +37,9 @@ const std::string kScene = testing::kCameraRecord +
                            "LIGHT\n2 2 2\n1 0 0 0\n0 1 0 0\n0 0 1 4\n0 0 0 1\n"
                            "CUBE\n0.5 0.5 0.5\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
 
-Json written(const Scene& scene) {
+Json written(const Scene& scene, const GltfWriteOptions& options = {}) {
   DiagnosticList out;
-  std::optional<GltfFiles> files = writeGltf(scene, {}, false, out);
+  std::optional<GltfFiles> files = writeGltf(scene, testing::conversionWith(options), false, out);
   EXPECT_TRUE(files.has_value());
   return files ? Json::parse(files->main) : Json();
 }
@@ -193,6 +193,52 @@ TEST(GltfLights, ALightTooStrongForItsReferenceDistanceIsAnError) {
   EXPECT_NE(errors[0].message.find("reference distance 1e-200"), std::string::npos)
       << errors[0].message;
   EXPECT_FALSE(read.ok());
+}
+
+TEST(GltfLights, NoLightsLeavesEveryLightOutWithAWarningNamingIt) {
+  GltfWriteOptions options;
+  options.lights = false;
+  DiagnosticList out;
+  std::optional<GltfFiles> files =
+      writeGltf(original(), testing::conversionWith(options), false, out);
+  ASSERT_TRUE(files.has_value());
+  Json doc = Json::parse(files->main);
+  EXPECT_FALSE(doc.contains("extensions"));
+  EXPECT_EQ(doc["extensionsUsed"].dump().find("KHR_lights_punctual"), std::string::npos);
+  for (const Json& node : doc["nodes"]) EXPECT_NE(node["name"], "LIGHT 1");
+  std::vector<Diagnostic> left = withCode(out, DiagnosticCode::GltfLightLeftOut);
+  ASSERT_EQ(left.size(), 2u);
+  EXPECT_EQ(left[0].severity, Severity::Warning);
+  EXPECT_EQ(left[0].message,
+            "LIGHT 1 (COLOUR 0.9 0.6 0.3) is left out of the glTF, as --no-lights asks");
+  EXPECT_TRUE(withCode(out, DiagnosticCode::LightFalloff).empty());
+  // The file is all there is: read back, it has no lights.
+  ReadResult back = parseScene(files->main, "dark.gltf");
+  ASSERT_TRUE(back.ok());
+  EXPECT_TRUE(back.scene.lights.empty());
+  EXPECT_EQ(back.scene.objects.size(), 1u);
+  // Under --no-loss a light left out is an error, and nothing is written.
+  ConversionOptions strict = testing::conversionWith(options);
+  strict.noLoss = true;
+  DiagnosticList refused;
+  EXPECT_FALSE(writeGltf(original(), strict, false, refused).has_value());
+  EXPECT_EQ(withCode(refused, DiagnosticCode::GltfLightLeftOut)[0].severity, Severity::Error);
+}
+
+TEST(GltfLights, WithoutFalloffTheIntensityIsTheColoursLargestChannel) {
+  GltfWriteOptions options;
+  options.lightFalloff = GltfLightFalloff::None;
+  Scene scene = original();
+  Json doc = written(scene, options);
+  EXPECT_EQ(lightOf(doc, 0)["intensity"].get<double>(), 0.9);
+  EXPECT_NEAR(lightOf(doc, 0)["color"][1].get<double>(), 0.6 / 0.9, 1e-15);
+  EXPECT_EQ(lightOf(doc, 1)["intensity"].get<double>(), 2.0);
+  EXPECT_FALSE(doc["nodes"][1]["extras"]["sf"].contains("referenceDistance"));
+  ReadResult back = parseScene(doc.dump(), "f3d.gltf");
+  ASSERT_TRUE(back.ok());
+  EXPECT_EQ(back.scene.lights[0].colour, scene.lights[0].colour);
+  EXPECT_EQ(back.scene.lights[1].colour, scene.lights[1].colour);
+  EXPECT_TRUE(withCode(back.diagnostics, DiagnosticCode::GltfExtrasStale).empty());
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "scenefile/matrix.h"
+#include "scenefile/srgb.h"
 #include "scenefile/transform.h"
 
 namespace scene::gltf {
@@ -20,16 +21,46 @@ double shininessFromRoughness(double roughness) {
   return std::clamp(n, kMinShininess, kMaxShininess);
 }
 
+namespace {
+
+// The weight of the mirrored or refracted colour in the base colour. The
+// renderer adds REFLECTIVITY times a display value, a PBR viewer multiplies
+// linear ones: a mirror's is REFLECTIVITY decoded. TRANSPARENCY is taken as
+// it is, which Cycles showed closer on the whole picture (docs/GLTF.md,
+// "Materials in PBR viewers, measured").
+double sharpWeight(const Material& material) {
+  if (material.transparency > 0.0) return std::clamp(material.transparency, 0.0, 1.0);
+  return srgbToLinear(std::clamp(material.reflectivity, 0.0, 1.0));
+}
+
+}  // namespace
+
 PbrMaterial pbrFromMaterial(const Material& material, ObjectKind kind) {
   PbrMaterial pbr;
-  for (int i = 0; i < 3; ++i) pbr.baseColor[i] = std::clamp(material.colour[i], 0.0, 1.0);
+  // The renderer adds the diffuse colour and the sharp share; glTF blends
+  // one base colour between a diffuse and a sharp lobe by a factor f. So
+  // base = diffuse + g and f = g / (max(diffuse) + g): f times the base is
+  // g, (1 - f) times the base the diffuse colour (of its largest channel).
+  double lit = std::clamp(material.ambient + material.diffuse, 0.0, 1.0);
+  double g = sharpWeight(material);
+  double largest = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    double diffuse = std::clamp(material.colour[i], 0.0, 1.0) * lit;
+    largest = std::max(largest, diffuse);
+    pbr.baseColor[i] = std::min(diffuse + g, 1.0);
+  }
   pbr.baseColor[3] = 1.0;
-  pbr.metallic = 0.0;
-  pbr.roughness = std::clamp(roughnessFromShininess(material.shininess), 0.0, 1.0);
+  double sharp = largest + g > 0.0 ? g / (largest + g) : 0.0;
+  // Glass reflects by its IOR's Fresnel term, as the renderer weighs
+  // REFLECTIVITY by Schlick's: it is not metallic.
+  pbr.metallic = material.transparency > 0.0 ? 0.0 : sharp;
+  if (material.transparency > 0.0) pbr.transmission = sharp;
+  // The renderer's reflections and refractions are sharp whatever SHININESS
+  // (which shapes the highlight alone).
+  pbr.roughness = std::clamp((1.0 - sharp) * roughnessFromShininess(material.shininess), 0.0, 1.0);
   // glTF's default IOR (1.5) gives every dielectric its usual highlight; an
   // IOR is written where the scene says something else or refracts.
   if (material.ri != 1.0 || material.transparency > 0.0) pbr.ior = std::max(material.ri, 1.0);
-  if (material.transparency > 0.0) pbr.transmission = material.transparency;
   if (material.specular != Material{}.specular) pbr.specular = material.specular;
   pbr.doubleSided = kind == ObjectKind::Plane;
   return pbr;
@@ -37,12 +68,22 @@ PbrMaterial pbrFromMaterial(const Material& material, ObjectKind kind) {
 
 Material materialFromPbr(const PbrMaterial& pbr) {
   Material m;
-  for (int i = 0; i < 3; ++i) m.colour[i] = std::max(pbr.baseColor[i], 0.0);
-  m.shininess = shininessFromRoughness(std::clamp(pbr.roughness, 0.0, 1.0));
-  m.reflectivity = std::clamp(pbr.metallic, 0.0, 1.0);
+  double metallic = std::clamp(pbr.metallic, 0.0, 1.0);
+  double transmission = pbr.transmission ? std::clamp(*pbr.transmission, 0.0, 1.0) : 0.0;
+  double sharp = std::max(metallic, transmission);
+  double largest = std::max({pbr.baseColor.r, pbr.baseColor.g, pbr.baseColor.b, 0.0});
+  double g = sharp * largest;
+  for (int i = 0; i < 3; ++i) m.colour[i] = std::max(pbr.baseColor[i] - g, 0.0);
+  if (transmission > 0.0) {
+    m.transparency = std::min(g, 1.0);
+  } else {
+    m.reflectivity = linearToSrgb(std::min(g, 1.0));
+  }
   if (pbr.ior && *pbr.ior >= 1.0) m.ri = *pbr.ior;
-  if (pbr.transmission) m.transparency = std::clamp(*pbr.transmission, 0.0, 1.0);
   if (pbr.specular) m.specular = std::clamp(*pbr.specular, 0.0, 1.0);
+  double roughness = std::clamp(pbr.roughness, 0.0, 1.0);
+  if (sharp < 1.0) roughness = std::min(roughness / (1.0 - sharp), 1.0);
+  m.shininess = shininessFromRoughness(roughness);
   return m;
 }
 

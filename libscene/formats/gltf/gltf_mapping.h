@@ -42,12 +42,21 @@ inline constexpr double kMaxShininess = 1e6;
 double roughnessFromShininess(double shininess);
 double shininessFromRoughness(double roughness);
 
-// The glTF material of a scene material; planes are double-sided. Values
+// The glTF material of a scene material (docs/GLTF.md, "Materials"). The
+// renderer adds COLOUR * (AMBIENT + DIFFUSE) and REFLECTIVITY (or
+// TRANSPARENCY) times the mirrored (or refracted) colour; glTF blends one
+// base colour between a diffuse lobe and a sharp one (metallic, or
+// KHR_materials_transmission for a material with TRANSPARENCY), so the base
+// colour is the diffuse colour plus the sharp share's weight g (REFLECTIVITY
+// decoded from sRGB, TRANSPARENCY as it is), and
+// the blend factor is g over the base colour's largest channel. Roughness is
+// SHININESS's, scaled down by the sharp lobe's factor, since the renderer's
+// reflections and refractions are sharp. Planes are double-sided. Values
 // glTF cannot hold are clamped (a colour above 1, RI below 1).
 PbrMaterial pbrFromMaterial(const Material& material, ObjectKind kind);
 // The inverse for what glTF holds: COLOUR, SHININESS, SPECULAR,
-// TRANSPARENCY, RI; metallic becomes REFLECTIVITY. AMBIENT and DIFFUSE keep
-// their defaults.
+// REFLECTIVITY (metallic), TRANSPARENCY, RI. AMBIENT and DIFFUSE keep their
+// defaults, which add up to 1; a metal's tint is lost.
 Material materialFromPbr(const PbrMaterial& pbr);
 
 // The matrix of the node that carries a camera: the camera matrix itself

@@ -10,6 +10,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -364,15 +365,23 @@ void reportBeyondFloat(const glm::dmat4& m, const std::string& label, SourceSpan
 
 // Each LIGHT's glTF light: matched to the scene's light at its reference
 // distance (gltf_light_units.h, gltf_reference_point.h).
+// Without falloff there is no reference distance: the intensity is the
+// colour's largest channel, which the reader's check of extras without a
+// `referenceDistance` expects.
 struct LightPlan {
-  double distance = 1.0;
+  std::optional<double> distance;
   gltf::PointLight point;
 };
 
-std::vector<LightPlan> planLights(const Scene& scene, const gltf::ReferencePoint& reference) {
+std::vector<LightPlan> planLights(const Scene& scene, const gltf::ReferencePoint& reference,
+                                  GltfLightFalloff falloff) {
   std::vector<LightPlan> plans;
   plans.reserve(scene.lights.size());
   for (const Light& light : scene.lights) {
+    if (falloff == GltfLightFalloff::None) {
+      plans.push_back({std::nullopt, gltf::unscaledPointLightFromColour(light.colour)});
+      continue;
+    }
     double distance = gltf::referenceDistance(light.position(), reference);
     plans.push_back({distance, gltf::pointLightFromColour(light.colour, distance)});
   }
@@ -385,13 +394,20 @@ void reportLightLosses(const Scene& scene, Severity lossSeverity,
   std::string where = gltf::describeReferencePoint(reference);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     std::string label = "LIGHT " + std::to_string(i + 1);
+    if (plans.empty()) {
+      out.report(lossSeverity, DiagnosticCode::GltfLightLeftOut, scene.lights[i].span,
+                 label + " (COLOUR " + colourText(scene.lights[i].colour) +
+                     ") is left out of the glTF, as --no-lights asks");
+      continue;
+    }
     const LightPlan& plan = plans[i];
+    if (!plan.distance) continue;
     reportBeyondFloat(gltf::lightNodeMatrix(scene.lights[i].matrix), label, scene.lights[i].span,
                       lossSeverity, out);
     if (plan.point.clamped) {
       out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
                  "the intensity that matches " + label + " at its reference distance " +
-                     gltf::approximateNumber(plan.distance) +
+                     gltf::approximateNumber(*plan.distance) +
                      " is beyond single precision, where glTF readers hold it: it is clamped to " +
                      gltf::approximateNumber(plan.point.intensity) + " cd")
           .hint = "the exact colour rides in extras";
@@ -401,7 +417,7 @@ void reportLightLosses(const Scene& scene, Severity lossSeverity,
                  " becomes a KHR_lights_punctual point light, whose light falls off with the "
                  "square of the distance where a scene file's does not: its intensity, " +
                  gltf::approximateNumber(plan.point.intensity) + " cd, matches " + label +
-                 " at the reference distance " + gltf::approximateNumber(plan.distance) +
+                 " at the reference distance " + gltf::approximateNumber(*plan.distance) +
                  ", from the light to " + where);
   }
 }
@@ -434,8 +450,7 @@ void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize,
                  "RI " + formatNumber(m.ri) + " of " + label + " is written as KHR_materials_ior 1")
           .hint = "the exact value rides in extras";
     }
-    for (MaterialProperty p :
-         {MaterialProperty::Ambient, MaterialProperty::Diffuse, MaterialProperty::Reflectivity}) {
+    for (MaterialProperty p : {MaterialProperty::Ambient, MaterialProperty::Diffuse}) {
       double value = materialValue(m, p);
       if (value == defaultMaterialValue(p)) continue;
       out.note(DiagnosticCode::GltfExtrasOnly, object.span,
@@ -511,7 +526,7 @@ void addCamera(const Scene& scene, const GltfWriteOptions& options, Json& doc, P
 }
 
 void addLights(const Scene& scene, const std::vector<LightPlan>& plans, Json& doc, Parts& parts) {
-  if (scene.lights.empty()) return;
+  if (plans.empty()) return;
   Json lights = Json::array();
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
@@ -524,10 +539,11 @@ void addLights(const Scene& scene, const std::vector<LightPlan>& plans, Json& do
     std::size_t node =
         addRecordNodes(parts.nodes, parts.roots, gltf::lightNodeMatrix(light.matrix), name);
     parts.nodes[node]["extensions"] = {{"KHR_lights_punctual", {{"light", i}}}};
-    parts.nodes[node]["extras"] = gltf::extrasJson({{"record", "LIGHT"},
-                                                    {"colour", vec3Json(light.colour)},
-                                                    {"matrix", rowsJson(light.matrix)},
-                                                    {"referenceDistance", plans[i].distance}});
+    Json sf = {{"record", "LIGHT"},
+               {"colour", vec3Json(light.colour)},
+               {"matrix", rowsJson(light.matrix)}};
+    if (plans[i].distance) sf["referenceDistance"] = *plans[i].distance;
+    parts.nodes[node]["extras"] = gltf::extrasJson(std::move(sf));
   }
   parts.extensions.insert("KHR_lights_punctual");
   doc["extensions"] = {{"KHR_lights_punctual", {{"lights", std::move(lights)}}}};
@@ -643,7 +659,8 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
   std::size_t errorsBefore = out.errorCount();
   float planeSize = planeHalfSize(scene);
   gltf::ReferencePoint reference = gltf::referencePoint(scene);
-  std::vector<LightPlan> lights = planLights(scene, reference);
+  std::vector<LightPlan> lights;
+  if (options.lights) lights = planLights(scene, reference, options.lightFalloff);
   reportLosses(scene, conversion.noLoss ? Severity::Error : Severity::Warning, planeSize, reference,
                lights, out);
   if (out.errorCount() != errorsBefore) return std::nullopt;
