@@ -490,6 +490,25 @@ def make_pov():
         "pov/camera-direction-1e200.pov",
         "camera { location 0 direction <1e200, 0, 1e200> }\n" + light,
     )
+    # Patterns read as their mean colour: POV-Ray's limit on a colour_map,
+    # colours near the largest double (the mean stays finite, and negative)
+    # and a value that is not finite.
+    write(
+        "pov/colour-map-257-entries.pov",
+        cam
+        + "sphere { 0, 1 pigment { gradient x colour_map {\n"
+        + "".join("  [%g rgb %g]\n" % (i / 256, i / 256) for i in range(257))
+        + "} } }\n",
+    )
+    write(
+        "pov/colour-map-colours-1e308.pov",
+        cam
+        + "sphere { 0, 1 pigment { marble colour_map { [0 rgb -1.7e308] [1 rgb -1.7e308] } } }\n",
+    )
+    write(
+        "pov/colour-map-value-not-finite.pov",
+        cam + "sphere { 0, 1 pigment { bozo colour_map { [1e308 * 10 rgb 1] } } }\n",
+    )
 
 
 make_sf()

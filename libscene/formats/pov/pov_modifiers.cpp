@@ -1,10 +1,12 @@
 #include "libscene/formats/pov/pov_modifiers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/matrix.hpp>
 #include <numbers>
 
 #include "libscene/formats/pov/pov_keywords.h"
+#include "libscene/formats/pov/pov_pattern_mean.h"
 #include "libscene/text/number.h"
 #include "libscene/text/reader_support.h"
 #include "scenefile/transform.h"
@@ -208,9 +210,7 @@ void PovModifierReader::pigmentItem(PovMaterialPatch& patch) {
              "this reader reads no file but the scene itself");
     }
     if (isPovPattern(t.text)) {
-      PovToken word = take();
-      unsupported(word.span, "the pigment pattern '" + std::string(word.text) + "'");
-      skipToBlockEnd();
+      patternPigment(patch);
       return;
     }
   }
@@ -218,6 +218,122 @@ void PovModifierReader::pigmentItem(PovMaterialPatch& patch) {
   patch.colour = glm::dvec3(c.v[0], c.v[1], c.v[2]);
   patch.filter = c.v[3];
   patch.transmit = c.v[4];
+  patch.pattern.reset();
+}
+
+// --- Patterns ------------------------------------------------------------------
+
+// A pattern and its modifiers, to the pigment's closing brace. The model
+// holds one colour an object: checker, hexagon, brick and the patterns of a
+// colour_map become their mean colour (a loss the scene reports for each
+// object it colours); a pattern of pigments, of an image or of a function,
+// or one without its colour_map, stays unsupported.
+void PovModifierReader::patternPigment(PovMaterialPatch& patch) {
+  std::optional<PovToken> pattern;
+  std::vector<PovValue> listed;
+  std::optional<std::vector<PovMapEntry>> map;
+  glm::dvec3 brickSize(8.0, 3.0, 4.5);  // POV-Ray's defaults
+  double mortar = 0.5;
+  while (!peek().isSymbol('}') && peek().kind != PovTokenKind::End) {
+    const PovToken& t = peek();
+    if (t.kind == PovTokenKind::Directive) {
+      directive();
+      continue;
+    }
+    if (t.kind == PovTokenKind::Word && isPovTransformWord(t.text)) {
+      PovTransform ignoredTransform;  // a moved pattern has the same mean
+      transformItem(ignoredTransform);
+      continue;
+    }
+    PovToken word = take();
+    std::string_view w = word.text;
+    if (word.kind != PovTokenKind::Word) {
+      fail(word.span, "expected a pattern modifier, found " + describe(word));
+    } else if (!pattern && isPovListPattern(w)) {
+      pattern = word;
+      listed = listColours(w);
+    } else if (!pattern && isPovMapPattern(w)) {
+      pattern = word;
+      if (w == "gradient") vectorValue("gradient's direction");
+      if (w == "spiral1" || w == "spiral2") floatValue(std::string(w) + "'s number of arms");
+    } else if (w == "color_map" || w == "colour_map") {
+      map = colourMap(word);
+    } else if (w == "turbulence" || w == "brick_size") {
+      glm::dvec3 v = vectorValue(w);
+      if (w == "brick_size") brickSize = v;
+    } else if (w == "octaves" || w == "omega" || w == "lambda" || w == "frequency" ||
+               w == "phase" || w == "mortar") {
+      double v = floatValue(w);
+      if (w == "mortar") mortar = v;
+    } else {
+      std::string what = pattern && (w == "pigment" || w == "texture")
+                             ? "'" + std::string(pattern->text) + "' of " + std::string(w) + "s"
+                             : "'" + std::string(w) + "'";
+      unsupported(word.span, "the pigment pattern " + what);
+      skipToBlockEnd();
+      return;
+    }
+  }
+  if (!pattern || (isPovMapPattern(pattern->text) && !map)) {
+    const PovToken& at = pattern ? *pattern : peek();
+    unsupported(at.span, pattern ? "the pigment pattern '" + std::string(pattern->text) +
+                                       "' without a colour_map"
+                                 : std::string("a colour_map without a pattern"));
+    return;
+  }
+  std::string_view name = pattern->text;
+  PovValue mean = map               ? povColourMapMean(*map)
+                  : name == "brick" ? povBrickMean(listed[0], listed[1], brickSize, mortar)
+                                    : povEqualShareMean(listed);
+  patch.colour = glm::dvec3(mean.v[0], mean.v[1], mean.v[2]);
+  patch.filter = mean.v[3];
+  patch.transmit = mean.v[4];
+  patch.pattern = PovPatternMean{std::string(name), pattern->span};
+}
+
+// The colours after checker, hexagon or brick, commas between them optional
+// as in POV-Ray; POV-Ray's own for those not given.
+std::vector<PovValue> PovModifierReader::listColours(std::string_view pattern) {
+  std::vector<PovValue> colours = povDefaultListColours(pattern);
+  for (std::size_t i = 0; i < colours.size(); ++i) {
+    if (i > 0) acceptSymbol(',');
+    const PovToken& t = peek();
+    bool modifier = t.isSymbol('}') || t.kind == PovTokenKind::End ||
+                    (t.kind == PovTokenKind::Word &&
+                     (isPovPattern(t.text) || isPovTransformWord(t.text) || t.isWord("pigment") ||
+                      t.isWord("texture") || t.isWord("brick_size") || t.isWord("mortar")));
+    if (modifier) break;
+    colours[i] = colour();
+  }
+  return colours;
+}
+
+// colour_map { [value colour] ... }, or POV-Ray 3.1's [v1, v2 colour1
+// colour2]; entries in ascending order of value, at most POV-Ray's 256.
+std::vector<PovMapEntry> PovModifierReader::colourMap(const PovToken& keyword) {
+  expectSymbol('{', "after " + std::string(keyword.text));
+  std::vector<PovMapEntry> entries;
+  while (!acceptSymbol('}')) {
+    PovToken open = expectSymbol('[', "before a colour_map entry");
+    double value = floatValue("a colour_map entry's value");
+    acceptSymbol(',');
+    if (peek().kind == PovTokenKind::Number) {
+      double second = floatValue("a colour_map entry's second value");
+      PovValue first = colour();
+      entries.push_back({value, first});
+      entries.push_back({second, colour()});
+    } else {
+      entries.push_back({value, colour()});
+    }
+    expectSymbol(']', "after a colour_map entry");
+    if (entries.size() > kPovMaxMapEntries) {
+      fail(open.span, "a colour_map holds at most " + std::to_string(kPovMaxMapEntries) +
+                          " entries, as in POV-Ray");
+    }
+  }
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const PovMapEntry& a, const PovMapEntry& b) { return a.value < b.value; });
+  return entries;
 }
 
 void PovModifierReader::finishItem(PovMaterialPatch& patch) {

@@ -6,8 +6,10 @@
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 #include "libscene/formats/pov/pov_evaluator.h"
+#include "libscene/formats/pov/pov_pattern_mean.h"
 
 namespace scene {
 
@@ -30,6 +32,9 @@ class PovModifierReader : public PovEvaluator {
   void applyTransformItem(const PovToken& word, PovTransform& t);
   PovTransform declaredTransform(const PovToken& name);
   void pigmentItem(PovMaterialPatch& patch);
+  void patternPigment(PovMaterialPatch& patch);
+  std::vector<PovValue> listColours(std::string_view pattern);
+  std::vector<PovMapEntry> colourMap(const PovToken& keyword);
   void finishItem(PovMaterialPatch& patch);
   void reflection(const PovToken& t, PovMaterialPatch& patch);
   void interiorItem(PovMaterialPatch& patch);

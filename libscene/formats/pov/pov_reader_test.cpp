@@ -396,6 +396,91 @@ TEST(PovReader, ReportsWhatTheSceneModelCannotHold) {
   EXPECT_TRUE(read(kCamera + "background { rgb 0 }\n", strict).read.ok());
 }
 
+// The mean colour a pattern is read as, and the loss naming the object.
+glm::dvec3 patternMean(const std::string& pigment, std::string* loss = nullptr) {
+  PovImport r = read(kCamera + "box { -1, 1 }\nsphere { 0, 1 pigment { " + pigment + " } }\n");
+  EXPECT_TRUE(r.read.ok()) << pigment << "\n" << all(r.read.diagnostics);
+  std::vector<Diagnostic> losses = withCode(r.read.diagnostics, DiagnosticCode::PovLoss);
+  EXPECT_EQ(losses.size(), 1u) << pigment << "\n" << all(r.read.diagnostics);
+  if (loss && !losses.empty()) *loss = losses[0].message;
+  return r.read.scene.objects.size() == 2 ? r.read.scene.objects[1].material.colour
+                                          : glm::dvec3(-1.0);
+}
+
+TEST(PovReader, PatternsBecomeTheirMeanColourWithALossNamingTheObject) {
+  std::string loss;
+  expectNear(patternMean("checker rgb <1, 0, 0>, rgb 1", &loss), {1, 0.5, 0.5});
+  EXPECT_EQ(loss,
+            "the checker pigment of SPHERE object 2 is approximated by its mean colour 1 0.5 0.5");
+  // POV-Ray's own colours: checker blue and green, hexagon blue, green and
+  // red, brick grey mortar (0.5) and red brick (0.6, 0.15, 0.15).
+  expectNear(patternMean("checker scale 0.5"), {0, 0.5, 0.5});
+  expectNear(patternMean("hexagon"), glm::dvec3(1.0 / 3.0));
+  // Brick on a wall facing z: 7.5 / 8 by 2.5 / 3 of each cell is brick.
+  expectNear(patternMean("brick"),
+             glm::dvec3(0.5) * 0.21875 + glm::dvec3(0.6, 0.15, 0.15) * 0.78125);
+  expectNear(patternMean("brick rgb 0, rgb 1 brick_size <2, 2, 2> mortar 1"), glm::dvec3(0.25));
+  // colour_map patterns: the map over [0, 1], linear between entries, the
+  // end colours held beyond them, in any order of entries.
+  expectNear(patternMean("gradient y colour_map { [0 rgb 0] [1 rgb 1] } turbulence 0.5"),
+             glm::dvec3(0.5));
+  expectNear(patternMean("marble color_map { [0.5 rgb 1] [0 rgb 0] [1 rgb 1] }"), glm::dvec3(0.75));
+  expectNear(patternMean("bozo colour_map { [0.25, 0.75 rgb 0 rgb 1] }"), glm::dvec3(0.5));
+  expectNear(patternMean("wood colour_map { [0.3 rgb <0.2, 0.4, 0.6>] }"), {0.2, 0.4, 0.6});
+  std::string entries;
+  for (int i = 0; i < 256; ++i) entries += "[" + std::to_string(i / 255.0) + " rgb 1]";
+  expectNear(patternMean("spotted colour_map { " + entries + " }"), glm::dvec3(1.0));
+  // A later plain colour replaces the pattern, and the loss with it.
+  PovImport plain = read(kCamera + "sphere { 0, 1 pigment { checker } pigment { rgb 1 } }\n");
+  EXPECT_TRUE(withCode(plain.read.diagnostics, DiagnosticCode::PovLoss).empty())
+      << all(plain.read.diagnostics);
+}
+
+TEST(PovReader, PatternsWithoutAMeanColourStayUnsupported) {
+  std::string text = kCamera +
+                     "sphere { 0, 1 pigment { bozo } }\n"
+                     "sphere { 0, 1 pigment { checker pigment { rgb 1 } pigment { rgb 0 } } }\n"
+                     "sphere { 0, 1 pigment { gradient x pigment_map { [0 rgb 1] } } }\n";
+  std::string tooMany = kCamera + "sphere { 0, 1 pigment { gradient x colour_map {";
+  for (int i = 0; i < 257; ++i) tooMany += " [0 rgb 1]";
+  tooMany += " } } }\n";
+  PovImport r = read(text);
+  std::vector<Diagnostic> found = withCode(r.read.diagnostics, DiagnosticCode::PovUnsupported);
+  ASSERT_EQ(found.size(), 3u) << all(r.read.diagnostics);
+  EXPECT_EQ(found[0].message,
+            "the pigment pattern 'bozo' without a colour_map is not supported (line 3)");
+  EXPECT_EQ(found[1].message,
+            "the pigment pattern 'checker' of pigments is not supported (line 4)");
+  EXPECT_EQ(found[2].message, "the pigment pattern 'pigment_map' is not supported (line 5)");
+  PovImport limit = read(tooMany);
+  EXPECT_FALSE(limit.read.ok());
+  EXPECT_EQ(withCode(limit.read.diagnostics, DiagnosticCode::PovSyntax).at(0).message,
+            "a colour_map holds at most 256 entries, as in POV-Ray");
+}
+
+TEST(PovReader, APatternsMeanIsALossUnderEitherOptionAndAnErrorUnderNoLoss) {
+  std::string text = kCamera +
+                     "#declare P = pigment { checker rgb 0, rgb 1 }\n"
+                     "sphere { 0, 1 pigment { P } }\nbox { -1, 1 pigment { P } }\n";
+  ReadOptions skip;
+  skip.pov.skipUnsupported = true;
+  for (const ReadOptions& options : {ReadOptions{}, skip}) {
+    PovImport r = read(text, options);
+    EXPECT_TRUE(r.read.ok()) << all(r.read.diagnostics);
+    std::vector<Diagnostic> losses = withCode(r.read.diagnostics, DiagnosticCode::PovLoss);
+    ASSERT_EQ(losses.size(), 2u) << all(r.read.diagnostics);
+    EXPECT_EQ(losses[0].severity, Severity::Warning);
+    EXPECT_NE(losses[0].message.find("of SPHERE object 1 "), std::string::npos);
+    EXPECT_NE(losses[1].message.find("of CUBE object 2 "), std::string::npos);
+    EXPECT_EQ(losses[0].span.line, 3) << "at the pattern";
+  }
+  ReadOptions strict;
+  strict.noLoss = true;
+  PovImport r = read(text, strict);
+  EXPECT_FALSE(r.read.ok());
+  EXPECT_EQ(withCode(r.read.diagnostics, DiagnosticCode::PovLoss).at(0).severity, Severity::Error);
+}
+
 TEST(PovReader, LightsTakeTheirTransforms) {
   PovImport r = read(
       "camera { right -x*4/3 }\n"

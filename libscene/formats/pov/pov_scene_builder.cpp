@@ -66,7 +66,8 @@ class PovSceneBuilder : PovReports {
   void exactCamera(Camera& camera, const glm::dvec3& forward, const glm::dvec3& up, int index);
   void exactLight(Light& light, int index);
   void exactObject(Object& object, int index);
-  Material material(const PovPendingObject& pending, const Object& object);
+  // `number` counts the file's objects from 1, as the losses name them.
+  Material material(const PovPendingObject& pending, const Object& object, std::size_t number);
   void reportView(SourceSpan span);
 
   const PovSceneParts& parts_;
@@ -108,13 +109,15 @@ void PovSceneBuilder::build() {
     checkColour(light.colour, RecordRole::Light, spans, out_);
     if (out_.errorCount() == before) scene.lights.push_back(light);
   }
+  std::size_t number = 0;
   for (const PovPendingObject& pending : parts_.objects) {
+    ++number;
     Object object;
     object.kind = pending.kind;
     object.matrix = mirrored ? mirrorZ(pending.transform.m) : pending.transform.m;
     object.span = pending.span;
     std::size_t before = out_.errorCount();
-    object.material = material(pending, object);
+    object.material = material(pending, object, number);
     checkObjectMatrix(object.matrix, objectKindName(object.kind), object.span, out_);
     exactObject(object, pending.exactComment);
     if (out_.errorCount() == before) {
@@ -297,11 +300,20 @@ void PovSceneBuilder::exactObject(Object& object, int index) {
 
 // The object's material from POV-Ray's texture, each value that the
 // model cannot hold reported.
-Material PovSceneBuilder::material(const PovPendingObject& pending, const Object& object) {
+Material PovSceneBuilder::material(const PovPendingObject& pending, const Object& object,
+                                   std::size_t number) {
   PovMaterialPatch p = defaults_;
   p.merge(pending.patch);
   Material m;
   m.colour = *p.colour;
+  if (p.pattern) {
+    loss(p.pattern->span,
+         "the " + p.pattern->pattern + " pigment of " + std::string(objectKindName(object.kind)) +
+             " object " + std::to_string(number) + " is approximated by its mean colour " +
+             formatNumber(m.colour.r) + " " + formatNumber(m.colour.g) + " " +
+             formatNumber(m.colour.b),
+         "the scene model holds one colour an object");
+  }
   RecordSpans spans = RecordSpans::uniform(object.span);
   checkColour(m.colour, RecordRole::Object, spans, out_);
   if (*p.filter > 0.0) {

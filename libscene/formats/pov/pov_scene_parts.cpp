@@ -6,6 +6,7 @@ void PovMaterialPatch::merge(const PovMaterialPatch& later) {
   auto take = [](auto& mine, const auto& theirs) {
     if (theirs) mine = theirs;
   };
+  if (later.colour) pattern = later.pattern;
   take(colour, later.colour);
   take(filter, later.filter);
   take(transmit, later.transmit);

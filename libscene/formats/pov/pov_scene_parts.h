@@ -9,6 +9,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "scenefile/diagnostic.h"
@@ -52,8 +53,16 @@ inline glm::dmat4 povScaling(const glm::dvec3& v) {
 // What pigment, finish, interior and texture statements set; unset values
 // come from what was set before (an object's own over #default over
 // POV-Ray's defaults).
+// A pigment pattern read as its mean colour (pov_pattern_mean.h): a loss
+// reported for each object whose colour it gives.
+struct PovPatternMean {
+  std::string pattern;
+  SourceSpan span;
+};
+
 struct PovMaterialPatch {
   std::optional<glm::dvec3> colour;
+  std::optional<PovPatternMean> pattern;  // where `colour` is a pattern's mean
   std::optional<double> filter, transmit;
   std::optional<double> ambient, diffuse, phong, phongSize, specular, roughness, reflection, ior;
 
