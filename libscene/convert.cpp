@@ -55,9 +55,10 @@ std::optional<std::string> convertScene(const Scene& scene, Format format,
                                         const ConversionOptions& options, DiagnosticList& out) {
   // One string holds one file: the buffer is embedded.
   std::optional<ConvertedFiles> files;
-  if (!options.gltf.externalBuffer.empty()) {
+  if (!options.gltf.externalBuffer.empty() || !options.obj.materialLibrary.empty()) {
     ConversionOptions embedded = options;
     embedded.gltf.externalBuffer.clear();
+    embedded.obj.materialLibrary.clear();
     files = convertSceneToFiles(scene, format, embedded, out);
   } else {
     files = convertSceneToFiles(scene, format, options, out);

@@ -57,7 +57,7 @@ TEST(FormatRegistry, FindsEachFormatByNameAndByExtension) {
   EXPECT_EQ(findFormatByName("povray"), nullptr);
   EXPECT_EQ(findFormatByExtension("scene.SF"), nullptr) << "extensions compare exactly";
   EXPECT_EQ(findFormatByExtension("scene"), nullptr);
-  EXPECT_EQ(formatNames(), "sf, instructions, gltf, glb, pov");
+  EXPECT_EQ(formatNames(), "sf, instructions, gltf, glb, pov, obj");
 }
 
 // Every format writes the scene in a form its own reader recognises by

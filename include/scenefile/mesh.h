@@ -37,6 +37,13 @@ TriangleMesh cylinderMesh(int segments = kDefaultSegments);
 /// infinite PLANE made finite.
 TriangleMesh planeMesh(float halfSize);
 
+/// The half-size of the square that stands for every PLANE of `scene`:
+/// twice the farthest corner of the bounds of everything else (the camera's
+/// eye, the lights, each object's box, each plane's origin) from each
+/// plane's origin in its own x and z, rounded up to a power of two (at
+/// least 1, at most 1e30), so that the square reaches past the scene.
+float scenePlaneHalfSize(const Scene& scene);
+
 /// The mesh of `kind`; `planeHalfSize` is used by PLANE alone.
 TriangleMesh primitiveMesh(ObjectKind kind, int segments, float planeHalfSize);
 

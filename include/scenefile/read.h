@@ -13,6 +13,7 @@
 #include "scenefile/diagnostic.h"
 #include "scenefile/format.h"
 #include "scenefile/options/gltf.h"
+#include "scenefile/options/obj.h"
 #include "scenefile/options/pov.h"
 #include "scenefile/options/scene_file.h"
 #include "scenefile/scene.h"
@@ -48,6 +49,8 @@ struct ReadOptions {
   SceneFileReadOptions sceneFile;
   /// glTF 2.0 (.gltf, .glb).
   GltfReadOptions gltf;
+  /// Wavefront OBJ (.obj).
+  ObjReadOptions obj;
   /// POV-Ray (.pov).
   PovReadOptions pov;
   /// Asks a read to stop early: the readers of scene files and instruction

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
+#include <limits>
 #include <numbers>
 
 namespace scene {
@@ -147,6 +149,61 @@ TriangleMesh primitiveMesh(ObjectKind kind, int segments, float planeHalfSize) {
       return cubeMesh();
   }
   return cubeMesh();
+}
+
+namespace {
+
+struct Bounds {
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
+  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+  void add(const glm::dvec3& p) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return;
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  bool empty() const { return lo.x > hi.x; }
+};
+
+// Everything the scene holds but its planes: the camera's eye, the lights,
+// the corners of each object's box, and each plane's origin.
+Bounds sceneBounds(const Scene& scene) {
+  Bounds b;
+  b.add(glm::dvec3(scene.camera.matrix[3]));
+  for (const Light& light : scene.lights) b.add(light.position());
+  for (const Object& object : scene.objects) {
+    if (object.kind == ObjectKind::Plane) {
+      b.add(glm::dvec3(object.matrix[3]));
+      continue;
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+      glm::dvec4 p((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, (corner & 4) ? 1.0 : -1.0,
+                   1.0);
+      b.add(glm::dvec3(object.matrix * p));
+    }
+  }
+  return b;
+}
+
+}  // namespace
+
+float scenePlaneHalfSize(const Scene& scene) {
+  Bounds b = sceneBounds(scene);
+  double reach = 1.0;
+  for (const Object& object : scene.objects) {
+    if (object.kind != ObjectKind::Plane || b.empty()) continue;
+    glm::dmat4 inverse = glm::inverse(object.matrix);
+    for (int corner = 0; corner < 8; ++corner) {
+      glm::dvec4 p((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
+                   (corner & 4) ? b.hi.z : b.lo.z, 1.0);
+      glm::dvec4 local = inverse * p;
+      double r = std::max(std::abs(local.x), std::abs(local.z));
+      if (std::isfinite(r)) reach = std::max(reach, r);
+    }
+  }
+  constexpr double kLargest = 1e30;
+  double size = std::exp2(std::ceil(std::log2(2.0 * reach)));
+  if (!std::isfinite(size) || size > kLargest) size = kLargest;
+  return static_cast<float>(size);
 }
 
 }  // namespace scene

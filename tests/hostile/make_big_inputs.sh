@@ -50,6 +50,18 @@ repeat_line() { yes "$1" | head -n "$2" || true; }
   repeat_char A 100000000
   printf '"}, "scene": 5, "scenes": [{"nodes": []}]}\n'
 } >line-100mb-string.gltf
+{
+  printf 'v 1 1 '
+  repeat_char 7 100000000
+  printf '\n'
+} >line-100mb-number.obj
+# One face of 2^24 + 3 corners: past the OBJ reader's limit on triangle
+# corners (three times its vertex limit), refused before one is kept.
+{
+  printf 'v 0 0 0\nf'
+  yes ' 1' | head -n 16777219 | tr -d '\n' || true
+  printf '\n'
+} >face-16777219-corners.obj
 
 # Numbers: ten million digits, and a fraction with ten million zeros.
 {

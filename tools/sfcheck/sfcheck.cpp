@@ -38,6 +38,8 @@ std::string formatName(std::optional<scene::Format> detected) {
       return "glb";
     case scene::Format::Pov:
       return "pov";
+    case scene::Format::Obj:
+      return "obj";
   }
   return "unknown";
 }
