@@ -23,6 +23,8 @@ scene::ConversionOptions conversionOptionsFor(const SfconvertOptions& o, bool to
   options.gltf.lightFalloff = o.lightFalloff == "none" ? scene::GltfLightFalloff::None
                                                        : scene::GltfLightFalloff::InverseSquare;
   options.gltf.generator = std::string("sfconvert ") + SCENEFILE_VERSION;
+  options.obj.segments = o.tessellation;
+  options.obj.materialLibrary = bufferFile;
   options.pov.verticalFovDegrees = o.fov;
   if (o.width > 0 && o.height > 0) {
     options.pov.width = o.width;

@@ -52,17 +52,18 @@ std::optional<scene::Format> outputFormat(const SfconvertOptions& o, const std::
   return row ? std::optional<scene::Format>(row->format) : std::nullopt;
 }
 
-// The buffer of the .gltf `output` with --external-buffers: beside the file
-// the output is written as and named after it (when the output is a link,
-// the file at its end: file_io.h writes through links), so that the .gltf
-// actually written finds its buffer.
-std::filesystem::path bufferPathOf(const std::string& output) {
+// The buffer of the .gltf `output` with --external-buffers (`extension`
+// .bin), or the MTL file of an .obj (.mtl): beside the file the output is
+// written as and named after it (when the output is a link, the file at its
+// end: file_io.h writes through links), so that the file actually written
+// finds it.
+std::filesystem::path bufferPathOf(const std::string& output, std::string_view extension) {
   std::error_code ec;
   std::filesystem::path gltfFile = output;
   if (std::filesystem::is_symlink(gltfFile, ec)) {
     gltfFile = scene::followLinks(gltfFile).value_or(gltfFile);
   }
-  return gltfFile.parent_path() / (gltfFile.stem().string() + ".bin");
+  return gltfFile.parent_path() / (gltfFile.stem().string() + std::string(extension));
 }
 
 // A conversion's plan, worked out from the command line before anything is
@@ -149,26 +150,30 @@ MaybeFailure Converter::plan() {
   return std::nullopt;
 }
 
-// The buffer lies beside the .gltf that names it (bufferPathOf).
+// The buffer lies beside the .gltf that names it, an OBJ's MTL file beside
+// the .obj (bufferPathOf), as every OBJ exporter writes it; an OBJ on
+// standard output has its materials in its comments alone.
 MaybeFailure Converter::planBuffer() {
-  if (!o_.externalBuffers) return std::nullopt;
-  if (plan_.format != scene::Format::Gltf || plan_.toStdout) {
+  bool mtl = plan_.format == scene::Format::Obj && !plan_.toStdout;
+  if (!o_.externalBuffers && !mtl) return std::nullopt;
+  if (o_.externalBuffers && (plan_.format != scene::Format::Gltf || plan_.toStdout)) {
     return toolFailure(ExitCode::Usage, "--external-buffers needs a .gltf output file");
   }
-  plan_.bufferPath = bufferPathOf(o_.output);
+  std::string what = mtl ? "the MTL file '" : "the buffer file '";
+  plan_.bufferPath = bufferPathOf(o_.output, mtl ? ".mtl" : ".bin");
   plan_.bufferFile = plan_.bufferPath.filename().string();
   if (writesOverInput(o_.input, plan_.bufferPath.string())) {
     return toolFailure(ExitCode::InvalidInput,
-                       "the buffer file '" + printableText(plan_.bufferPath.string()) +
+                       what + printableText(plan_.bufferPath.string()) +
                            "' is the input file; sfconvert never writes over its input");
   }
   OutputPlan outputs;
   outputs.addOutput(o_.output, o_.input);
   outputs.addOutput(plan_.bufferPath.string(), o_.input);
   if (outputs.firstClash()) {
-    return toolFailure(ExitCode::Usage, "the buffer file '" +
-                                            printableText(plan_.bufferPath.string()) +
-                                            "' is the output itself; name the output NAME.gltf");
+    return toolFailure(ExitCode::Usage, what + printableText(plan_.bufferPath.string()) +
+                                            "' is the output itself; name the output " +
+                                            (mtl ? "NAME.obj" : "NAME.gltf"));
   }
   return std::nullopt;
 }
@@ -303,8 +308,12 @@ MaybeFailure runCommand(SfconvertOptions& options, ToolOutput& output, Stage& st
   for (std::size_t i = 0; i < outputs->size(); ++i) {
     const std::string& out = (*outputs)[i];
     plan.addOutput(out, options.files[i]);
-    if (options.externalBuffers && outputFormat(options, out) == scene::Format::Gltf) {
-      plan.addOutput(bufferPathOf(out).string(), options.files[i], "its buffer");
+    std::optional<scene::Format> format = outputFormat(options, out);
+    if (options.externalBuffers && format == scene::Format::Gltf) {
+      plan.addOutput(bufferPathOf(out, ".bin").string(), options.files[i], "its buffer");
+    }
+    if (format == scene::Format::Obj && !isStandardStream(out)) {
+      plan.addOutput(bufferPathOf(out, ".mtl").string(), options.files[i], "its MTL file");
     }
   }
   std::optional<OutputClash> clash = options.files.size() > 1 ? plan.firstClash() : std::nullopt;

@@ -40,7 +40,8 @@ void addFormatOptions(CLI::App& app, SfconvertOptions& o) {
   app.add_flag("--external-buffers", o.externalBuffers,
                "glTF: write the buffer to NAME.bin beside NAME.gltf instead of embedding it");
   app.add_option("--tessellation", o.tessellation,
-                 "glTF: segments around a sphere or cylinder (the sphere gets half as many rings)")
+                 "glTF and OBJ: segments around a sphere or cylinder (the sphere gets half as many "
+                 "rings)")
       ->transform(wholeNumberIn(scene::kMinSegments, scene::kMaxSegments));
   app.add_flag("--no-lights", o.noLights,
                "glTF: leave the lights out (each reported), for readers that refuse "
