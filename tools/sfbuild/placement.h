@@ -20,17 +20,8 @@ inline constexpr double kLightHeightAboveScene = 2.0;
 // apart, so that a saved file says 2 where the arithmetic gave 2 + 1e-15.
 inline constexpr double kPlacementStep = 0.001;
 
-// The world box of a primitive under its matrix, exact: the extremes of the
-// unit sphere, cube [-1, 1]^3 or closed cylinder (radius 1, y in [-1, 1])
-// along each world axis. Nothing for a plane, which has no bounds (unless it
-// is horizontal, and even then only along y).
-struct Bounds {
-  glm::dvec3 low{0.0}, high{0.0};
-};
-std::optional<Bounds> objectBounds(scene::ObjectKind kind, const glm::dmat4& matrix);
-
-// The lowest world y of the shape (a plane: its height when horizontal,
-// minus infinity otherwise).
+// The lowest world y of the shape, exact (scene::objectBounds); a plane:
+// its height when horizontal, minus infinity otherwise.
 double lowestY(scene::ObjectKind kind, const glm::dmat4& matrix);
 
 // The point the camera looks at: where its forward ray meets y = 0 in front
