@@ -18,6 +18,7 @@
 #include "tools/common/standard_streams.h"
 #include "tools/common/tool_output.h"
 #include "tools/common/unified_diff.h"
+#include "tools/sfcheck/scene_info.h"
 
 namespace tools {
 
@@ -85,6 +86,9 @@ class Checker {
   Tally tally_;
   // What --fix adds to the file's entry in the JSON report.
   nlohmann::json fixEntry_;
+  // What --info adds to it: the scene's summary, null for a file that has
+  // errors or cannot be read.
+  nlohmann::json infoEntry_;
   nlohmann::json report_ = {{"files", nlohmann::json::array()}};
 };
 
@@ -100,6 +104,7 @@ void Checker::report(const std::string& shown, std::optional<scene::Format> dete
                             {"format", formatName(detected)},
                             {"diagnostics", diagnosticsToJson(diagnostics, options_.werror)}};
     if (options_.fix) entry.update(fixEntry_);
+    if (options_.info) entry["info"] = infoEntry_;
     report_["files"].push_back(std::move(entry));
     return;
   }
@@ -156,6 +161,7 @@ std::size_t Checker::fix(const std::string& file, const std::string& shown,
 void Checker::check(const std::string& file) {
   std::string shown = inputDisplayName(file);
   fixEntry_ = {{options_.dryRun ? "fixable" : "fixed", 0}};
+  infoEntry_ = nullptr;
   stage_.set("reading " + printableText(shown));
   InputText input = readInputText(file, options_.read, &output_.streams().in);
   if (input.tooLarge()) {
@@ -171,6 +177,7 @@ void Checker::check(const std::string& file) {
                               {"diagnostics", nlohmann::json::array()},
                               {"readError", printableText(input.readError)}};
       if (options_.fix) entry.update(fixEntry_);
+      if (options_.info) entry["info"] = nullptr;
       report_["files"].push_back(std::move(entry));
     } else {
       output_.fileError(shown, "cannot read the file: " + printableText(input.readError));
@@ -178,6 +185,7 @@ void Checker::check(const std::string& file) {
     return;
   }
   std::string& text = *input.text;
+  std::uintmax_t bytes = text.size();
   stage_.set("checking " + printableText(shown));
   // Standard input's OUTPUT_FILE is taken in the current folder.
   std::filesystem::path folder =
@@ -190,6 +198,13 @@ void Checker::check(const std::string& file) {
   if (detected) {
     output_.detail(printableText(shown) + ": " + formatName(detected) + ", " +
                    sceneContents(result.scene));
+  }
+  if (options_.info && detected && !result.diagnostics.hasErrors()) {
+    if (format_ == DiagnosticFormat::Json) {
+      infoEntry_ = sceneInfoJson(bytes, result.scene);
+    } else {
+      output_.streams().out << sceneInfoText(printableText(shown), *detected, bytes, result.scene);
+    }
   }
   SourceExcerpts sources;
   if (format_ == DiagnosticFormat::Text) sources.capture(shown, text, result.diagnostics);
@@ -278,6 +293,10 @@ std::unique_ptr<CLI::App> makeSfcheckCommandLine(SfcheckOptions& options) {
                 "with --fix: change no file, print the fixes as a unified diff on standard "
                 "output (in the JSON report, each file's diff)")
       ->needs(fix);
+  app->add_flag("--info", options.info,
+                "also print what each file holds, on standard output: the format and size, the "
+                "objects by kind, the lights, the camera, the box of the finite objects and the "
+                "distinct materials (in the JSON report, each file's info)");
   addReadLimitOptions(*app, options.read);
   return app;
 }
