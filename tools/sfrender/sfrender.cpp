@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -36,6 +37,7 @@
 #include "tools/common/tool_output.h"
 #include "tools/sfrender/image_region.h"
 #include "tools/sfrender/image_target.h"
+#include "tools/sfrender/progress_line.h"
 #include "tools/sfrender/scene_view.h"
 #include "tools/sfrender/thread_probe.h"
 
@@ -424,11 +426,12 @@ MaybeFailure RenderJob::run() {
   output_.step("preparing the scene");
   render::RenderStatistics statistics;
   render::ProgressCallback progress;
+  ProgressLine progressLine(output_.err());
   if (output_.streams().errIsTerminal && !o_.common.quiet) {
-    std::ostream& err = output_.err();
-    progress = [&err](int done, int total) {
-      err << "\rsfrender: rendering " << std::setw(3) << (100 * done / total) << "%"
-          << (done == total ? "\n" : "") << std::flush;
+    auto start = std::chrono::steady_clock::now();
+    progress = [&progressLine, start](int done, int total) {
+      std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+      progressLine.update(done, total, elapsed.count());
     };
   }
   stage_.set("rendering");
