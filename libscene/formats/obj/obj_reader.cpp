@@ -223,7 +223,9 @@ void ObjImporter::addGroup(const ObjGroup& group) {
                 formatNumber(fit.fit->error) + " of its size)");
   object.kind = fit.fit->kind;
   object.matrix = fit.fit->shape;
-  object.material = groupMaterial(group, nullptr);
+  // The material's comment is judged on its own: a mesh reshaped elsewhere
+  // may keep its material.
+  object.material = groupMaterial(group, c);
   object.span = group.span;
   result_.scene.objects.push_back(std::move(object));
 }
