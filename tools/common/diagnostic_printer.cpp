@@ -104,14 +104,16 @@ void DiagnosticPrinter::quote(const std::string& file, const scene::SourceSpan& 
 void DiagnosticPrinter::print(const scene::Diagnostic& d) const {
   scene::Severity severity = shownSeverity(d, style_.warningsAsErrors);
   if (style_.errorsOnly && severity != scene::Severity::Error) return;
+  if (!style_.notesShown && severity == scene::Severity::Note) return;
   const TerminalStyle& paint = style_.terminal;
   printLocation(d.file, d.span);
   std::string name(scene::severityName(severity));
   out_ << ' ' << paint.severity(severity, name + ":") << ' ' << printableText(d.message) << " ["
        << paint.severity(severity, scene::codeName(d.code)) << "]\n";
   quote(d.file, d.span, d.fixIt ? &*d.fixIt : nullptr);
-  if (!d.hint.empty())
-    out_ << "  " << paint.location("hint:") << ' ' << printableText(hintText(d)) << '\n';
+  // The running tool's words may leave no hint (the advice is followed already).
+  std::string hint = d.hint.empty() ? std::string() : style_.hint ? style_.hint(d) : hintText(d);
+  if (!hint.empty()) out_ << "  " << paint.location("hint:") << ' ' << printableText(hint) << '\n';
   for (const scene::DiagnosticNote& note : d.notes) {
     printLocation(d.file, note.span);
     out_ << ' ' << paint.severity(scene::Severity::Note, "note:") << ' '

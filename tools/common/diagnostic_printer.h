@@ -3,6 +3,7 @@
 // short form of one line each, or JSON.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
@@ -27,6 +28,9 @@ struct DiagnosticStyle {
   bool quoteSource = true;        // the source line and caret under each message
   bool warningsAsErrors = false;  // --werror: warnings print as errors
   bool errorsOnly = false;        // --quiet: warnings and notes are not printed
+  bool notesShown = true;         // notes are printed (a tool's run: with --verbose)
+  // A diagnostic's hint in the running tool's words; empty: hintText.
+  std::function<std::string(const scene::Diagnostic&)> hint;
 };
 
 // Prints diagnostics in the text forms:

@@ -73,6 +73,9 @@ DiagnosticStyle ToolOutput::diagnosticStyle(DiagnosticFormat format, bool warnin
   style.quoteSource = format == DiagnosticFormat::Text;
   style.warningsAsErrors = warningsAsErrors;
   style.errorsOnly = flags_.quiet;
+  // A clean run says what it wrote and what was lost; what was decided on
+  // the way is asked for.
+  style.notesShown = flags_.verbose;
   return style;
 }
 

@@ -38,6 +38,7 @@
 #include "tools/sfrender/image_region.h"
 #include "tools/sfrender/image_target.h"
 #include "tools/sfrender/progress_line.h"
+#include "tools/sfrender/render_hint.h"
 #include "tools/sfrender/scene_view.h"
 #include "tools/sfrender/thread_probe.h"
 
@@ -235,8 +236,12 @@ MaybeFailure RenderJob::readScene() {
   }
   SourceExcerpts sources;
   sources.capture(shown, *text.text, result.diagnostics);
-  DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format), &sources)
-      .print(result.diagnostics);
+  DiagnosticStyle style = output_.diagnosticStyle(format);
+  // The view this render will use, which no hint asks for again.
+  render::RenderSettings inUse = settings_;
+  applySceneView(result.scene, o_.width, o_.height, o_.fov.has_value(), inUse);
+  style.hint = [inUse](const scene::Diagnostic& d) { return renderHintText(d, inUse); };
+  DiagnosticPrinter(output_.err(), style, &sources).print(result.diagnostics);
   if (!result.ok()) return toldFailure(ExitCode::InvalidInput);
   output_.detail("read " + printableText(shown) + " (" + sceneContents(result.scene) + ")");
   job_.scene = std::move(result.scene);
