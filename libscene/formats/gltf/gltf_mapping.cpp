@@ -27,7 +27,7 @@ namespace {
 // renderer adds REFLECTIVITY times a display value, a PBR viewer multiplies
 // linear ones: a mirror's is REFLECTIVITY decoded. TRANSPARENCY is taken as
 // it is, which Cycles showed closer on the whole picture (docs/GLTF.md,
-// "Materials in PBR viewers, measured").
+// "Materials").
 double sharpWeight(const Material& material) {
   if (material.transparency > 0.0) return std::clamp(material.transparency, 0.0, 1.0);
   return srgbToLinear(std::clamp(material.reflectivity, 0.0, 1.0));

@@ -450,9 +450,13 @@ void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize,
                  "RI " + formatNumber(m.ri) + " of " + label + " is written as KHR_materials_ior 1")
           .hint = "the exact value rides in extras";
     }
-    for (MaterialProperty p : {MaterialProperty::Ambient, MaterialProperty::Diffuse}) {
+    // A glass reflects by its IOR's Fresnel term alone: its REFLECTIVITY
+    // has no counterpart.
+    for (MaterialProperty p :
+         {MaterialProperty::Ambient, MaterialProperty::Diffuse, MaterialProperty::Reflectivity}) {
       double value = materialValue(m, p);
       if (value == defaultMaterialValue(p)) continue;
+      if (p == MaterialProperty::Reflectivity && m.transparency <= 0.0) continue;
       out.note(DiagnosticCode::GltfExtrasOnly, object.span,
                std::string(materialPropertyName(p)) + " " + formatNumber(value) + " of " + label +
                    " has no glTF counterpart and rides in extras alone");
