@@ -330,8 +330,8 @@ TEST(CommandLine, EveryNumericOptionOfEveryToolReadsANumberOneWay) {
 // take the next argument as the value; and an option that takes one value,
 // given twice, is a usage error, whichever the option.
 TEST(CommandLine, AnEmptyValueOrAnOptionGivenTwiceIsAUsageErrorForEveryOption) {
-  const std::string candidates[] = {"1",   "3", "64",      "auto", "never", "text",
-                                    "pov", "8", "0,0,1,1", "0/1",  "x.png", "cpu"};
+  const std::string candidates[] = {"1", "3",       "64",  "auto",  "never", "text", "pov",
+                                    "8", "0,0,1,1", "0/1", "x.png", "cpu",   "none"};
   int checked = 0;
   for (const ToolCommandLine& tool : allTools()) {
     for (const std::string& name : valueOptions(tool, false)) {
