@@ -16,7 +16,7 @@
 #include "image/oiio_module.h"
 #include "image/png_file.h"
 #include "tools/common/file_io.h"
-#include "tools/common/printable_text.h"
+#include "scenefile/printable_text.h"
 
 namespace image {
 
@@ -369,7 +369,7 @@ std::vector<ImageFormat> writableImageFormats() {
 
 tools::MaybeFailure imageRefusal(const std::filesystem::path& path, const ImageOptions& options) {
   auto refused = [](const std::string& message) {
-    return tools::toolFailure(tools::ExitCode::Usage, tools::printableText(message));
+    return tools::toolFailure(tools::ExitCode::Usage, scene::printableText(message));
   };
   // .ppm and .png need no module, unless to list the formats that take
   // --alpha or --bits in a refusal.

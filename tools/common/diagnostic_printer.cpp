@@ -1,16 +1,12 @@
 #include "tools/common/diagnostic_printer.h"
 
 #include <algorithm>
+#include <string_view>
 #include <vector>
 
 namespace tools {
 
 namespace {
-
-scene::Severity shownSeverity(const scene::Diagnostic& d, bool warningsAsErrors) {
-  if (warningsAsErrors && d.severity == scene::Severity::Warning) return scene::Severity::Error;
-  return d.severity;
-}
 
 // A setting as the tools' flags say it, and the tool that has the flag
 // where the hint names it (its other tools read the same option).
@@ -48,15 +44,6 @@ SettingFlag settingFlag(scene::Setting setting) {
   return {"", "", false};
 }
 
-nlohmann::json spanToJson(const scene::SourceSpan& span) {
-  nlohmann::json j = {{"line", span.line}, {"column", span.column}, {"length", span.length}};
-  if (span.known()) {
-    j["endLine"] = span.line;
-    j["endColumn"] = span.column + span.length;
-  }
-  return j;
-}
-
 }  // namespace
 
 std::string hintText(const scene::Diagnostic& d) {
@@ -75,55 +62,25 @@ std::string hintText(const scene::Diagnostic& d) {
   });
 }
 
-std::optional<DiagnosticFormat> diagnosticFormatFromName(std::string_view name) {
-  if (name == "text") return DiagnosticFormat::Text;
-  if (name == "short") return DiagnosticFormat::Short;
-  if (name == "json") return DiagnosticFormat::Json;
-  return std::nullopt;
-}
-
-void DiagnosticPrinter::printLocation(const std::string& file,
-                                      const scene::SourceSpan& span) const {
-  std::string location = (file.empty() ? "<input>" : printableText(file)) + ":";
-  if (span.known()) {
-    location += std::to_string(span.line) + ":" + std::to_string(span.column) + ":";
-  }
-  out_ << style_.terminal.location(location);
-}
-
-void DiagnosticPrinter::quote(const std::string& file, const scene::SourceSpan& span,
-                              const scene::FixIt* fixIt) const {
-  if (!style_.quoteSource || !sources_) return;
-  const SourceLine* line = sources_->find(file, span);
-  if (!line) return;
-  for (const std::string& text : quoteSourceLine(*line, span, fixIt, style_.terminal)) {
-    out_ << text << '\n';
-  }
+scene::DiagnosticFormOptions formOptions(const DiagnosticStyle& style) {
+  scene::DiagnosticFormOptions options;
+  options.form = scene::DiagnosticForm::Text;
+  options.quoteSource = style.quoteSource;
+  options.color = style.terminal.enabled();
+  options.warningsAsErrors = style.warningsAsErrors;
+  options.lowestSeverity = style.errorsOnly   ? scene::Severity::Error
+                           : style.notesShown ? scene::Severity::Note
+                                              : scene::Severity::Warning;
+  options.hint = style.hint ? style.hint : hintText;
+  return options;
 }
 
 void DiagnosticPrinter::print(const scene::Diagnostic& d) const {
-  scene::Severity severity = shownSeverity(d, style_.warningsAsErrors);
-  if (style_.errorsOnly && severity != scene::Severity::Error) return;
-  if (!style_.notesShown && severity == scene::Severity::Note) return;
-  const TerminalStyle& paint = style_.terminal;
-  printLocation(d.file, d.span);
-  std::string name(scene::severityName(severity));
-  out_ << ' ' << paint.severity(severity, name + ":") << ' ' << printableText(d.message) << " ["
-       << paint.severity(severity, scene::codeName(d.code)) << "]\n";
-  quote(d.file, d.span, d.fixIt ? &*d.fixIt : nullptr);
-  // The running tool's words may leave no hint (the advice is followed already).
-  std::string hint = d.hint.empty() ? std::string() : style_.hint ? style_.hint(d) : hintText(d);
-  if (!hint.empty()) out_ << "  " << paint.location("hint:") << ' ' << printableText(hint) << '\n';
-  for (const scene::DiagnosticNote& note : d.notes) {
-    printLocation(d.file, note.span);
-    out_ << ' ' << paint.severity(scene::Severity::Note, "note:") << ' '
-         << printableText(note.message) << '\n';
-    quote(d.file, note.span, nullptr);
-  }
+  out_ << scene::formatDiagnostic(d, formOptions(style_), sources_);
 }
 
 void DiagnosticPrinter::print(const scene::DiagnosticList& list) const {
-  for (const scene::Diagnostic& d : list.items()) print(d);
+  out_ << scene::formatDiagnostics(list, formOptions(style_), sources_);
 }
 
 void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out) {
@@ -132,38 +89,12 @@ void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out) {
   DiagnosticPrinter(out, style).print(list);
 }
 
-nlohmann::json diagnosticToJson(const scene::Diagnostic& d, bool warningsAsErrors) {
-  nlohmann::json j = {
-      {"file", printableText(d.file)},
-      {"severity", std::string(scene::severityName(shownSeverity(d, warningsAsErrors)))},
-      {"code", std::string(scene::codeName(d.code))},
-      {"message", printableText(d.message)},
-  };
-  j.update(spanToJson(d.span));
-  if (!d.hint.empty()) j["hint"] = printableText(hintText(d));
-  if (!d.notes.empty()) {
-    nlohmann::json notes = nlohmann::json::array();
-    for (const scene::DiagnosticNote& note : d.notes) {
-      nlohmann::json n = spanToJson(note.span);
-      n["message"] = printableText(note.message);
-      notes.push_back(std::move(n));
-    }
-    j["notes"] = std::move(notes);
-  }
-  if (d.fixIt) {
-    nlohmann::json fix = spanToJson(d.fixIt->span);
-    fix["replacement"] = printableText(d.fixIt->replacement);
-    j["fixIt"] = std::move(fix);
-  }
-  return j;
-}
-
 nlohmann::json diagnosticsToJson(const scene::DiagnosticList& list, bool warningsAsErrors) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const scene::Diagnostic& d : list.items()) {
-    out.push_back(diagnosticToJson(d, warningsAsErrors));
-  }
-  return out;
+  scene::DiagnosticFormOptions options;
+  options.form = scene::DiagnosticForm::Json;
+  options.warningsAsErrors = warningsAsErrors;
+  options.hint = hintText;
+  return nlohmann::json::parse(scene::formatDiagnostics(list, options));
 }
 
 }  // namespace tools

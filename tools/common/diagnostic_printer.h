@@ -1,27 +1,26 @@
-// How the tools show diagnostics: the compilers' text form, with the source
-// line quoted and the span underlined (docs/DIAGNOSTICS.md, "Output"), the
-// short form of one line each, or JSON.
+// How the tools show diagnostics: the library's three forms
+// (scenefile/diagnostic_format.h) in the style a run's flags ask for.
 #pragma once
 
 #include <functional>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <ostream>
-#include <string>
-#include <string_view>
 
 #include "scenefile/diagnostic.h"
-#include "tools/common/printable_text.h"
-#include "tools/common/source_excerpt.h"
+#include "scenefile/diagnostic_format.h"
+#include "scenefile/printable_text.h"
+#include "scenefile/source_excerpt.h"
 #include "tools/common/terminal_style.h"
 
 namespace tools {
 
-// --format: text (quoting the source), short (one line a diagnostic, as
-// `rustc --error-format short`; what the tests' .expect files hold) or json.
-enum class DiagnosticFormat { Text, Short, Json };
+using scene::printableText;
+using scene::SourceExcerpts;
 
-std::optional<DiagnosticFormat> diagnosticFormatFromName(std::string_view name);
+// --format: text (quoting the source), short (one line a diagnostic; what
+// the tests' .expect files hold) or json.
+using DiagnosticFormat = scene::DiagnosticForm;
+inline constexpr auto diagnosticFormatFromName = scene::diagnosticFormFromName;
 
 struct DiagnosticStyle {
   TerminalStyle terminal;
@@ -33,16 +32,12 @@ struct DiagnosticStyle {
   std::function<std::string(const scene::Diagnostic&)> hint;
 };
 
-// Prints diagnostics in the text forms:
-//
-//   FILE:LINE:COLUMN: error: message [code]
-//       LINE | the source line
-//            |     ^~~~
-//     hint: ...
-//   FILE:LINE:COLUMN: note: ...
-//
-// A diagnostic without a place prints "FILE: error: ...", and one whose line
-// was not captured (or with quoteSource off) prints no quote.
+// The library's options for a text form in `style`: hints in style.hint's
+// words, else hintText's.
+scene::DiagnosticFormOptions formOptions(const DiagnosticStyle& style);
+
+// Prints diagnostics in the text forms (formatDiagnostics): the source
+// quoted from `sources` where style.quoteSource, else the short form.
 class DiagnosticPrinter {
  public:
   DiagnosticPrinter(std::ostream& out, DiagnosticStyle style,
@@ -53,10 +48,6 @@ class DiagnosticPrinter {
   void print(const scene::DiagnosticList& list) const;
 
  private:
-  void printLocation(const std::string& file, const scene::SourceSpan& span) const;
-  void quote(const std::string& file, const scene::SourceSpan& span,
-             const scene::FixIt* fixIt) const;
-
   std::ostream& out_;
   DiagnosticStyle style_;
   const SourceExcerpts* sources_;
@@ -71,10 +62,7 @@ std::string hintText(const scene::Diagnostic& d);
 // The short form, uncoloured: for messages built outside a tool's run.
 void printDiagnostics(const scene::DiagnosticList& list, std::ostream& out);
 
-// JSON: file, severity, code, message, line, column, length, endLine and
-// endColumn (the column just past the span, as in SARIF and LSP), hint,
-// notes and fixIt.
-nlohmann::json diagnosticToJson(const scene::Diagnostic& d, bool warningsAsErrors = false);
+// The JSON form as a value, for a report that holds it (sfcheck's).
 nlohmann::json diagnosticsToJson(const scene::DiagnosticList& list, bool warningsAsErrors = false);
 
 }  // namespace tools

@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <stdio.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
@@ -14,9 +13,9 @@
 #include <cstring>
 #include <fstream>
 #include <system_error>
-#include <thread>
 #include <vector>
 
+#include "scenefile/read_file.h"
 #include "tools/common/output_location.h"
 
 namespace tools {
@@ -31,83 +30,12 @@ ToolFailure cannotWrite(const std::filesystem::path& path, std::string why) {
   return fileFailure(ExitCode::IoError, path.string(), std::move(why));
 }
 
-// Files from this size on have the later half of their buffer's pages
-// faulted in on a thread of their own while the reading fills the first.
-constexpr std::size_t kPrefaultFrom = std::size_t{16} << 20;
-
-// The whole pages of [begin, end) faulted in, ready to be written, on a
-// thread of its own, which the destructor waits for. A fresh page's first
-// touch costs more than the copy into it on these machines
-// (docs/history/PERFORMANCE.md, "Huge pages dropped"), and a read on one thread
-// paid every one: the 119 MB of a 1,000,000-object scene file took 70 ms
-// (docs/history/PERFORMANCE.md, "Big scenes: memory kept, and fewer passes").
-// MADV_POPULATE_WRITE (Linux 5.14) changes no byte that a program could
-// have written; where the system lacks it, or no thread starts, nothing
-// happens.
-class PrefaultedPages {
- public:
-  PrefaultedPages(const char* begin, const char* end) {
-#ifdef MADV_POPULATE_WRITE
-    constexpr std::uintptr_t kPage = 4096;
-    std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + kPage - 1) & ~(kPage - 1);
-    std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(kPage - 1);
-    if (to <= from) return;
-    try {
-      thread_ = std::thread(
-          [from, to] { ::madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE); });
-    } catch (const std::system_error&) {
-      // No thread: the reading faults the pages in itself.
-    }
-#else
-    (void)begin;
-    (void)end;
-#endif
-  }
-  ~PrefaultedPages() {
-    if (thread_.joinable()) thread_.join();
-  }
-  PrefaultedPages(const PrefaultedPages&) = delete;
-  PrefaultedPages& operator=(const PrefaultedPages&) = delete;
-
- private:
-  std::thread thread_;
-};
-
 }  // namespace
 
 Outcome<std::string> readWholeFile(const std::filesystem::path& path, std::uint64_t maxBytes) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return cannotRead(path, "it is a directory");
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return cannotRead(path, std::strerror(errno));
-  std::string content;
-  struct stat info {};
-  if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) {
-    content.reserve(static_cast<std::size_t>(
-        std::min<std::uint64_t>(static_cast<std::uint64_t>(info.st_size), maxBytes)));
-  }
-  std::optional<PrefaultedPages> laterHalf;
-  if (content.capacity() >= kPrefaultFrom) {
-    laterHalf.emplace(content.data() + content.capacity() / 2, content.data() + content.capacity());
-  }
-  char buffer[1 << 16];
-  for (;;) {
-    ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      int failure = errno;
-      ::close(fd);
-      return cannotRead(path, std::strerror(failure));
-    }
-    if (n == 0) break;
-    content.append(buffer, static_cast<std::size_t>(n));
-    if (content.size() > maxBytes) {
-      content.resize(static_cast<std::size_t>(maxBytes) + 1);
-      break;
-    }
-  }
-  ::close(fd);
-  return content;
+  scene::FileBytes file = scene::readFileBytes(path, maxBytes);
+  if (!file.bytes) return cannotRead(path, std::move(file.error));
+  return std::move(*file.bytes);
 }
 
 namespace {

@@ -3,10 +3,10 @@
 #pragma once
 
 #include <istream>
-#include <optional>
 #include <string>
 
 #include "scenefile/read.h"
+#include "scenefile/read_file.h"
 #include "tools/common/cli_forward.h"
 
 namespace tools {
@@ -15,19 +15,13 @@ namespace tools {
 // --max-vertices and --max-nodes, stored into `options`.
 void addReadLimitOptions(CLI::App& app, scene::ReadOptions& options);
 
-// An input file's bytes, read only when it is within options.maxFileSize.
-struct InputText {
-  std::optional<std::string> text;  // the bytes, when read and within the limit
-  std::string readError;            // why the file could not be read (exit 3)
-  scene::DiagnosticList refused;    // file-too-large (exit 1), else empty
+// An input's text read within the limits (scenefile/read_file.h):
+// readError is exit 3, file-too-large exit 1.
+using InputText = scene::SourceText;
 
-  bool tooLarge() const { return refused.hasErrors(); }
-};
-
-// A regular file over the limit is refused by its size, unread; anything
-// else (a pipe) is read up to one byte past the limit. The name "-" reads
-// `standardInput` (when given) the same way, and its diagnostics name it
-// "<stdin>".
+// The file `file` read as scene::readSourceFile reads it; the name "-" reads
+// `standardInput` (when given) as scene::readSourceStream does, and its
+// diagnostics name it "<stdin>".
 InputText readInputText(const std::string& file, const scene::ReadOptions& options,
                         std::istream* standardInput = nullptr);
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "tools/common/printable_text.h"
+#include "tools/common/diagnostic_printer.h"
 #include "tools/common/tool_streams.h"
 
 namespace tools {

@@ -6,7 +6,7 @@
 #include <system_error>
 
 #include "tools/common/output_location.h"
-#include "tools/common/printable_text.h"
+#include "tools/common/diagnostic_printer.h"
 #include "tools/common/tool_streams.h"
 
 namespace tools {

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "tools/common/printable_text.h"
 
 namespace tools {
 

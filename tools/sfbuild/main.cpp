@@ -265,7 +265,7 @@ tools::MaybeFailure openScene(const sfbuild::SfbuildOptions& o, const tools::Too
   tools::InputText text = tools::readInputText(o.input, o.read, &output.streams().in);
   tools::DiagnosticStyle style = output.diagnosticStyle(tools::DiagnosticFormat::Text);
   if (text.tooLarge()) {
-    tools::DiagnosticPrinter(output.err(), style).print(text.refused);
+    tools::DiagnosticPrinter(output.err(), style).print(text.diagnostics);
     return tools::toldFailure(tools::ExitCode::InvalidInput);
   }
   std::string shown = tools::inputDisplayName(o.input);

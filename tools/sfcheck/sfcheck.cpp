@@ -165,7 +165,7 @@ void Checker::check(const std::string& file) {
   stage_.set("reading " + printableText(shown));
   InputText input = readInputText(file, options_.read, &output_.streams().in);
   if (input.tooLarge()) {
-    report(shown, std::nullopt, input.refused, nullptr);
+    report(shown, std::nullopt, input.diagnostics, nullptr);
     return;
   }
   if (!input.text) {

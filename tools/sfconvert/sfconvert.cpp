@@ -184,7 +184,7 @@ MaybeFailure Converter::read(std::optional<scene::ReadResult>& parsed) {
   scene::ReadOptions readOptions = o_.read;
   InputText text = readInputText(o_.input, readOptions, &output_.streams().in);
   if (text.tooLarge()) {
-    print(text.refused);
+    print(text.diagnostics);
     return toldFailure(ExitCode::InvalidInput);
   }
   if (!text.text) {

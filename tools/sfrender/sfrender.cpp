@@ -217,7 +217,7 @@ MaybeFailure RenderJob::readScene() {
   InputText text = readInputText(o_.input, o_.read, &output_.streams().in);
   DiagnosticFormat format = DiagnosticFormat::Text;
   if (text.tooLarge()) {
-    DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format)).print(text.refused);
+    DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format)).print(text.diagnostics);
     return toldFailure(ExitCode::InvalidInput);
   }
   if (!text.text) {

@@ -1,6 +1,6 @@
-#include "tools/common/printable_text.h"
+#include "scenefile/printable_text.h"
 
-namespace tools {
+namespace scene {
 
 std::size_t utf8CharacterLength(std::string_view text) {
   if (text.empty()) return 0;
@@ -50,4 +50,4 @@ std::string printableText(std::string_view text) {
   return shown;
 }
 
-}  // namespace tools
+}  // namespace scene

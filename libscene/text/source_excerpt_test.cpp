@@ -1,26 +1,26 @@
 // The quoted source line under a diagnostic: the caret under the span's
 // bytes whatever stands before them, and long, binary and odd lines.
-#include "tools/common/source_excerpt.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-namespace tools {
+#include "libscene/text/source_quote.h"
+
+namespace scene {
 namespace {
 
 // The quote of `span` in `text`, as the printer shows it, or nothing.
-std::vector<std::string> quote(const std::string& text, scene::SourceSpan span,
-                               const scene::FixIt* fixIt = nullptr) {
-  scene::DiagnosticList list("f.sf");
-  scene::Diagnostic& d = list.error(scene::DiagnosticCode::InvalidNumber, span, "m");
+std::vector<std::string> quote(const std::string& text, SourceSpan span,
+                               const FixIt* fixIt = nullptr) {
+  DiagnosticList list("f.sf");
+  Diagnostic& d = list.error(DiagnosticCode::InvalidNumber, span, "m");
   if (fixIt) d.fixIt = *fixIt;
   SourceExcerpts excerpts;
   excerpts.capture("f.sf", text, list);
   const SourceLine* line = excerpts.find("f.sf", span);
   if (!line) return {};
-  return quoteSourceLine(*line, span, fixIt, TerminalStyle(false));
+  return quoteSourceLine(*line, span, fixIt, TerminalPaint(false));
 }
 
 TEST(SourceExcerpt, UnderlinesTheSpanOnItsLine) {
@@ -53,7 +53,7 @@ TEST(SourceExcerpt, LineEndsAndTheByteOrderMarkAreNotShown) {
 }
 
 TEST(SourceExcerpt, ShowsTheFixItUnderWhatItReplaces) {
-  scene::FixIt fix{{3, 3, 6}, "SPHERE"};
+  FixIt fix{{3, 3, 6}, "SPHERE"};
   EXPECT_EQ(quote("a\nb\n  sphere\n", {3, 3, 6}, &fix),
             (std::vector<std::string>{"    3 |   sphere", "      |   ^~~~~~", "      |   SPHERE"}));
 }
@@ -88,10 +88,10 @@ TEST(SourceExcerpt, BinaryLinesAndMissingLinesAreNotQuoted) {
 }
 
 TEST(SourceExcerpt, OnlyTheDiagnosticsOfTheNamedFileAreCaptured) {
-  scene::DiagnosticList list("main.pov");
-  list.error(scene::DiagnosticCode::PovSyntax, {1, 1, 1}, "here");
-  scene::DiagnosticList included("other.inc");
-  included.error(scene::DiagnosticCode::PovSyntax, {2, 1, 1}, "there");
+  DiagnosticList list("main.pov");
+  list.error(DiagnosticCode::PovSyntax, {1, 1, 1}, "here");
+  DiagnosticList included("other.inc");
+  included.error(DiagnosticCode::PovSyntax, {2, 1, 1}, "there");
   list.append(included);
   SourceExcerpts excerpts;
   excerpts.capture("main.pov", "x\ny\n", list);
@@ -100,4 +100,4 @@ TEST(SourceExcerpt, OnlyTheDiagnosticsOfTheNamedFileAreCaptured) {
 }
 
 }  // namespace
-}  // namespace tools
+}  // namespace scene

@@ -1,11 +1,13 @@
-#include "tools/common/source_excerpt.h"
+#include "scenefile/source_excerpt.h"
 
 #include <algorithm>
 #include <cstring>
+#include <vector>
 
-#include "tools/common/printable_text.h"
+#include "libscene/text/source_quote.h"
+#include "scenefile/printable_text.h"
 
-namespace tools {
+namespace scene {
 
 namespace {
 
@@ -27,7 +29,7 @@ struct WantedLine {
   std::uint32_t column;
 };
 
-void want(const scene::SourceSpan& span, std::vector<WantedLine>& wanted) {
+void want(const SourceSpan& span, std::vector<WantedLine>& wanted) {
   if (span.known()) wanted.push_back({span.line, span.column});
 }
 
@@ -121,12 +123,12 @@ std::size_t displayColumn(const ShownLine& shown, const SourceLine& line, std::u
 }  // namespace
 
 void SourceExcerpts::capture(std::string_view file, std::string_view text,
-                             const scene::DiagnosticList& list) {
+                             const DiagnosticList& list) {
   std::vector<WantedLine> wanted;
-  for (const scene::Diagnostic& d : list.items()) {
+  for (const Diagnostic& d : list.items()) {
     if (d.file != file) continue;  // a file it includes, say
     want(d.span, wanted);
-    for (const scene::DiagnosticNote& note : d.notes) want(note.span, wanted);
+    for (const DiagnosticNote& note : d.notes) want(note.span, wanted);
     if (d.fixIt) want(d.fixIt->span, wanted);
   }
   if (wanted.empty()) return;
@@ -158,7 +160,7 @@ void SourceExcerpts::capture(std::string_view file, std::string_view text,
     if (lines_.contains(key)) continue;
     // Whether it is text is judged on what would be quoted, not the whole
     // line: a hostile line of 100 MB costs a look at 160 bytes, not a pass
-    // over all of it (sfcheck on one: 1.68 -> 0.25 s, 22 -> 0.8 s under
+    // over all of it (a check of one: 1.68 -> 0.25 s, 22 -> 0.8 s under
     // the sanitizers).
     SourceLine line = excerpt(whole, w.column);
     if (looksBinary(line.text)) continue;
@@ -166,7 +168,7 @@ void SourceExcerpts::capture(std::string_view file, std::string_view text,
   }
 }
 
-const SourceLine* SourceExcerpts::find(std::string_view file, const scene::SourceSpan& span) const {
+const SourceLine* SourceExcerpts::find(std::string_view file, const SourceSpan& span) const {
   if (!span.known()) return nullptr;
   for (std::uint32_t column : {std::uint32_t{0}, span.column}) {
     auto found = lines_.find(Key{std::string(file), {span.line, column}});
@@ -175,8 +177,8 @@ const SourceLine* SourceExcerpts::find(std::string_view file, const scene::Sourc
   return nullptr;
 }
 
-std::vector<std::string> quoteSourceLine(const SourceLine& line, const scene::SourceSpan& span,
-                                         const scene::FixIt* fixIt, const TerminalStyle& style) {
+std::vector<std::string> quoteSourceLine(const SourceLine& line, const SourceSpan& span,
+                                         const FixIt* fixIt, const TerminalPaint& style) {
   ShownLine shown = show(line);
   std::string number = std::to_string(span.line);
   std::size_t gutter = std::max<std::size_t>(5, number.size() + 1);
@@ -197,4 +199,4 @@ std::vector<std::string> quoteSourceLine(const SourceLine& line, const scene::So
   return quoted;
 }
 
-}  // namespace tools
+}  // namespace scene

@@ -1,10 +1,10 @@
-#include "tools/common/printable_text.h"
+#include "scenefile/printable_text.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-namespace tools {
+namespace scene {
 namespace {
 
 TEST(PrintableText, EscapesControlBytesAndWhatIsNotUtf8) {
@@ -19,4 +19,4 @@ TEST(PrintableText, EscapesControlBytesAndWhatIsNotUtf8) {
 }
 
 }  // namespace
-}  // namespace tools
+}  // namespace scene
