@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "renderer/saturating.h"
 #include "scenefile/srgb.h"
 
 namespace render {
@@ -19,12 +18,6 @@ PixelRegion imageTile(int width, int height, int index, int count) {
   int y0 = index * base + std::min(index, taller);
   int y1 = y0 + base + (index < taller ? 1 : 0);
   return PixelRegion{0, y0, width, y1};
-}
-
-std::uint64_t Image::bytesFor(int width, int height, bool withCoverage) {
-  std::uint64_t pixels = saturatingProduct(static_cast<std::uint64_t>(width > 0 ? width : 0),
-                                           static_cast<std::uint64_t>(height > 0 ? height : 0));
-  return saturatingProduct(pixels, (kChannels + (withCoverage ? 1 : 0)) * sizeof(float));
 }
 
 void eightBitLevels(const float* values, std::size_t count, unsigned char* levels) {

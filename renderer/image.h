@@ -1,23 +1,18 @@
-// A rendered image: the region of the full image it holds, the tiles a
+// A rendered image (scenefile/render.h's RenderedImage), the tiles a
 // render hands out, and how its values become the levels of an integer image
 // or the linear values of a float one.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <glm/vec3.hpp>
 #include <vector>
+
+#include "scenefile/render.h"
 
 namespace render {
 
-// A rectangle of pixels of the full image, half-open: columns x0 to x1 - 1,
-// rows y0 to y1 - 1.
-struct PixelRegion {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  bool empty() const { return x1 <= x0 || y1 <= y0; }
-  int width() const { return empty() ? 0 : x1 - x0; }
-  int height() const { return empty() ? 0 : y1 - y0; }
-};
+// A rectangle of pixels of the full image (scenefile/render.h).
+using PixelRegion = scene::PixelRegion;
 
 // The side, in pixels, of the square tiles that a render hands out to its
 // threads (the last in a row or column cut at the region's edge).
@@ -30,37 +25,8 @@ inline constexpr int kRenderTileSize = 32;
 PixelRegion imageTile(int width, int height, int index, int count);
 
 // The colours RENDERING.md computes, row by row from the top, three floats
-// a pixel; and, when asked for, each pixel's coverage.
-struct Image {
-  /// Floats a pixel in `rgb`: red, green, blue.
-  static constexpr std::size_t kChannels = 3;
-
-  /// The pixels held: the region's size (RenderSettings::region).
-  int width = 0;
-  int height = 0;
-  /// Where the region's top-left pixel lies in the full image, and the full
-  /// image's size (its display window); 0, 0 and width x height for a full
-  /// render.
-  int originX = 0, originY = 0, fullWidth = 0, fullHeight = 0;
-  std::vector<float> rgb;
-  /// With RenderSettings::coverage, one float a pixel: the fraction of its
-  /// samples whose camera ray meets an object (0 where only the background
-  /// shows, 1 where every sample hits; with adaptive sampling, of the samples
-  /// the pixel's colour is the mean of); empty otherwise. The background is
-  /// black, so `rgb` is already that coverage times the mean colour of the
-  /// samples that hit: premultiplied.
-  std::vector<float> coverage;
-  /// Pixel (x, y) of those held: (originX + x, originY + y) of the full image.
-  glm::vec3 pixel(int x, int y) const {
-    const float* p = &rgb[kChannels * (static_cast<std::size_t>(y) * width + x)];
-    return {p[0], p[1], p[2]};
-  }
-
-  /// The bytes of `rgb`, and of `coverage` when `withCoverage`, for an
-  /// image of `width` x `height` pixels, as renderImage allocates them; a
-  /// side below 1 counts as 0. Saturates.
-  static std::uint64_t bytesFor(int width, int height, bool withCoverage = false);
-};
+// a pixel: the public image (scenefile/render.h).
+using Image = scene::RenderedImage;
 
 // The 8-bit level of a display value: round(clamp(v, 0, 1) * 255), halves
 // up, not a number giving 0. The product is rounded in float, as every

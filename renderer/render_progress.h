@@ -3,13 +3,13 @@
 #pragma once
 
 #include <atomic>
-#include <exception>
-#include <functional>
+
+#include "scenefile/render.h"
 
 namespace render {
 
 // Called after each finished tile with the tiles done and the total.
-using ProgressCallback = std::function<void(int done, int total)>;
+using ProgressCallback = scene::RenderProgress;
 
 // Asks a render to stop before it is done: set from any thread, or from a
 // signal handler (the atomic is lock-free), and read by the render before
@@ -25,11 +25,7 @@ class CancelFlag {
   std::atomic<bool> requested_{false};
 };
 
-// What renderImage throws when its CancelFlag is set: there is no image,
-// since a part of one would look finished where it is not.
-class RenderCancelled : public std::exception {
- public:
-  const char* what() const noexcept override { return "the render was cancelled"; }
-};
+// What renderImage throws when its CancelFlag is set (scenefile/render.h).
+using RenderCancelled = scene::RenderCancelled;
 
 }  // namespace render

@@ -11,24 +11,12 @@ namespace render {
 
 class GpuDevice;
 
-// Where renderImage traces (docs/RENDERING.md, "The GPU path").
-enum class RenderDevice {
-  Cpu,
-  // A Vulkan device with shaderFloat64 and shaderInt64 (lavapipe, a CPU
-  // implementation, counts too): the same picture to within rounding.
-  Gpu,
-  // The GPU when a real one (not a CPU implementation) is present, the
-  // render uniform, and it has at least kAutoGpuMinSamplesPerThread camera
-  // samples for each thread the CPU would render with; the CPU otherwise.
-  Auto,
-};
+// Where renderImage traces (scenefile/render.h).
+using RenderDevice = scene::RenderDevice;
 
-struct RenderSettings {
-  int width = 640;
-  int height = 480;
-  double verticalFovDegrees = 60.0;
-  int samplesPerPixel = 1;
-  int maxDepth = 5;
+// What a render is asked for: what a user chooses (scenefile/render.h's
+// RenderSettings, the base) and what only this tree's programs set.
+struct RenderSettings : scene::RenderSettings {
   // The most adaptive depth control may lower a channel of a sample (and so
   // of a pixel) by leaving out reflected and refracted rays: half a level of
   // an 8-bit image. A pixel whose level that could change is traced again
@@ -46,8 +34,6 @@ struct RenderSettings {
   // (levelOf): what retracing keeps to the level of full tracing (255 for 8
   // bits, 65535 for 16, with pruneTolerance half of one of its levels).
   double levels = 255.0;
-  // Whether the image gets Image::coverage, for an image with alpha.
-  bool coverage = false;
   // Whether camera rays find their hits as packets (RenderScene::closestHits,
   // docs/TRACING.md, "Packets"): the same image, bit for bit, either way;
   // false traces each alone, for the tests and benchmarks that compare.
@@ -56,24 +42,6 @@ struct RenderSettings {
   // (RenderScene::closestHitsFromEye, docs/TRACING.md, "Direction
   // grids") where it can answer: the same image, bit for bit, either way.
   bool eyeGrid = true;
-  int threads = 0;  // 0: every core
-  std::uint64_t seed = 0;
-  // Adaptive anti-aliasing (docs/RENDERING.md, "Adaptive sampling"): 0
-  // samples every pixel samplesPerPixel times. Above 0, every pixel corner
-  // is sampled, a pixel whose four corners agree is their mean, and a square
-  // whose corners differ by more than this (in some channel, in the image's
-  // units 0..1) or show different objects is cut in four, down to
-  // subdivisionDepth(samplesPerPixel) cuts.
-  double adaptiveThreshold = 0.0;
-  // The part of the width x height image to render; empty: all of it. Its
-  // pixels are exactly those of the full image's render (a region reaching
-  // outside the image is cut to it).
-  PixelRegion region;
-  // On the GPU, adaptive anti-aliasing is refused, threads only pack the
-  // scene for the upload, and the adaptive depth control's settings
-  // (pruneTolerance, maxRaysPerSample) are not used: every branch is traced
-  // to maxDepth.
-  RenderDevice device = RenderDevice::Cpu;
   // The device GPU renders go through, kept open by the caller for as long
   // as renders use it; null: each GPU render opens a device of its own.
   // Auto with one given asks no probe: it takes it where it is a real GPU.

@@ -3,6 +3,6 @@
 set(renderer_cpu_sources)
 foreach(name bvh direction_grid adaptive_sampling camera cpu_render default_scene device image
         material_maxima radiance_bound render render_memory render_scene render_settings tracer
-        unit_shapes)
+        scene_render unit_shapes)
   list(APPEND renderer_cpu_sources ${CMAKE_CURRENT_LIST_DIR}/${name}.cpp)
 endforeach()

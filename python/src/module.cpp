@@ -22,6 +22,7 @@
 #include "scenefile/mesh.h"
 #include "scenefile/mesh_fit.h"
 #include "scenefile/read.h"
+#include "scenefile/render.h"
 #include "scenefile/spelling.h"
 #include "scenefile/transform.h"
 #include "scenefile/validation.h"
@@ -320,7 +321,7 @@ std::string hintText(const std::string& hint, const std::vector<std::string>& wo
 
 py::array_t<float> render(const py::handle& data, int width, int height, int spp, int depth,
                           double fov, int threads, std::uint64_t seed) {
-  render::RenderSettings settings;
+  scene::RenderSettings settings;
   settings.width = width;
   settings.height = height;
   settings.samplesPerPixel = spp;
@@ -328,7 +329,7 @@ py::array_t<float> render(const py::handle& data, int width, int height, int spp
   settings.verticalFovDegrees = fov;
   settings.threads = threads;
   settings.seed = seed;
-  return renderScene(sceneFromData(data), settings);
+  return renderToArray(sceneFromData(data), settings);
 }
 
 }  // namespace

@@ -5,11 +5,11 @@
 #include <exception>
 #include <mutex>
 #include <optional>
+#include <stop_token>
 #include <thread>
 #include <vector>
 
 #include "renderer/render_memory.h"
-#include "renderer/render_scene.h"
 
 namespace scenefile_python {
 
@@ -20,7 +20,7 @@ namespace {
 constexpr std::chrono::milliseconds kSignalPoll{50};
 
 // The image's floats, handed to numpy without a copy: the array owns them.
-py::array_t<float> toArray(render::Image&& image) {
+py::array_t<float> toArray(scene::RenderedImage&& image) {
   auto* rgb = new std::vector<float>(std::move(image.rgb));
   py::capsule owner(rgb, [](void* p) { delete static_cast<std::vector<float>*>(p); });
   std::vector<py::ssize_t> shape = {image.height, image.width, 3};
@@ -29,9 +29,10 @@ py::array_t<float> toArray(render::Image&& image) {
 
 // Runs `work` on a thread of its own and waits for it without the GIL,
 // taking the GIL every kSignalPoll to run Python's signal handlers; when one
-// raises, `cancel` is set and, once `work` is done, the exception goes on.
+// raises, a stop is requested of `stop` and, once `work` is done, the
+// exception goes on.
 template <typename Work>
-void runInterruptibly(Work&& work, render::CancelFlag& cancel) {
+void runInterruptibly(Work&& work, std::stop_source& stop) {
   std::mutex mutex;
   std::condition_variable finished;
   bool done = false;
@@ -53,7 +54,7 @@ void runInterruptibly(Work&& work, render::CancelFlag& cancel) {
         // Only the main thread runs handlers; elsewhere this returns 0.
         if (PyErr_CheckSignals() != 0) interrupted = true;
       }
-      if (interrupted) cancel.request();
+      if (interrupted) stop.request_stop();
       lock.lock();
     }
     lock.unlock();
@@ -65,7 +66,7 @@ void runInterruptibly(Work&& work, render::CancelFlag& cancel) {
 
 }  // namespace
 
-py::array_t<float> renderScene(const scene::Scene& scene, const render::RenderSettings& settings) {
+py::array_t<float> renderToArray(const scene::Scene& scene, const scene::RenderSettings& settings) {
   render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
       scene.objects.size(), scene.lights.size(), settings.width, settings.height);
   if (std::optional<std::string> refusal =
@@ -73,19 +74,18 @@ py::array_t<float> renderScene(const scene::Scene& scene, const render::RenderSe
     PyErr_SetString(PyExc_MemoryError, refusal->c_str());
     throw py::error_already_set();
   }
-  render::CancelFlag cancel;
-  std::optional<render::Image> image;
+  std::stop_source stop;
+  std::optional<scene::RenderedImage> image;
   std::exception_ptr failure;
   runInterruptibly(
       [&] {
         try {
-          render::RenderScene compiled(scene);
-          image = render::renderImage(compiled, settings, nullptr, {}, &cancel);
+          image = scene::renderScene(scene, settings, {{}, stop.get_token()});
         } catch (...) {
           failure = std::current_exception();
         }
       },
-      cancel);
+      stop);
   // std::bad_alloc becomes MemoryError, std::system_error (threads that
   // cannot start) RuntimeError.
   if (failure) std::rethrow_exception(failure);
