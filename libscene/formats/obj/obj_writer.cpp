@@ -52,8 +52,14 @@ void reportLosses(const Scene& scene, Severity severity, DiagnosticList& out) {
 // One object's group: its comment, `o`, `usemtl`, its vertices in world
 // space, its normals for a smooth shape, and its triangles turning
 // counter-clockwise seen from outside (reversed under a mirroring matrix).
-// `base` is the number of vertices written before it.
-bool appendObject(std::string& obj, const ObjectComment& c, std::size_t index, std::size_t& base,
+// `written` counts the vertices and the normals written before it: OBJ
+// numbers each kind on its own.
+struct Written {
+  std::size_t vertices = 0;
+  std::size_t normals = 0;
+};
+
+bool appendObject(std::string& obj, const ObjectComment& c, std::size_t index, Written& written,
                   bool material, DiagnosticList& out) {
   const Object& object = c.object;
   TriangleMesh mesh = primitiveMesh(object.kind, c.segments, c.planeHalfSize);
@@ -87,12 +93,14 @@ bool appendObject(std::string& obj, const ObjectComment& c, std::size_t index, s
     text += 'f';
     for (int k = 0; k < 3; ++k) {
       std::size_t corner = mesh.indices[t + (mirrored ? 2 - k : k)];
-      std::string v = std::to_string(base + corner + 1);
-      text += ' ' + (normals ? v + "//" + v : v);
+      std::string v = std::to_string(written.vertices + corner + 1);
+      std::string n = std::to_string(written.normals + corner + 1);
+      text += ' ' + (normals ? v + "//" + n : v);
     }
     text += '\n';
   }
-  base += mesh.positions.size();
+  written.vertices += mesh.positions.size();
+  if (normals) written.normals += mesh.normals.size();
   obj += text;
   return true;
 }
@@ -121,10 +129,10 @@ std::optional<ConvertedFiles> writeObj(const Scene& scene, const ConversionOptio
       "' comments carry the exact scene, camera and lights included, for reading back.\n";
   if (!library.empty()) obj += "mtllib " + library + "\n";
   obj += sceneComments(scene);
-  std::size_t base = 0;
+  Written written;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     ObjectComment c{scene.objects[i], segments, planeSize};
-    if (!appendObject(obj, c, i, base, !library.empty(), out)) return std::nullopt;
+    if (!appendObject(obj, c, i, written, !library.empty(), out)) return std::nullopt;
     if (!library.empty()) {
       files.sidecar +=
           mtlBlock(objGroupName(scene.objects[i], i), mtlOf(scene.objects[i].material));

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <sstream>
 #include <string>
 
 #include "libscene/formats/obj/obj_mtl.h"
@@ -66,6 +69,31 @@ TEST(ObjWriter, VerticesAreInWorldSpaceAndTheMtlIsTheSidecar) {
   EXPECT_EQ(files->main.find("mtllib"), std::string::npos);
   EXPECT_EQ(files->main.find("usemtl"), std::string::npos);
   EXPECT_TRUE(files->sidecar.empty());
+}
+
+// OBJ numbers the vertices and the normals each on their own: a box writes
+// no normals, so the sphere after it counts its normals from 1.
+TEST(ObjWriter, FacesNameNormalsByTheirOwnNumbers) {
+  std::string text(kScene);
+  text += "\nSPHERE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+  DiagnosticList out;
+  std::string obj = writeObj(read(text), {}, out)->main;
+  std::size_t normals = 0, vertices = 0, largest = 0, smallest = SIZE_MAX;
+  std::istringstream lines(obj);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("vn ")) ++normals;
+    if (line.starts_with("v ")) ++vertices;
+    for (std::size_t at = line.find("//"); line.starts_with("f ") && at != std::string::npos;
+         at = line.find("//", at + 2)) {
+      std::size_t n = std::stoul(line.substr(at + 2));
+      largest = std::max(largest, n);
+      smallest = std::min(smallest, n);
+    }
+  }
+  EXPECT_GT(normals, 0u);
+  EXPECT_EQ(smallest, 1u);
+  EXPECT_EQ(largest, normals);
+  EXPECT_GT(vertices, normals);
 }
 
 TEST(ObjWriter, IllumSaysPlainReflectiveOrGlass) {
