@@ -2,14 +2,13 @@
 # f3d, a second glTF viewer: renders sfconvert's export of each scene and
 # prints its mean brightness beside sfrender's, as the Blender check does
 # (docs/GLTF.md, "Lights"). A measurement, not a test: f3d 1.3.1 (VTK 9.1)
-# gives a point light no falloff and takes its intensity as a plain factor
-# (docs/GLTF.md says what that does to the figures).
+# gives a point light no falloff and takes its intensity as a plain factor,
+# which the export's --light-falloff none writes (docs/GLTF_VIEWERS.md).
 #
 # f3d_brightness.sh SFCONVERT SFRENDER WORKDIR WIDTH HEIGHT SCENE...
 # (a SCENE written "default=FILE.txt" as for blender_brightness_check.py)
-# Exits 77 when f3d or xvfb-run is missing: install-deps.sh installs
-# xvfb-run, but not f3d (`apt-get install f3d`), whose VTK and OpenCASCADE
-# would cost every CI run their download for a measurement no test makes. f3d needs an OpenGL context: Xvfb and Mesa's software rasteriser.
+# Exits 77 when f3d or xvfb-run is missing (scripts/install-deps.sh installs
+# both). f3d needs an OpenGL context: Xvfb and Mesa's software rasteriser.
 set -euo pipefail
 sfconvert=$1 sfrender=$2 work=$3 width=$4 height=$5
 shift 5
@@ -41,7 +40,8 @@ for spec in "$@"; do
     "$sfrender" "$source" -o "$work/$name.sfrender.ppm" --width "$width" --height "$height" \
       --fov 60 --quiet
   fi
-  "$sfconvert" "$source" "$work/$name.glb" --width "$width" --height "$height" --fov 60 2>/dev/null
+  "$sfconvert" "$source" "$work/$name.glb" --width "$width" --height "$height" --fov 60 \
+    --light-falloff none 2>/dev/null
   # The file's camera and lights alone, on black, as sfrender draws.
   xvfb-run -a -s "-screen 0 1024x768x24" f3d "$work/$name.glb" --output "$work/$name.f3d.png" \
     --resolution "$width,$height" --camera-index 0 --bg-color 0,0,0 --quiet
