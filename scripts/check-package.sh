@@ -12,7 +12,10 @@
 #    pkg-config (PKG_CONFIG_PATH), shared and --static;
 # 3. runs each on a scene file, a glTF file and a POV-Ray file ("N objects,
 #    M lights", exit 0) and on an invalid file (FILE:LINE:COLUMN: lines,
-#    exit 1), and once with no file (exit 2);
+#    exit 1), and once with no file (exit 2); builds examples/render-to-png
+#    with find_package and libpng, whose PNG of a scene must decode to the
+#    pixels of sfrender's, and which prints an invalid file's diagnostics
+#    with the source quoted (exit 1) and a missing file as exit 3;
 # 4. where the build has the Python module: imports the installed package
 #    with the build's python (Debian's /usr/bin/python3) from the prefix's
 #    Python folder (PYTHONPATH) and reads and renders a scene; installs the
@@ -197,6 +200,44 @@ else
   cat "$work/pc-static.log" >&2
 fi
 
+# render-to-png: reading by path, the diagnostics' text form and a render
+# through the installed package; its PNG decodes to sfrender's pixels.
+example=$root/examples/render-to-png
+sphere=$root/examples/red-sphere.sf
+step "render-to-png, find_package(scenefile) and libpng"
+if cmake -S "$example" -B "$work/render-to-png" "${cmake_args[@]}" "-DCMAKE_PREFIX_PATH=$prefix" \
+     >"$work/render-to-png.log" 2>&1 &&
+   cmake --build "$work/render-to-png" >>"$work/render-to-png.log" 2>&1; then
+  program=$work/render-to-png/render-to-png
+  status=0
+  "$program" "$sphere" "$work/example.png" 64 48 2>"$work/example.err" || status=$?
+  "$prefix/bin/sfrender" "$sphere" -o "$work/sfrender.png" --width 64 --height 48 --quiet ||
+    fail "sfrender could not render $sphere"
+  if [[ $status -ne 0 ]]; then
+    fail "render-to-png: exit $status, $(cat "$work/example.err")"
+  elif [[ $(pngtopnm "$work/example.png" | sed -n 2p) != "64 48" ]]; then
+    fail "render-to-png wrote no 64x48 PNG"
+  elif ! cmp -s <(pngtopnm "$work/example.png") <(pngtopnm "$work/sfrender.png"); then
+    fail "render-to-png's pixels are not sfrender's"
+  else
+    echo "render-to-png: a 64x48 PNG, the pixels of sfrender's; $(tr '\r' '\n' <"$work/example.err" | tail -n 1)"
+  fi
+  status=0
+  "$program" "$invalid" "$work/invalid.png" 2>"$work/invalid.err" || status=$?
+  if [[ $status -ne 1 || -e $work/invalid.png ]] || ! grep -q ' | ' "$work/invalid.err" ||
+     ! grep -qE "^$invalid:[0-9]+:[0-9]+: error: .* \[[a-z-]+\]$" "$work/invalid.err"; then
+    fail "render-to-png on an invalid file: exit $status, $(cat "$work/invalid.err")"
+  fi
+  status=0
+  "$program" "$work/no-such.sf" "$work/none.png" 2>"$work/missing.err" || status=$?
+  [[ $status -eq 3 ]] || fail "render-to-png on a missing file: exit $status, not 3"
+else
+  fail "building render-to-png with find_package"
+  cat "$work/render-to-png.log" >&2
+fi
+nm -DC "$prefix/$libdir/libscenefile.so" >"$work/symbols"
+grep -q ' T scene::renderScene(' "$work/symbols" || fail "libscenefile.so has no scene::renderScene"
+
 # --- 4. The Python module and the Blender add-on ------------------------------
 python=$(cache_value SCENEFILE_PYTHON_EXECUTABLE)
 pydir=$(cache_value SCENEFILE_PYTHON_INSTALL_DIR)
@@ -314,4 +355,4 @@ if ((failures > 0)); then
   echo "FAIL: $failures checks of the installed package" >&2
   exit 1
 fi
-echo "PASS: the installed package builds and runs count-objects four ways, a moved prefix renders a PNG${python:+, and the Python package and the Blender add-on work from it}"
+echo "PASS: the installed package builds and runs count-objects four ways and render-to-png, a moved prefix renders a PNG${python:+, and the Python package and the Blender add-on work from it}"
