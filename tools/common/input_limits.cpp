@@ -19,8 +19,9 @@ void addReadLimitOptions(CLI::App& app, scene::ReadOptions& options) {
                  "stop reading at the first object or light past this many")
       ->transform(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
   app.add_option("--max-vertices", options.gltf.maxVertices,
-                 "glTF: refuse a file with more mesh vertices than this")
-      ->transform(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
+                 "glTF and OBJ: refuse a file with more mesh vertices than this")
+      ->transform(wholeNumberIn(1, std::numeric_limits<std::int64_t>::max()))
+      ->each([&options](const std::string& n) { options.obj.maxVertices = std::stoull(n); });
   app.add_option("--max-nodes", options.gltf.maxNodes,
                  "glTF: refuse a file with more nodes and other objects than this (a material "
                  "counts 5, a camera or a light 2)")
