@@ -123,7 +123,7 @@ def test_the_format_comes_from_the_extension_or_is_named(tmp_path):
     scenefile.write(scene, tmp_path / "scene.dat", format="sf")
     assert scenefile.read(tmp_path / "scene.dat") == scene
     names = [row["name"] for row in scenefile.formats()]
-    assert names == ["sf", "instructions", "gltf", "glb", "pov"]
+    assert names == ["sf", "instructions", "gltf", "glb", "pov", "obj"]
     for row in scenefile.formats():
         path = tmp_path / ("every" + row["extensions"][0])
         scenefile.write(scene, path)
