@@ -194,7 +194,8 @@ TEST(DiagnosticCodes, TheDocsCiteOnlyCurrentNames) {
 
 // Every code a file can draw from a check appears in the expected
 // diagnostics of the corpus; the conversion codes are pinned by
-// writers_test.cpp, gltf_writer_test.cpp and obj_writer_test.cpp, which a
+// writers_test.cpp, gltf_writer_test.cpp, gltf_lights_test.cpp and
+// obj_writer_test.cpp, which a
 // check never reports,
 // and cannot-read-file by read_file_test.cpp (the tools print it as a file
 // error, without the code).
@@ -205,8 +206,8 @@ TEST(DiagnosticCodes, EveryCheckCodeIsExercisedByTheCorpus) {
       DiagnosticCode::CameraRollApproximated, DiagnosticCode::DroppedOutputFile,
       DiagnosticCode::IgnoredLightMatrix,     DiagnosticCode::PlaneMadeFinite,
       DiagnosticCode::GltfValueClamped,       DiagnosticCode::GltfExtrasOnly,
-      DiagnosticCode::GltfMatrixSplit,        DiagnosticCode::CannotReadFile,
-      DiagnosticCode::ObjWriteLoss};
+      DiagnosticCode::GltfMatrixSplit,        DiagnosticCode::GltfLightLeftOut,
+      DiagnosticCode::CannotReadFile,         DiagnosticCode::ObjWriteLoss};
   std::string expected;
   for (const auto& entry :
        std::filesystem::recursive_directory_iterator(std::filesystem::path(SCENE_TESTDATA_DIR))) {
