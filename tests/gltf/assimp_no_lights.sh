@@ -17,6 +17,8 @@ field() { sed -n "s/^$1: *//p" "$2" | head -n 1; }
 "$sfconvert" "$source" "$work/dark.glb" --no-lights 2>"$work/dark.stderr"
 grep -q "LIGHT 1 .* is left out of the glTF, as --no-lights asks \[gltf-light-left-out\]" \
   "$work/dark.stderr" || { cat "$work/dark.stderr"; echo "no loss warning for LIGHT 1"; exit 1; }
+grep -q "wrote .*dark.glb (a binary glTF 2.0 file, 6 objects, 0 lights)" "$work/dark.stderr" || {
+  cat "$work/dark.stderr"; echo "sfconvert does not say the file holds no light"; exit 1; }
 assimp info "$work/dark.glb" >"$work/dark.info" 2>&1 || {
   cat "$work/dark.info"; echo "assimp info failed on the --no-lights export"; exit 1; }
 meshes=$(field "Meshes" "$work/dark.info") lights=$(field "Lights" "$work/dark.info")

@@ -230,8 +230,11 @@ scene::ConversionOptions Converter::conversionOptions() const {
 }
 
 MaybeFailure Converter::write(const scene::ConvertedFiles& converted, const scene::Scene& scene) {
-  std::string what =
-      std::string(scene::formatInfo(plan_.format).singular) + ", " + sceneContents(scene);
+  // What the file holds: a glTF written with --no-lights has no light.
+  bool gltf = plan_.format == scene::Format::Gltf || plan_.format == scene::Format::Glb;
+  std::size_t lights = gltf && o_.noLights ? 0 : scene.lights.size();
+  std::string what = std::string(scene::formatInfo(plan_.format).singular) + ", " +
+                     countOf(scene.objects.size(), "object") + ", " + countOf(lights, "light");
   if (plan_.toStdout) {
     stage_.set("writing to standard output");
     output_.streams().out << converted.main;
