@@ -218,60 +218,6 @@ MeshAccessors addMesh(BufferBuilder& buffer, const TriangleMesh& mesh) {
   return out;
 }
 
-struct Bounds {
-  glm::dvec3 lo{std::numeric_limits<double>::infinity()};
-  glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
-  void add(const glm::dvec3& p) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return;
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  bool empty() const { return lo.x > hi.x; }
-};
-
-// Everything the scene holds but its planes: the camera's eye, the lights,
-// the corners of each object's box, and each plane's origin.
-Bounds sceneBounds(const Scene& scene) {
-  Bounds b;
-  b.add(glm::dvec3(scene.camera.matrix[3]));
-  for (const Light& light : scene.lights) b.add(light.position());
-  for (const Object& object : scene.objects) {
-    if (object.kind == ObjectKind::Plane) {
-      b.add(glm::dvec3(object.matrix[3]));
-      continue;
-    }
-    for (int corner = 0; corner < 8; ++corner) {
-      glm::dvec4 p((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, (corner & 4) ? 1.0 : -1.0,
-                   1.0);
-      b.add(glm::dvec3(object.matrix * p));
-    }
-  }
-  return b;
-}
-
-// The half-size of the square that stands for every plane: twice the
-// farthest corner of the scene's bounds from each plane's origin, in the
-// plane's own x and z, rounded up to a power of two (at least 1).
-float planeHalfSize(const Scene& scene) {
-  Bounds b = sceneBounds(scene);
-  double reach = 1.0;
-  for (const Object& object : scene.objects) {
-    if (object.kind != ObjectKind::Plane || b.empty()) continue;
-    glm::dmat4 inverse = glm::inverse(object.matrix);
-    for (int corner = 0; corner < 8; ++corner) {
-      glm::dvec4 p((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
-                   (corner & 4) ? b.hi.z : b.lo.z, 1.0);
-      glm::dvec4 local = inverse * p;
-      double r = std::max(std::abs(local.x), std::abs(local.z));
-      if (std::isfinite(r)) reach = std::max(reach, r);
-    }
-  }
-  constexpr double kLargest = 1e30;
-  double size = std::exp2(std::ceil(std::log2(2.0 * reach)));
-  if (!std::isfinite(size) || size > kLargest) size = kLargest;
-  return static_cast<float>(size);
-}
-
 // A material's identity for sharing: the exact bits of every value.
 std::vector<std::uint64_t> materialKey(const Material& m, bool doubleSided) {
   std::vector<std::uint64_t> key;
@@ -379,7 +325,8 @@ std::vector<LightPlan> planLights(const Scene& scene, const gltf::ReferencePoint
   plans.reserve(scene.lights.size());
   for (const Light& light : scene.lights) {
     if (falloff == GltfLightFalloff::None) {
-      plans.push_back({std::nullopt, gltf::unscaledPointLightFromColour(light.colour)});
+      plans.push_back(
+          {std::nullopt, gltf::withinFloats(gltf::unscaledPointLightFromColour(light.colour))});
       continue;
     }
     double distance = gltf::referenceDistance(light.position(), reference);
@@ -401,9 +348,19 @@ void reportLightLosses(const Scene& scene, Severity lossSeverity,
       continue;
     }
     const LightPlan& plan = plans[i];
-    if (!plan.distance) continue;
     reportBeyondFloat(gltf::lightNodeMatrix(scene.lights[i].matrix), label, scene.lights[i].span,
                       lossSeverity, out);
+    if (!plan.distance) {
+      if (plan.point.clamped) {
+        out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
+                   "the intensity of " + label +
+                       " is beyond single precision, where glTF readers hold it: it is clamped "
+                       "to " +
+                       gltf::approximateNumber(plan.point.intensity))
+            .hint = "the exact colour rides in extras";
+      }
+      continue;
+    }
     if (plan.point.clamped) {
       out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
                  "the intensity that matches " + label + " at its reference distance " +
@@ -661,7 +618,7 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
                                    bool binary, DiagnosticList& out) {
   const GltfWriteOptions& options = conversion.gltf;
   std::size_t errorsBefore = out.errorCount();
-  float planeSize = planeHalfSize(scene);
+  float planeSize = scenePlaneHalfSize(scene);
   gltf::ReferencePoint reference = gltf::referencePoint(scene);
   std::vector<LightPlan> lights;
   if (options.lights) lights = planLights(scene, reference, options.lightFalloff);
