@@ -51,12 +51,16 @@ PointLight pointLightFromColour(const glm::dvec3& colour, double distance) {
   }
   double lux = srgbToLinear(kReferenceSurface * peak) / kReferenceSurface * kLuxPerUnit;
   light.intensity = lux * distance * distance;
+  return withinFloats(light);
+}
+
+PointLight withinFloats(PointLight light) {
   // Readers hold the intensity as a float: one beyond (or a positive one
   // below) the floats would become infinite (or black) there.
   if (!(light.intensity <= kLargestIntensity)) {
     light.intensity = kLargestIntensity;
     light.clamped = true;
-  } else if (light.intensity < kSmallestIntensity) {
+  } else if (light.intensity > 0.0 && light.intensity < kSmallestIntensity) {
     light.intensity = kSmallestIntensity;
     light.clamped = true;
   }

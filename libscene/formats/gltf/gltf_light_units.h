@@ -49,6 +49,9 @@ inline constexpr double kSmallestIntensity = std::numeric_limits<float>::min();
 // (above 0): intensity = the largest channel's lux times distance^2, colour
 // the channels over the largest. Black is colour 1 1 1, intensity 0.
 PointLight pointLightFromColour(const glm::dvec3& colour, double distance);
+// The light with its intensity clamped to the floats' range (marked
+// `clamped`), where glTF readers hold it.
+PointLight withinFloats(PointLight light);
 // The scene light colour of a point light matched at `distance` (above 0);
 // not finite when the light is too strong for a double there.
 glm::dvec3 colourFromPointLight(const PointLight& light, double distance);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
@@ -239,6 +240,15 @@ TEST(GltfLights, WithoutFalloffTheIntensityIsTheColoursLargestChannel) {
   EXPECT_EQ(back.scene.lights[0].colour, scene.lights[0].colour);
   EXPECT_EQ(back.scene.lights[1].colour, scene.lights[1].colour);
   EXPECT_TRUE(withCode(back.diagnostics, DiagnosticCode::GltfExtrasStale).empty());
+  // A light beyond the floats is clamped there, with a warning.
+  scene.lights[1].colour = glm::dvec3(1e300);
+  DiagnosticList out;
+  std::optional<GltfFiles> files = writeGltf(scene, testing::conversionWith(options), false, out);
+  ASSERT_TRUE(files.has_value());
+  Json clamped = Json::parse(files->main);
+  EXPECT_EQ(lightOf(clamped, 1)["intensity"].get<double>(),
+            static_cast<double>(std::numeric_limits<float>::max()));
+  EXPECT_EQ(withCode(out, DiagnosticCode::GltfValueClamped).size(), 1u);
 }
 
 }  // namespace
