@@ -325,7 +325,8 @@ std::vector<LightPlan> planLights(const Scene& scene, const gltf::ReferencePoint
   plans.reserve(scene.lights.size());
   for (const Light& light : scene.lights) {
     if (falloff == GltfLightFalloff::None) {
-      plans.push_back({std::nullopt, gltf::unscaledPointLightFromColour(light.colour)});
+      plans.push_back(
+          {std::nullopt, gltf::withinFloats(gltf::unscaledPointLightFromColour(light.colour))});
       continue;
     }
     double distance = gltf::referenceDistance(light.position(), reference);
@@ -347,9 +348,19 @@ void reportLightLosses(const Scene& scene, Severity lossSeverity,
       continue;
     }
     const LightPlan& plan = plans[i];
-    if (!plan.distance) continue;
     reportBeyondFloat(gltf::lightNodeMatrix(scene.lights[i].matrix), label, scene.lights[i].span,
                       lossSeverity, out);
+    if (!plan.distance) {
+      if (plan.point.clamped) {
+        out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
+                   "the intensity of " + label +
+                       " is beyond single precision, where glTF readers hold it: it is clamped "
+                       "to " +
+                       gltf::approximateNumber(plan.point.intensity))
+            .hint = "the exact colour rides in extras";
+      }
+      continue;
+    }
     if (plan.point.clamped) {
       out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
                  "the intensity that matches " + label + " at its reference distance " +
