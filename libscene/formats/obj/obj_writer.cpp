@@ -38,14 +38,14 @@ void reportLosses(const Scene& scene, Severity severity, DiagnosticList& out) {
   out.report(severity, DiagnosticCode::ObjWriteLoss, scene.camera.span,
              "CAMERA is not written as OBJ: the format has no camera")
       .hint =
-      "other programs show the meshes from a camera of their own; sfconvert reads the "
+      "other programs show the meshes from a camera of their own; the OBJ reader reads the "
       "camera back from the file's comments";
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     out.report(severity, DiagnosticCode::ObjWriteLoss, scene.lights[i].span,
                "LIGHT " + std::to_string(i + 1) +
                    " is not written as OBJ: the format has no "
                    "lights")
-        .hint = "sfconvert reads the lights back from the file's comments";
+        .hint = "the OBJ reader reads the lights back from the file's comments";
   }
 }
 
