@@ -71,7 +71,7 @@ scene::Scene defaultScene() {
                                  {scale(0.5, 0.75, 0.5), translate(-0.6, 0.75, -1.6)});
 
   s.objects = {floor, mirror, glass, ball, box, can};
-  s.outputFile = "default-scene.ppm";
+  s.outputFile = "default-scene.png";
   return s;
 }
 
