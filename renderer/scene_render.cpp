@@ -1,5 +1,7 @@
 // The public render API (scenefile/render.h) over the renderer: the one
 // place that turns the public settings into the renderer's.
+#include <algorithm>
+#include <cmath>
 #include <stop_token>
 
 #include "renderer/image.h"
@@ -7,6 +9,7 @@
 #include "renderer/render_scene.h"
 #include "renderer/saturating.h"
 #include "scenefile/render.h"
+#include "scenefile/validation.h"
 
 namespace scene {
 
@@ -15,6 +18,25 @@ std::uint64_t RenderedImage::bytesFor(int width, int height, bool withCoverage) 
       render::saturatingProduct(static_cast<std::uint64_t>(width > 0 ? width : 0),
                                 static_cast<std::uint64_t>(height > 0 ? height : 0));
   return render::saturatingProduct(pixels, (kChannels + (withCoverage ? 1 : 0)) * sizeof(float));
+}
+
+void applySceneView(const Scene& scene, std::optional<int> width, std::optional<int> height,
+                    bool fovGiven, RenderSettings& settings) {
+  if (!scene.view) return;
+  if (!fovGiven) {
+    settings.verticalFovDegrees =
+        std::clamp(scene.view->verticalFovDegrees, kMinFovDegrees, kMaxFovDegrees);
+  }
+  if (!scene.view->aspectRatio || (height && width)) return;
+  double aspect = *scene.view->aspectRatio;
+  auto side = [](double pixels) {
+    return static_cast<int>(std::clamp(std::round(pixels), 1.0, double{kMaxImageSide}));
+  };
+  if (height) {
+    settings.width = side(settings.height * aspect);
+  } else {
+    settings.height = side(settings.width / aspect);
+  }
 }
 
 RenderedImage renderScene(const Scene& scene, const RenderSettings& settings,

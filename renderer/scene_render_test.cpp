@@ -62,5 +62,24 @@ TEST(SceneRender, LevelsAndLinearValuesAreTheRenderersConversions) {
   EXPECT_FLOAT_EQ(linear[3], -1.0f);
 }
 
+TEST(SceneRender, TheScenesViewFillsWhatTheCallerLeavesOpen) {
+  Scene withView;
+  withView.view = View{};
+  withView.view->verticalFovDegrees = 45.0;
+  withView.view->aspectRatio = 2.0;
+  RenderSettings settings;  // 640 x 480 at 60 degrees
+  applySceneView(withView, std::nullopt, std::nullopt, false, settings);
+  EXPECT_EQ(settings.verticalFovDegrees, 45.0);
+  EXPECT_EQ(settings.width, 640);
+  EXPECT_EQ(settings.height, 320);
+  RenderSettings given;
+  applySceneView(withView, 100, 100, true, given);
+  EXPECT_EQ(given.verticalFovDegrees, 60.0);
+  EXPECT_EQ(given.height, 480);
+  RenderSettings untouched;
+  applySceneView(Scene{}, std::nullopt, std::nullopt, false, untouched);
+  EXPECT_EQ(untouched.height, 480);
+}
+
 }  // namespace
 }  // namespace scene

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,12 @@ int main(int argc, char** argv) {
     if (d.code == scene::DiagnosticCode::CannotReadFile) return 3;
   }
   if (!read.ok()) return 1;
+
+  // A glTF or POV-Ray camera's field of view and aspect ratio, as sfrender
+  // takes them.
+  std::optional<int> width, height;
+  if (argc == 5) width = settings.width, height = settings.height;
+  scene::applySceneView(read.scene, width, height, false, settings);
 
   scene::RenderControl control;
   control.progress = [](int done, int total) {

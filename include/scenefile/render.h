@@ -9,6 +9,7 @@
 #include <exception>
 #include <functional>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <stop_token>
 #include <vector>
 
@@ -115,6 +116,15 @@ class RenderCancelled : public std::exception {
  public:
   const char* what() const noexcept override { return "the render was cancelled"; }
 };
+
+/// The scene's own view (a POV-Ray or glTF camera's, Scene::view) in
+/// `settings`, where the caller does not say otherwise: its field of view
+/// unless `fovGiven`, and at its aspect ratio the side that `width` and
+/// `height` leave open (the height, when neither is given). `settings`
+/// holds the sizes and field of view to start from. What the tools do
+/// before they render; a scene without a view leaves `settings` as it is.
+void applySceneView(const Scene& scene, std::optional<int> width, std::optional<int> height,
+                    bool fovGiven, RenderSettings& settings);
 
 /// The image of `scene` (one that read without errors) with `settings`.
 /// Throws RenderCancelled when stopped, std::bad_alloc when the image does

@@ -507,7 +507,7 @@ std::optional<Selection> pick(const BuilderState& state, double x, double y) {
 }
 
 double verticalFovDegrees(const BuilderState& state) {
-  // As sfrender's applySceneView, which --width and --height both given
+  // As scene::applySceneView, which --width and --height both given
   // leave the aspect ratio to.
   if (state.scene.view) {
     return std::clamp(state.scene.view->verticalFovDegrees, scene::kMinFovDegrees,

@@ -5,12 +5,12 @@
 #include <type_traits>
 
 #include "renderer/adaptive_sampling.h"
-#include "renderer/render_memory.h"
 #include "renderer/image.h"
+#include "renderer/render_memory.h"
 #include "renderer/saturating.h"
+#include "scenefile/render.h"
 #include "scenefile/validation.h"
 #include "tools/common/option_checks.h"
-#include "tools/sfrender/scene_view.h"
 #include "tools/sfrender/sfrender.h"
 
 namespace sfls {
@@ -108,7 +108,7 @@ render::RenderSettings renderSettingsFor(const RenderArguments& a, const scene::
   settings.width = a.width.value_or(settings.width);
   settings.height = a.height.value_or(settings.height);
   settings.verticalFovDegrees = a.fov.value_or(settings.verticalFovDegrees);
-  tools::applySceneView(scene, a.width, a.height, a.fov.has_value(), settings);
+  scene::applySceneView(scene, a.width, a.height, a.fov.has_value(), settings);
   return settings;
 }
 

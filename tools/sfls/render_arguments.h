@@ -33,7 +33,7 @@ struct RenderArguments {
 Refusal readRenderArguments(const nlohmann::json& given, RenderArguments& a);
 
 // The settings of the render: the arguments over sfrender's defaults, and
-// the scene's own view where they leave it open (tools::applySceneView).
+// the scene's own view where they leave it open (scene::applySceneView).
 render::RenderSettings renderSettingsFor(const RenderArguments& a, const scene::Scene& scene);
 
 // The limits sfrender holds a render on `threads` threads to (its pixels),

@@ -24,6 +24,7 @@
 #include "renderer/render.h"
 #include "renderer/saturating.h"
 #include "scenefile/read.h"
+#include "scenefile/render.h"
 #include "scenefile/validation.h"
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/file_io.h"
@@ -39,7 +40,6 @@
 #include "tools/sfrender/image_target.h"
 #include "tools/sfrender/progress_line.h"
 #include "tools/sfrender/render_hint.h"
-#include "tools/sfrender/scene_view.h"
 #include "tools/sfrender/thread_probe.h"
 
 namespace tools {
@@ -239,7 +239,7 @@ MaybeFailure RenderJob::readScene() {
   DiagnosticStyle style = output_.diagnosticStyle(format);
   // The view this render will use, which no hint asks for again.
   render::RenderSettings inUse = settings_;
-  applySceneView(result.scene, o_.width, o_.height, o_.fov.has_value(), inUse);
+  scene::applySceneView(result.scene, o_.width, o_.height, o_.fov.has_value(), inUse);
   style.hint = [inUse](const scene::Diagnostic& d) { return renderHintText(d, inUse); };
   DiagnosticPrinter(output_.err(), style, &sources).print(result.diagnostics);
   if (!result.ok()) return toldFailure(ExitCode::InvalidInput);
@@ -411,7 +411,7 @@ MaybeFailure RenderJob::run() {
   }
   if (MaybeFailure failure = readScene()) return failure;
   output_.step("reading");
-  applySceneView(job_.scene, o_.width, o_.height, o_.fov.has_value(), settings_);
+  scene::applySceneView(job_.scene, o_.width, o_.height, o_.fov.has_value(), settings_);
   if (MaybeFailure overLimit =
           settingOverLimit(settings_, o_.limits, " (at the scene's aspect ratio)")) {
     return overLimit;
