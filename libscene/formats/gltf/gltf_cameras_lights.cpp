@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 
+#include "libscene/core/default_camera.h"
 #include "libscene/formats/gltf/gltf_reference_point.h"
 #include "libscene/text/number.h"
 #include "scenefile/transform.h"
@@ -206,24 +207,14 @@ void CamerasAndLights::placeDirectionalLights() {
 }
 
 void CamerasAndLights::makeDefaultCamera() {
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (const Object& o : c_.scene.objects) {
-    glm::dvec3 p(o.matrix[3]);
-    if (std::isfinite(p.x + p.y + p.z)) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  }
-  glm::dvec3 centre = lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
-  double radius = lo.x <= hi.x ? glm::length(hi - lo) / 2 : 0.0;
-  glm::dvec3 eye = centre + glm::dvec3(0.0, 0.0, 2.0 * radius + 5.0);
-  if (!std::isfinite(eye.x + eye.y + eye.z + radius)) {
+  std::optional<glm::dmat4> camera = cameraSeeingObjects(c_.scene.objects);
+  if (!camera) {
     c_.out.error(DiagnosticCode::ValueNotFinite, {},
                  "the file has no camera, and one on +Z that sees every object would stand "
                  "beyond the largest number");
     return;
   }
-  c_.scene.camera.matrix = cameraFromLookAt(eye, centre);
+  c_.scene.camera.matrix = *camera;
   c_.out.report(c_.loss, DiagnosticCode::GltfNoCamera, {},
                 "the file has no camera: CAMERA looks at the scene from +Z");
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "libscene/core/default_camera.h"
 #include "libscene/formats/obj/obj_mtl.h"
 #include "libscene/formats/obj/obj_statements.h"
 #include "libscene/text/number.h"
@@ -232,22 +233,14 @@ void ObjImporter::addGroup(const ObjGroup& group) {
 
 // OBJ has no camera: one on +Z that sees every object's centre.
 void ObjImporter::defaultCamera() {
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (const Object& o : result_.scene.objects) {
-    glm::dvec3 p(o.matrix[3]);
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  glm::dvec3 centre = lo.x <= hi.x ? 0.5 * (lo + hi) : glm::dvec3(0.0);
-  double radius = lo.x <= hi.x ? glm::length(hi - lo) / 2 : 0.0;
-  glm::dvec3 eye = centre + glm::dvec3(0.0, 0.0, 2.0 * radius + 5.0);
-  if (!std::isfinite(eye.x + eye.y + eye.z + radius)) {
+  std::optional<glm::dmat4> camera = cameraSeeingObjects(result_.scene.objects);
+  if (!camera) {
     out_.error(DiagnosticCode::ValueNotFinite, {},
                "the file has no camera, and one on +Z that sees every object would stand "
                "beyond the largest number");
     return;
   }
-  result_.scene.camera.matrix = cameraFromLookAt(eye, centre);
+  result_.scene.camera.matrix = *camera;
   out_.note(DiagnosticCode::ObjNoCamera, {},
             "the file has no camera (OBJ holds none): CAMERA looks at the scene from +Z");
 }
