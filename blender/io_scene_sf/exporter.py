@@ -12,7 +12,6 @@ import numpy as np
 
 from . import importer, mapping
 
-_MATERIAL_INPUTS = ("Base Color", "Roughness", "Metallic", "Transmission", "IOR", "Specular")
 # Helpers that draw nothing: skipped without a word.
 _SILENT = {"EMPTY", "ARMATURE", "LIGHT_PROBE", "SPEAKER", "LATTICE"}
 
@@ -73,22 +72,18 @@ def material(scenefile, obj, sf):
         if slot is not None and sf is None:
             result.colour = tuple(slot.diffuse_color)[:3]
         return result
-    before = sf["material_inputs"] if sf is not None else {}
-    now = importer.principled_snapshot(node)
-    for name in _MATERIAL_INPUTS:
-        if name in before and _same_input(before[name], now[name]):
-            continue
-        prop, value = mapping.material_value(name, now[name])
-        setattr(result, prop, value)
+    # A value is Blender's where the inputs it depends on were edited; the
+    # rest stay exact.
+    now = mapping.material_values(importer.principled_snapshot(node))
+    before = mapping.material_values(sf["material_inputs"]) if sf is not None else {}
+    for prop, value in now.items():
+        if prop not in before or before[prop] != value:
+            setattr(result, prop, value)
     if sf is None and result.transparency == 0.0:
         result.ri = 1.0  # IOR matters only where light refracts
     if result.ri <= 0.0:
         result.ri = 1.0
     return result
-
-
-def _same_input(a, b):
-    return list(a) == list(b) if isinstance(b, list) else float(a) == float(b)
 
 
 def mesh_object(scenefile, obj, depsgraph, notes):

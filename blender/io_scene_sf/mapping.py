@@ -92,37 +92,62 @@ def is_float_noise(a, b):
     return np.abs(a - b).max() <= FLOAT_NOISE * max(1.0, np.abs(b).max())
 
 
-# Materials: the Principled BSDF stands for the Phong material as glTF's
-# PBR model does for the glTF writer (docs/GLTF.md, "Materials").
+# Materials: the Principled BSDF stands for the Phong material with the glTF
+# writer's numbers (libscene/formats/gltf/gltf_mapping.cpp; docs/GLTF.md,
+# "Materials"), so that a mirror imports as a mirror and glass as glass.
+# The renderer adds the diffuse colour d and a sharp share g (REFLECTIVITY
+# decoded, or TRANSPARENCY); the BSDF blends one base colour min(d + g, 1)
+# by f = g / (max(d) + g) between its diffuse and its metal or transmission.
+# blender/tests/materials_check.py holds both directions to the glTF
+# writer's and reader's numbers.
+def _sharp_weight(material):
+    if material.transparency > 0.0:
+        return min(1.0, material.transparency)
+    return srgb_to_linear(_unit(material.reflectivity))
+
+
+def _unit(value):
+    return min(1.0, max(0.0, float(value)))
+
+
 def principled_inputs(material):
     """The Principled BSDF's inputs for a scenefile.Material."""
-    r, g, b = (min(1.0, max(0.0, c)) for c in material.colour)
+    lit = _unit(material.ambient + material.diffuse)
+    g = _sharp_weight(material)
+    diffuse = [_unit(c) * lit for c in material.colour]
+    largest = max(diffuse)
+    sharp = g / (largest + g) if largest + g > 0.0 else 0.0
+    roughness = (1.0 - sharp) * (2.0 / (material.shininess + 2.0)) ** 0.25
     return {
-        "Base Color": (r, g, b, 1.0),
-        "Roughness": (2.0 / (material.shininess + 2.0)) ** 0.25,
-        "Metallic": min(1.0, max(0.0, material.reflectivity)),
-        "Transmission": min(1.0, max(0.0, material.transparency)),
-        "IOR": material.ri,
-        "Specular": min(1.0, max(0.0, material.specular * SPECULAR_SCALE)),
+        "Base Color": tuple(min(d + g, 1.0) for d in diffuse) + (1.0,),
+        "Roughness": _unit(roughness),
+        "Metallic": 0.0 if material.transparency > 0.0 else sharp,
+        "Transmission": sharp if material.transparency > 0.0 else 0.0,
+        "IOR": max(material.ri, 1.0),
+        "Specular": _unit(material.specular * SPECULAR_SCALE),
     }
 
 
-def material_value(name, value):
-    """The Phong value that one Principled input stands for: (property, value)."""
-    if name == "Base Color":
-        return "colour", tuple(float(c) for c in value[:3])
-    if name == "Roughness":
-        r = max(float(value), 1e-6)
-        return "shininess", min(1e6, max(1.0, 2.0 / r ** 4 - 2.0))
-    if name == "Metallic":
-        return "reflectivity", float(value)
-    if name == "Transmission":
-        return "transparency", float(value)
-    if name == "IOR":
-        return "ri", float(value)
-    if name == "Specular":
-        return "specular", min(1.0, float(value) / SPECULAR_SCALE)
-    raise KeyError(name)
+def material_values(inputs):
+    """The Phong values {property: value} that the Principled inputs stand
+    for (principled_inputs' inverse, the glTF reader's)."""
+    metallic, transmission = _unit(inputs["Metallic"]), _unit(inputs["Transmission"])
+    sharp = max(metallic, transmission)
+    base = [float(c) for c in list(inputs["Base Color"])[:3]]
+    g = sharp * max(base + [0.0])
+    roughness = _unit(inputs["Roughness"])
+    if sharp < 1.0:
+        roughness = min(roughness / (1.0 - sharp), 1.0)
+    r4 = roughness ** 4
+    shininess = 2.0 / r4 - 2.0 if r4 > 0.0 else 1e6
+    return {
+        "colour": tuple(max(c - g, 0.0) for c in base),
+        "reflectivity": 0.0 if transmission > 0.0 else linear_to_srgb(min(g, 1.0)),
+        "transparency": min(g, 1.0) if transmission > 0.0 else 0.0,
+        "shininess": min(1e6, max(1.0, shininess)),
+        "ri": max(float(inputs["IOR"]), 1.0),
+        "specular": min(1.0, float(inputs["Specular"]) / SPECULAR_SCALE),
+    }
 
 
 # Lights: a Blender point light of P watts lights a surface of albedo a,

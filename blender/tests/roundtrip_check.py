@@ -5,7 +5,7 @@
 #   - exported without an edit, the file is exactly what scenefile writes of
 #     the scene read (in both formats, or refused by both);
 #   - an object moved in Blender is written from Blender's matrix, the rest
-#     still exactly; a material edited in Blender gives its new colour alone.
+#     still exactly; a material made diffuse in Blender gives its new colour.
 #
 # blender -b --factory-startup --python-exit-code 1 --python THIS -- ADDONS WORK SCENE...
 import math
@@ -86,7 +86,10 @@ def edits_are_blenders(name, scene):
                if "sf" in o and o["sf"]["role"] == "OBJECT"}
     objects[0].location.z += 1.0  # Blender's +Z is the scene's +Y
     node = importer.principled(objects[1].material_slots[0].material)
+    # Made a plain diffuse colour: the base colour is then COLOUR itself.
     node.inputs["Base Color"].default_value = (0.25, 0.5, 0.75, 1.0)
+    node.inputs["Metallic"].default_value = 0.0
+    node.inputs["Transmission"].default_value = 0.0
     bpy.context.view_layer.update()
     path = common.same_folder_name(work, "edited", name + ".sf")
     result, error = common.operator(bpy.ops.export_scene.sf, filepath=path, format="SF")
@@ -101,6 +104,10 @@ def edits_are_blenders(name, scene):
                    f"{name}: the moved object is not where Blender moved it")
     failures.check(back.objects[1].colour == (0.25, 0.5, 0.75),
                    f"{name}: the edited colour is {back.objects[1].colour}")
+    edited = back.objects[1].material
+    failures.check(edited.reflectivity == 0.0 and edited.transparency == 0.0,
+                   f"{name}: a material made diffuse reflects {edited.reflectivity} and "
+                   f"transmits {edited.transparency}")
     failures.check(np.array_equal(back.objects[1].matrix, scene.objects[1].matrix),
                    f"{name}: an object that was not moved did not keep its exact matrix")
     failures.check(back.objects[2:] == scene.objects[2:] and back.lights == scene.lights
