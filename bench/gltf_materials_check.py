@@ -2,8 +2,8 @@
 # each scene is exported to .glb, imported by Blender's glTF importer and
 # rendered with Cycles (Standard view, a black world), and exported again
 # with --light-falloff none for f3d 1.3; the mean of every channel over the
-# pixels of the mirrors (metallic at least 0.5) and of the glasses
-# (transmission above 0) is set beside sfrender's picture of the same scene
+# pixels of the mirrors (metallic at least 0.5), of the glasses
+# (transmission above 0) and of the planes (the floor a glass shows) is set beside sfrender's picture of the same scene
 # at the same size and field of view (docs/GLTF_VIEWERS.md, "Materials in PBR
 # viewers, measured"). The pixels are found by an object-identity render in
 # Blender: the objects of one group white and unlit, the rest black.
@@ -47,11 +47,12 @@ def load_png(path):
 
 
 def groups_of(glb):
-    """The node names of the mirrors and of the glasses, from the file's materials."""
+    """The node names of the mirrors and of the glasses, from the file's
+    materials, and of the planes (the floor a glass shows)."""
     data = open(glb, "rb").read()
     length = struct.unpack_from("<I", data, 12)[0]
     doc = json.loads(data[20:20 + length])
-    groups = {"mirror": [], "glass": []}
+    groups = {"mirror": [], "glass": [], "floor": []}
     for node in doc["nodes"]:
         if "mesh" not in node:
             continue
@@ -61,6 +62,8 @@ def groups_of(glb):
             groups["glass"].append(node["name"])
         elif material["pbrMetallicRoughness"].get("metallicFactor", 1.0) >= 0.5:
             groups["mirror"].append(node["name"])
+        elif node["name"].startswith("PLANE"):
+            groups["floor"].append(node["name"])
     return groups
 
 
