@@ -376,14 +376,14 @@ TEST_F(IntegrityTest, SfrenderRefusesToWriteItsSceneByAnyName) {
             toInt(ExitCode::InvalidInput));
   EXPECT_TRUE(errorSays("is the input file; sfrender never writes over its input")) << err_.str();
   EXPECT_EQ(read("self.txt"), instructions("self.txt"));
-  // The default name (the scene's, .ppm, in the current folder) is the scene.
-  std::string odd = write("ball.ppm", kValidScene);
+  // The default name (the scene's, .png, in the current folder) is the scene.
+  std::string odd = write("ball.png", kValidScene);
   fs::path before = fs::current_path();
   fs::current_path(dir_ / "work");
-  int status = run(sfrender, {"sfrender", "ball.ppm", "--width", "8", "--height", "6"});
+  int status = run(sfrender, {"sfrender", "ball.png", "--width", "8", "--height", "6"});
   fs::current_path(before);
   EXPECT_EQ(status, toInt(ExitCode::InvalidInput)) << err_.str();
-  EXPECT_EQ(read("ball.ppm"), kValidScene);
+  EXPECT_EQ(read("ball.png"), kValidScene);
 }
 
 // --- OUTPUT_FILE stays in its folder without -o ------------------------------

@@ -15,7 +15,7 @@ mkdir -p "$work"
 field() { sed -n "s/^$1: *//p" "$2" | head -n 1; }
 
 "$sfconvert" "$source" "$work/dark.glb" --no-lights 2>"$work/dark.stderr"
-grep -q "LIGHT 1 .* is left out of the glTF, as --no-lights asks \[gltf-light-left-out\]" \
+grep -q "LIGHT 1 .* is left out: the glTF is written without lights \[gltf-light-left-out\]" \
   "$work/dark.stderr" || { cat "$work/dark.stderr"; echo "no loss warning for LIGHT 1"; exit 1; }
 grep -q "wrote .*dark.glb (a binary glTF 2.0 file, 6 objects, 0 lights)" "$work/dark.stderr" || {
   cat "$work/dark.stderr"; echo "sfconvert does not say the file holds no light"; exit 1; }

@@ -85,7 +85,7 @@ TEST(WebModule, ConvertGivesSfconvertsOutputToStandardOutput) {
 }
 
 TEST(WebModule, ConvertRefusesAFormatNotInTheRegistry) {
-  web::WebConversion mine = web::convertText(sampleTexts()[0], "<stdin>", "obj");
+  web::WebConversion mine = web::convertText(sampleTexts()[0], "<stdin>", "ply");
   EXPECT_FALSE(mine.output);
   EXPECT_EQ(mine.diagnostics, "[]");
 }

@@ -211,14 +211,14 @@ TEST(GltfLights, NoLightsLeavesEveryLightOutWithAWarningNamingIt) {
   ASSERT_EQ(left.size(), 2u);
   EXPECT_EQ(left[0].severity, Severity::Warning);
   EXPECT_EQ(left[0].message,
-            "LIGHT 1 (COLOUR 0.9 0.6 0.3) is left out of the glTF, as --no-lights asks");
+            "LIGHT 1 (COLOUR 0.9 0.6 0.3) is left out: the glTF is written without lights");
   EXPECT_TRUE(withCode(out, DiagnosticCode::LightFalloff).empty());
   // The file is all there is: read back, it has no lights.
   ReadResult back = parseScene(files->main, "dark.gltf");
   ASSERT_TRUE(back.ok());
   EXPECT_TRUE(back.scene.lights.empty());
   EXPECT_EQ(back.scene.objects.size(), 1u);
-  // Under --no-loss a light left out is an error, and nothing is written.
+  // Where no loss is allowed, a light left out is an error, and nothing is written.
   ConversionOptions strict = testing::conversionWith(options);
   strict.noLoss = true;
   DiagnosticList refused;

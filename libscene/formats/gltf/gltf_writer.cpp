@@ -344,7 +344,7 @@ void reportLightLosses(const Scene& scene, Severity lossSeverity,
     if (plans.empty()) {
       out.report(lossSeverity, DiagnosticCode::GltfLightLeftOut, scene.lights[i].span,
                  label + " (COLOUR " + colourText(scene.lights[i].colour) +
-                     ") is left out of the glTF, as --no-lights asks");
+                     ") is left out: the glTF is written without lights");
       continue;
     }
     const LightPlan& plan = plans[i];

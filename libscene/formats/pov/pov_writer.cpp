@@ -383,7 +383,7 @@ std::optional<std::string> writePovScene(const Scene& scene, const ConversionOpt
   }
   // POV-Ray computes in its working gamma and encodes the output from it to
   // File_Gamma, sRGB by default: a working gamma of sRGB makes that encoding
-  // the identity, so POV-Ray's levels are linear, as sfrender's, without a
+  // the identity, so POV-Ray's levels are linear, as the renderer's, without a
   // File_Gamma setting. Colour literals are not converted either way.
   text += "global_settings { assumed_gamma srgb max_trace_level " +
           std::to_string(options.maxDepth + 1) + " adc_bailout 0 ambient_light rgb ";
