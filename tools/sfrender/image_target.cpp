@@ -21,7 +21,7 @@ std::optional<fs::path> readAheadImageTarget(const std::string& input,
   if (!text.text) return std::nullopt;
   std::optional<scene::Format> format = scene::detectFormat(*text.text, input);
   if (!format) return std::nullopt;
-  if (!scene::formatInfo(*format).holds.outputFile) return defaultImageTarget(input, {}).path;
+  if (*format != scene::Format::InstructionFile) return defaultImageTarget(input, {}).path;
   scene::ReadResult result = scene::parseScene(*text.text, input, options);
   if (!result.ok()) return std::nullopt;
   const std::optional<std::string>& name = result.scene.outputFile;

@@ -228,6 +228,12 @@ MaybeFailure RenderJob::readScene() {
   scene::ReadOptions read = o_.read;
   read.threads = static_cast<unsigned>(renderThreadCount(o_.settings.threads));
   scene::ReadResult result = scene::parseScene(*text.text, shown, read);
+  // Only an instruction file names its image where it can be seen; the
+  // OUTPUT_FILE that another format carries for a round trip (glTF extras,
+  // OBJ comments) does not choose the image's name.
+  if (scene::detectFormat(*text.text, shown) != scene::Format::InstructionFile) {
+    result.scene.outputFile.reset();
+  }
   if (result.scene.outputFile && o_.output.empty()) {
     // OUTPUT_FILE is the instruction file's to choose, inside its folder
     // (standard input's: the current folder).

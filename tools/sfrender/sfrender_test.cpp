@@ -11,6 +11,7 @@
 #include "renderer/render.h"
 #include "tools/common/exit_code.h"
 #include "tools/sfcheck/sfcheck.h"
+#include "tools/sfconvert/sfconvert.h"
 #include "tools/tool_test_support.h"
 
 namespace tools {
@@ -42,6 +43,22 @@ TEST_F(ToolTest, SfrenderNamesASceneFilesImageAfterIt) {
   EXPECT_EQ(read("ball.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
   EXPECT_NE(err_.str().find("sfrender: wrote ball.png (16x12)"), std::string::npos) << err_.str();
   EXPECT_FALSE(fs::exists(dir_ / "ball.ppm"));
+}
+
+// The OUTPUT_FILE a glTF file carries from an instruction file, for its
+// round trip, does not name the image: only an instruction file does.
+TEST_F(ToolTest, SfrenderNamesOnlyAnInstructionFilesImageByItsOutputFile) {
+  std::string txt = write("scene.txt", instructionsWriting("chosen.ppm"));
+  ASSERT_EQ(run(runSfconvert, {"sfconvert", txt, path("scene.gltf")}), 0) << err_.str();
+  fs::path before = fs::current_path();
+  fs::current_path(dir_);
+  int fromGltf = run(sfrender, {"sfrender", "scene.gltf", "--width", "16", "--height", "12"});
+  int fromTxt = run(sfrender, {"sfrender", "scene.txt", "--width", "16", "--height", "12"});
+  fs::current_path(before);
+  EXPECT_EQ(fromGltf, 0) << err_.str();
+  EXPECT_EQ(fromTxt, 0) << err_.str();
+  EXPECT_EQ(read("scene.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
+  EXPECT_EQ(read("chosen.ppm").substr(0, 2), "P6");
 }
 
 // What POV-Ray has and the subset does not fails the render, unless
