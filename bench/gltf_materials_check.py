@@ -21,6 +21,9 @@ import sys
 import bpy
 import numpy
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "gltf"))
+from cycles_settings import cycles_as_sfrender  # noqa: E402
+
 numpy.bool = bool  # Debian 12's Blender 3.4 importer still says numpy.bool
 
 args = sys.argv[sys.argv.index("--") + 1:]
@@ -68,30 +71,7 @@ def groups_of(glb):
 
 
 def setup(scene, png, render_samples):
-    scene.render.engine = "CYCLES"
-    scene.cycles.device = "CPU"
-    scene.cycles.samples = render_samples
-    scene.cycles.use_denoising = False
-    scene.cycles.seed = 0
-    # sfrender traces as Whitted did: no light is focused by mirrors or
-    # glass (caustics). Diffuse bounces stay: they stand in for AMBIENT.
-    scene.cycles.caustics_reflective = False
-    scene.cycles.caustics_refractive = False
-    scene.render.resolution_x = width
-    scene.render.resolution_y = height
-    scene.render.resolution_percentage = 100
-    scene.render.dither_intensity = 0.0
-    scene.view_settings.view_transform = "Standard"
-    scene.view_settings.look = "None"
-    world = bpy.data.worlds.new("black")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
-    scene.world = world
-    settings = scene.render.image_settings
-    settings.file_format = "PNG"
-    settings.color_mode = "RGB"
-    settings.color_depth = "8"
-    scene.render.filepath = png
+    cycles_as_sfrender(bpy, scene, width, height, render_samples, png)
 
 
 def import_glb(glb):

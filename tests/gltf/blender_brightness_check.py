@@ -23,6 +23,9 @@ import time
 import bpy
 import numpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_settings import cycles_as_sfrender  # noqa: E402
+
 # Debian 12's Blender 3.4 importer still says numpy.bool, which numpy 1.24
 # removed; the builtin is what it means.
 numpy.bool = bool
@@ -65,35 +68,7 @@ def sfrender_image(source, name):
 
 
 def setup_render(scene, png):
-    scene.render.engine = "CYCLES"
-    scene.cycles.device = "CPU"
-    scene.cycles.samples = samples
-    scene.cycles.use_denoising = False
-    scene.cycles.seed = 0
-    # sfrender traces as Whitted did: no light is focused by mirrors or
-    # glass (caustics). Diffuse bounces stay: they stand in for AMBIENT.
-    scene.cycles.caustics_reflective = False
-    scene.cycles.caustics_refractive = False
-    scene.render.resolution_x = width
-    scene.render.resolution_y = height
-    scene.render.resolution_percentage = 100
-    scene.render.film_transparent = False
-    scene.render.dither_intensity = 0.0
-    scene.view_settings.view_transform = "Standard"
-    scene.view_settings.look = "None"
-    scene.view_settings.exposure = 0.0
-    scene.view_settings.gamma = 1.0
-    scene.display_settings.display_device = "sRGB"
-    # A black world, as sfrender's background: no light but the file's.
-    world = bpy.data.worlds.new("black")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
-    scene.world = world
-    settings = scene.render.image_settings
-    settings.file_format = "PNG"
-    settings.color_mode = "RGB"
-    settings.color_depth = "8"
-    scene.render.filepath = png
+    cycles_as_sfrender(bpy, scene, width, height, samples, png)
 
 
 def cycles_image(glb, name):
