@@ -31,12 +31,16 @@ std::string check(const emscripten::val& input, const std::string& name) {
   return guarded([&] { return checkJson(bytesOf(input), name); });
 }
 
-// {output, diagnostics}: output a string, a Uint8Array for a binary format,
-// or null where sfconvert would refuse.
+// {output, materialLibrary, diagnostics}: output a string, a Uint8Array for
+// a binary format, or null where sfconvert would refuse; materialLibrary an
+// .obj's MTL file when `materialLibrary` names it ("": none, as on standard
+// output).
 emscripten::val convert(const emscripten::val& input, const std::string& name,
-                        const std::string& to) {
-  WebConversion conversion = guarded([&] { return convertText(bytesOf(input), name, to); });
+                        const std::string& to, const std::string& materialLibrary) {
+  WebConversion conversion =
+      guarded([&] { return convertText(bytesOf(input), name, to, materialLibrary); });
   emscripten::val answer = emscripten::val::object();
+  answer.set("materialLibrary", conversion.materialLibrary);
   if (!conversion.output) {
     answer.set("output", emscripten::val::null());
   } else if (conversion.binary) {

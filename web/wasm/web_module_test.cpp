@@ -2,6 +2,7 @@
 // and sfconvert --to TO - - give for the same text: the page promises
 // their output, so each is held to the tool itself, run in this process.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -82,6 +83,31 @@ TEST(WebModule, ConvertGivesSfconvertsOutputToStandardOutput) {
       EXPECT_EQ(mine.binary, row.binary);
     }
   }
+}
+
+// Given the MTL file's name, an .obj and its MTL are the files
+// `sfconvert - NAME.obj` writes; without it, the .obj alone.
+TEST(WebModule, ConvertGivesAnObjWithItsMtlAsSfconvertWritesThem) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("web-module-obj-" + std::to_string(::getpid()));
+  for (const std::string& text : sampleTexts()) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string objPath = (dir / "scene.obj").string();
+    web::WebConversion mine = web::convertText(text, "<stdin>", "obj", "scene.mtl");
+    ToolRun native =
+        runOnStandardInput(tools::runSfconvert, {"sfconvert", "-q", "-", objPath.c_str()}, text);
+    ASSERT_EQ(mine.output.has_value(), native.status == 0) << text;
+    if (!mine.output) continue;
+    EXPECT_EQ(*mine.output, scene::testing::readText(dir / "scene.obj")) << text;
+    // sfconvert writes no MTL for a scene without objects.
+    const bool mtlWritten = std::filesystem::exists(dir / "scene.mtl");
+    EXPECT_EQ(mine.materialLibrary, mtlWritten ? scene::testing::readText(dir / "scene.mtl") : "")
+        << text;
+    EXPECT_NE(mine.output->find("mtllib scene.mtl\n"), std::string::npos) << *mine.output;
+    EXPECT_TRUE(web::convertText(text, "<stdin>", "obj").materialLibrary.empty());
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(WebModule, ConvertRefusesAFormatNotInTheRegistry) {
