@@ -12,7 +12,7 @@ import { test } from 'node:test';
 import { assertClean, relative, root, sampleScenes, servedPage } from './harness.mjs';
 import { defaultSceneText, sfconvert } from './native.mjs';
 
-const formats = ['sf', 'instructions', 'gltf', 'glb', 'pov'];
+const formats = ['sf', 'instructions', 'gltf', 'glb', 'obj', 'pov'];
 const scenes = [...sampleScenes, path.join(root, 'testdata/valid/all-primitives.sf')];
 
 const validatorPath = path.join(root, 'tests/gltf/node_modules/gltf-validator');
@@ -75,7 +75,7 @@ for (const file of scenes) {
 
 test('an unknown format is refused', async () => {
   const got = await convertInPage(fs.readFileSync(path.join(root, 'examples/red-sphere.sf'), 'utf8'),
-                                  'obj');
+                                  'ply');
   assert.ok(got.thrown);
 });
 

@@ -50,6 +50,21 @@ export function sfconvert(bytes, to) {
   return { status: r.status, output: r.stdout, stderr: r.stderr };
 }
 
+// sfconvert of BYTES from standard input to a file named OUTPUT in an empty
+// folder: {status, stderr, files: {name: bytes} of every file it wrote}
+// (an .obj's MTL beside it).
+export function sfconvertToFiles(bytes, output) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'web-convert-'));
+  try {
+    const r = run('sfconvert', ['-q', '-', output], { cwd: dir, input: bytes });
+    const files = {};
+    for (const name of fs.readdirSync(dir)) files[name] = fs.readFileSync(path.join(dir, name));
+    return { status: r.status, stderr: r.stderr, files };
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
 // sfrender's options for the page's render() options.
 export function sfrenderArgs(options) {
   const args = [];

@@ -1,9 +1,10 @@
 // The page as a whole: the progressive render arrives (its marks in order,
 // the canvas at the end as window.scenefile.render draws the scene), an
 // edit during a render cancels it and the edited scene's image comes; the
-// download menu gives each format (sfconvert's bytes) and the render as a
-// PNG; the examples menu loads each scene; no request leaves the page and
-// nothing is logged as an error.
+// download menu gives each format (sfconvert's bytes; an .obj with its
+// .mtl, as sfconvert writes them) and the render as a PNG; the examples
+// menu loads each scene; no request leaves the page and nothing is logged
+// as an error.
 // Usage: node run.mjs page.test.mjs BUILD_DIR
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -11,7 +12,7 @@ import path from 'node:path';
 import { test } from 'node:test';
 import { PNG } from 'pngjs';
 import { assertClean, root, servedPage, webDir } from './harness.mjs';
-import { compareImages, sfconvert, sfrender } from './native.mjs';
+import { compareImages, sfconvert, sfconvertToFiles, sfrender } from './native.mjs';
 import { canvasPixels, editorText, marks } from './page.mjs';
 
 const opened = servedPage({ acceptDownloads: true });
@@ -108,30 +109,49 @@ async function downloadChoices(page) {
   });
 }
 
+// The files one pick downloads, {name: bytes}: an .obj and its .mtl for
+// obj, one file for the others.
 async function download(page, format, how) {
-  const [file] = await Promise.all([
-    page.waitForEvent('download', { timeout: 10000 }),
+  const extensions = format === 'obj' ? ['.obj', '.mtl'] : [''];
+  const [files] = await Promise.all([
+    Promise.all(extensions.map((extension) => page.waitForEvent('download', {
+      timeout: 10000, predicate: (d) => d.suggestedFilename().endsWith(extension),
+    }))),
     how === 'select' ? page.selectOption('#download', format)
                      : page.click(`#download [data-format="${format}"]`),
   ]);
-  const bytes = fs.readFileSync(await file.path());
+  const downloaded = {};
+  for (const file of files) downloaded[file.suggestedFilename()] = fs.readFileSync(await file.path());
   if (how === 'select') await page.selectOption('#download', '');
-  return { name: file.suggestedFilename(), bytes };
+  return downloaded;
 }
 
 test('the download menu gives each format and the PNG', async () => {
   const { page } = opened;
   const choices = await downloadChoices(page);
   const formats = choices.map(([f]) => f);
-  for (const f of ['sf', 'instructions', 'gltf', 'glb', 'pov', 'png']) {
+  for (const f of ['sf', 'instructions', 'gltf', 'glb', 'obj', 'pov', 'png']) {
     assert.ok(formats.includes(f), `no "${f}" in the download menu (${formats})`);
   }
   const text = await editorText(page);
   for (const [format, how] of choices) {
-    const { name, bytes } = await download(page, format, how);
+    const downloaded = await download(page, format, how);
+    const [name, bytes] = Object.entries(downloaded)[0];
     if (format === 'png') {
       const png = PNG.sync.read(bytes);
       assert.ok(same(png, await canvasPixels(page)), `${name} is not the canvas`);
+      continue;
+    }
+    if (format === 'obj') {
+      // The files sfconvert writes for NAME.obj: NAME.obj and NAME.mtl.
+      const objName = Object.keys(downloaded).find((n) => n.endsWith('.obj'));
+      const want = sfconvertToFiles(Buffer.from(text, 'utf8'), objName);
+      assert.equal(want.status, 0, want.stderr);
+      assert.deepEqual(Object.keys(downloaded).sort(), Object.keys(want.files).sort());
+      for (const [file, wanted] of Object.entries(want.files)) {
+        assert.ok(downloaded[file].equals(wanted), `${file}: not sfconvert's ${file}`);
+        console.log(`download obj: ${file}, ${wanted.length} bytes, sfconvert's`);
+      }
       continue;
     }
     const want = sfconvert(Buffer.from(text, 'utf8'), format);

@@ -6,7 +6,7 @@ import { RenderClient } from './render-client.js';
 import { RenderView } from './render-view.js';
 import { showProblems } from './problems.js';
 import { readSettings, watchSettings } from './settings.js';
-import { readSceneFile, fileNameFor, saveBlob, acceptDrops } from './files.js';
+import { readSceneFile, fileNameFor, materialLibraryNameFor, saveBlob, acceptDrops } from './files.js';
 import { spanToRange } from './positions.js';
 import { createScenefileApi } from './scenefile-api.js';
 import { compileWasm, instantiateModule } from './wasm-loader.js';
@@ -195,9 +195,14 @@ function download(to) {
     return;
   }
   try {
-    const output = library.convert(documentInput(editor.state), documentState.name, to);
+    const name = fileNameFor(library.formats, documentState.name, to);
+    // An .obj comes with its MTL file, the two files sfconvert writes.
+    const mtlName = to === 'obj' ? materialLibraryNameFor(name) : '';
+    const { output, materialLibrary } = library.convertFiles(documentInput(editor.state), documentState.name, to, mtlName);
     const type = to === 'glb' ? 'model/gltf-binary' : 'text/plain';
-    saveBlob(new Blob([output], { type }), fileNameFor(library.formats, documentState.name, to));
+    saveBlob(new Blob([output], { type }), name);
+    // sfconvert writes no MTL for a scene without objects: nor does the page.
+    if (materialLibrary) saveBlob(new Blob([materialLibrary], { type }), mtlName);
     notice('');
   } catch (error) {
     notice(`Not downloaded: ${error.message}`, true);

@@ -23,6 +23,11 @@ export function fileNameFor(formats, documentName, to) {
   return withoutExtension(documentName) + extension;
 }
 
+// The MTL file beside an .obj, as sfconvert names it: NAME.obj -> NAME.mtl.
+export function materialLibraryNameFor(objName) {
+  return `${withoutExtension(objName)}.mtl`;
+}
+
 // What the editor gets for a file: {name, text, bytes, notice}. Text
 // formats go in as they are; bytes are kept where the text is not UTF-8,
 // so that the check sees the file itself until the text is edited. A
