@@ -1,8 +1,8 @@
 // window.scenefile.check(text, name) gives exactly sfcheck --format json's
 // diagnostics for every scene of testdata/ (the valid ones, the diagnostics
-// corpus, glTF, POV-Ray, the extreme numbers), the examples and the guide's
-// scenes. A file in valid UTF-8 goes in as a string (as the editor holds
-// it), any other as its bytes.
+// corpus, glTF, OBJ, POV-Ray, the extreme numbers), the examples and the
+// guide's scenes. A file in valid UTF-8 goes in as a string (as the editor
+// holds it), any other as its bytes.
 // Usage: node run.mjs check.test.mjs BUILD_DIR
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -13,17 +13,17 @@ import { assertClean, base64, filesIn, relative, root, servedPage } from './harn
 import { sfcheck } from './native.mjs';
 import { sameAsNative } from './platform_differences.mjs';
 
-const scene = /\.(sf|txt|gltf|glb|pov)$/;
+const scene = /\.(sf|txt|gltf|glb|obj|pov)$/;
 const folders = [
-  'testdata/valid', 'testdata/invalid', 'testdata/gltf', 'testdata/pov/valid',
+  'testdata/valid', 'testdata/invalid', 'testdata/gltf', 'testdata/obj', 'testdata/pov/valid',
   'testdata/pov/invalid', 'testdata/pov/tutorial', 'testdata/pov/export', 'testdata/extreme',
   'testdata/view', 'testdata/render-cost', 'examples', 'docs/guide',
 ];
 
 // sfcheck's names of the formats against --to's, which check() gives.
 const toName = {
-  'scene-file': 'sf', 'instruction-file': 'instructions', gltf: 'gltf', glb: 'glb', pov: 'pov',
-  unknown: null,
+  'scene-file': 'sf', 'instruction-file': 'instructions', gltf: 'gltf', glb: 'glb', obj: 'obj',
+  pov: 'pov', unknown: null,
 };
 
 const opened = servedPage();

@@ -1,7 +1,7 @@
 // window.scenefile.convert(text, to) writes byte for byte what
 // `sfconvert --to TO` writes, for every output format and the scenes that
-// render.test.mjs renders; where sfconvert refuses, convert throws with the
-// first error's message. Each .glb passes the Khronos glTF Validator
+// render.test.mjs renders, and an OBJ; where sfconvert refuses, convert
+// throws with the first error's message. Each .glb passes the Khronos glTF Validator
 // (tests/gltf's, installed by scripts/install-deps.sh) without an error.
 // Usage: node run.mjs convert.test.mjs BUILD_DIR
 import assert from 'node:assert/strict';
@@ -13,7 +13,10 @@ import { assertClean, relative, root, sampleScenes, servedPage } from './harness
 import { defaultSceneText, sfconvert } from './native.mjs';
 
 const formats = ['sf', 'instructions', 'gltf', 'glb', 'obj', 'pov'];
-const scenes = [...sampleScenes, path.join(root, 'testdata/valid/all-primitives.sf')];
+const scenes = [
+  ...sampleScenes, path.join(root, 'testdata/valid/all-primitives.sf'),
+  path.join(root, 'testdata/obj/all-primitives.obj'),
+];
 
 const validatorPath = path.join(root, 'tests/gltf/node_modules/gltf-validator');
 const validator = fs.existsSync(validatorPath) ? createRequire(import.meta.url)(validatorPath) : null;

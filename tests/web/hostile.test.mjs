@@ -1,5 +1,5 @@
 // Every file of the hostile corpus (testdata/hostile/{sf,instructions,gltf,
-// pov}, testdata/gltf-hostile), opened in the page through its file input,
+// obj,pov}, testdata/gltf-hostile), opened in the page through its file input,
 // ends in its diagnostics in the problems list within 10 s, with the page
 // alive and no error thrown; and window.scenefile.check of its bytes gives
 // exactly the diagnostics of its .expect (tests/hostile/check_hostile.sh),
@@ -16,7 +16,7 @@ import { waitForProblems } from './page.mjs';
 
 const boundMs = 10000;
 const corpus = [
-  ...['sf', 'instructions', 'gltf', 'pov'].flatMap((kind) =>
+  ...['sf', 'instructions', 'gltf', 'obj', 'pov'].flatMap((kind) =>
     filesIn(path.join(root, 'testdata/hostile', kind), /^(?!.*\.expect$)/)),
   ...filesIn(path.join(root, 'testdata/gltf-hostile'), /\.(gltf|glb)$/),
 ];
