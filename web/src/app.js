@@ -201,7 +201,7 @@ function download(to) {
     const { output, materialLibrary } = library.convertFiles(documentInput(editor.state), documentState.name, to, mtlName);
     const type = to === 'glb' ? 'model/gltf-binary' : 'text/plain';
     saveBlob(new Blob([output], { type }), name);
-    // sfconvert writes no MTL for a scene without objects: nor does the page.
+    // sfconvert writes no empty MTL file; nor does the page.
     if (materialLibrary) saveBlob(new Blob([materialLibrary], { type }), mtlName);
     notice('');
   } catch (error) {

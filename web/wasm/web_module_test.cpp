@@ -47,6 +47,7 @@ const std::vector<std::string>& sampleTexts() {
       scene::testing::readText(kExamples / "red-sphere.sf"),
       scene::testing::readText(kExamples / "blue-cube.txt"),
       "CAMERA\n1 2 3\nSPHERE 1\n",
+      "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n",  // no object
       "SPHERE\nnot a colour\n",
       "",
       "\xff\xfe not UTF-8\n",
@@ -100,7 +101,7 @@ TEST(WebModule, ConvertGivesAnObjWithItsMtlAsSfconvertWritesThem) {
     ASSERT_EQ(mine.output.has_value(), native.status == 0) << text;
     if (!mine.output) continue;
     EXPECT_EQ(*mine.output, scene::testing::readText(dir / "scene.obj")) << text;
-    // sfconvert writes no MTL for a scene without objects.
+    // sfconvert writes no empty MTL.
     const bool mtlWritten = std::filesystem::exists(dir / "scene.mtl");
     EXPECT_EQ(mine.materialLibrary, mtlWritten ? scene::testing::readText(dir / "scene.mtl") : "")
         << text;
