@@ -49,12 +49,14 @@ class PrefaultedPages {
   std::thread thread_;
 };
 
-FileBytes cannotRead(std::string why) {
-  return {std::nullopt, std::move(why)};
+FileBytes cannotRead(std::error_code code, std::string why = {}) {
+  if (why.empty()) why = std::strerror(code.value());
+  return {std::nullopt, std::move(why), code};
 }
 
-SourceText unreadable(std::string name, std::string why, const ReadOptions& options) {
-  SourceText source{std::nullopt, std::move(why), DiagnosticList(name, options.errorLimit)};
+SourceText unreadable(std::string name, FileBytes why, const ReadOptions& options) {
+  SourceText source{std::nullopt, std::move(why.error), why.code,
+                    DiagnosticList(name, options.errorLimit)};
   source.diagnostics.error(DiagnosticCode::CannotReadFile, {},
                            "cannot read the file: " + source.readError);
   return source;
@@ -63,7 +65,7 @@ SourceText unreadable(std::string name, std::string why, const ReadOptions& opti
 // `bytes` as the text of input `name`, refused when above the limit:
 // whatever was read past it says only that the input is longer.
 SourceText withinLimit(std::string bytes, std::string name, const ReadOptions& options) {
-  SourceText source{std::nullopt, {}, DiagnosticList(std::move(name), options.errorLimit)};
+  SourceText source{std::nullopt, {}, {}, DiagnosticList(std::move(name), options.errorLimit)};
   if (checkFileSize(bytes.size(), options, source.diagnostics, "the input", false)) {
     source.text = std::move(bytes);
   }
@@ -74,9 +76,11 @@ SourceText withinLimit(std::string bytes, std::string name, const ReadOptions& o
 
 FileBytes readFileBytes(const std::filesystem::path& path, std::uint64_t maxBytes) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return cannotRead("it is a directory");
+  if (std::filesystem::is_directory(path, ec)) {
+    return cannotRead(std::make_error_code(std::errc::is_a_directory), "it is a directory");
+  }
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return cannotRead(std::strerror(errno));
+  if (fd < 0) return cannotRead(std::error_code(errno, std::generic_category()));
   std::string content;
   struct stat info {};
   if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) {
@@ -92,9 +96,9 @@ FileBytes readFileBytes(const std::filesystem::path& path, std::uint64_t maxByte
     ssize_t n = ::read(fd, buffer, sizeof buffer);
     if (n < 0) {
       if (errno == EINTR) continue;
-      int failure = errno;
+      std::error_code failure(errno, std::generic_category());
       ::close(fd);
-      return cannotRead(std::strerror(failure));
+      return cannotRead(failure);
     }
     if (n == 0) break;
     content.append(buffer, static_cast<std::size_t>(n));
@@ -104,7 +108,7 @@ FileBytes readFileBytes(const std::filesystem::path& path, std::uint64_t maxByte
     }
   }
   ::close(fd);
-  return {std::move(content), {}};
+  return {std::move(content), {}, {}};
 }
 
 SourceText readSourceFile(const std::filesystem::path& path, const ReadOptions& options,
@@ -112,13 +116,13 @@ SourceText readSourceFile(const std::filesystem::path& path, const ReadOptions& 
   if (name.empty()) name = path.string();
   struct stat info {};
   if (::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode)) {
-    SourceText refused{std::nullopt, {}, DiagnosticList(name, options.errorLimit)};
+    SourceText refused{std::nullopt, {}, {}, DiagnosticList(name, options.errorLimit)};
     if (!checkFileSize(static_cast<std::uint64_t>(info.st_size), options, refused.diagnostics)) {
       return refused;
     }
   }
   FileBytes file = readFileBytes(path, options.maxFileSize);
-  if (!file.bytes) return unreadable(std::move(name), std::move(file.error), options);
+  if (!file.bytes) return unreadable(std::move(name), std::move(file), options);
   // Not a regular file, or one that grew: its whole size is unknown.
   return withinLimit(std::move(*file.bytes), std::move(name), options);
 }
@@ -139,8 +143,11 @@ SourceText readSourceStream(std::istream& in, std::string name, const ReadOption
   // a failing disk, EIO) for the end of the input: the C stream under it
   // keeps the error, which an empty input would otherwise hide.
   if (in.bad() || (&in == &std::cin && std::ferror(stdin))) {
-    return unreadable(std::move(name),
-                      readError != 0 ? std::strerror(readError) : "the read failed", options);
+    return unreadable(
+        std::move(name),
+        readError != 0 ? cannotRead(std::error_code(readError, std::generic_category()))
+                       : cannotRead(std::make_error_code(std::errc::io_error), "the read failed"),
+        options);
   }
   return withinLimit(std::move(text), std::move(name), options);
 }

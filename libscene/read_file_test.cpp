@@ -40,6 +40,10 @@ TEST(ReadFile, AFolderOrAMissingFileIsCannotReadFile) {
     EXPECT_FALSE(readSceneFile(path).ok());
   }
   EXPECT_EQ(readSourceFile(::testing::TempDir()).readError, "it is a directory");
+  // The cause as the system's error, which a caller can tell apart.
+  EXPECT_EQ(readSourceFile(::testing::TempDir()).readErrorCode, std::errc::is_a_directory);
+  EXPECT_EQ(readSourceFile("/no/such/file.sf").readErrorCode, std::errc::no_such_file_or_directory);
+  EXPECT_EQ(readFileBytes("/no/such/file.sf").code, std::errc::no_such_file_or_directory);
 }
 
 TEST(ReadFile, AFileAboveTheLimitIsRefusedByItsSize) {

@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include "scenefile/diagnostic.h"
 #include "scenefile/read.h"
@@ -24,6 +25,9 @@ struct FileBytes {
   /// Why there are none, in the system's words ("No such file or
   /// directory", "it is a directory").
   std::string error;
+  /// The system's error behind `error` (std::errc::is_a_directory for a
+  /// folder), for a caller that tells the causes apart.
+  std::error_code code;
 };
 
 /// The bytes of the file at `path`, up to one byte past `maxBytes`, so that a
@@ -38,6 +42,8 @@ struct SourceText {
   /// Why the input could not be read (FileBytes::error), or empty; the
   /// cannot-read-file diagnostic says it too.
   std::string readError;
+  /// The system's error behind `readError` (FileBytes::code).
+  std::error_code readErrorCode;
   /// file-too-large or cannot-read-file, about the input's name.
   DiagnosticList diagnostics;
 
