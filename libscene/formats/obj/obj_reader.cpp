@@ -110,9 +110,9 @@ void ObjImporter::readLibrary(const ObjLibrary& library) {
     fs::path base = fs::weakly_canonical(fs::absolute(folder_->empty() ? "." : *folder_), ec);
     fs::path target = fs::weakly_canonical(base / library.name, ec);
     if (ec || target.parent_path() != base || !fs::is_regular_file(target, ec)) {
-      missing = &out_.warning(DiagnosticCode::ObjMaterial, library.span,
-                              "the MTL file '" + library.name +
-                                  "' is not a file beside the OBJ: the materials default");
+      missing = &out_.warning(
+          DiagnosticCode::ObjMaterial, library.span,
+          "the MTL file '" + library.name + "' is not a file beside the OBJ: it is not read");
     } else if (fs::file_size(target, ec) > options_.maxFileSize || ec) {
       missing = &out_.warning(DiagnosticCode::ObjMaterial, library.span,
                               "the MTL file '" + library.name + "' is larger than " +
