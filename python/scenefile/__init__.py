@@ -155,7 +155,12 @@ def loads(data: Union[str, bytes], name: str = "<string>", format: Optional[str]
 def _parse(data: bytes, name: str, format: Optional[str], options: Dict[str, Any]) -> Scene:
     """The scene in ``data``, named ``name``, or SceneError with every diagnostic."""
     scene_data, diagnostics, detected = _core.parse(data, name, _format_name(format), options)
-    found = _diagnostics(diagnostics)
+    return _scene(scene_data, _diagnostics(diagnostics), name, detected)
+
+
+def _scene(scene_data: Optional[Dict[str, Any]], found: List[Diagnostic], name: str,
+           detected: Optional[str]) -> Scene:
+    """The scene read, or SceneError with every diagnostic."""
     _raise_on_errors(found)
     assert scene_data is not None, "no scene, yet no error"
     scene = Scene._from_data(scene_data)
@@ -173,31 +178,31 @@ def _path(value: Any, name: str) -> str:
     return path if isinstance(path, str) else os.fsdecode(path)
 
 
-def _read_bytes(path: PathLike, options: Dict[str, Any]) -> Tuple[str, bytes, List[Diagnostic]]:
-    """The file's name as diagnostics give it, its bytes, and file-too-large if it is."""
+def _read_file(path: PathLike, format: Optional[str], options: Dict[str, Any]
+               ) -> Tuple[str, Optional[Dict[str, Any]], List[Diagnostic], Optional[str]]:
+    """The file read by the library, as the tools read theirs: its name as
+    diagnostics give it, its scene data (None when refused), the diagnostics
+    and the format detected. OSError when it cannot be read."""
     name = _path(path, "path")
-    with open(name, "rb") as f:
-        size = os.fstat(f.fileno()).st_size
-        refused = _diagnostics(_core.check_file_size(size, name, options))
-        if any(d.severity == Severity.ERROR for d in refused):
-            return name, b"", refused
-        limit = options.get("max_file_size", 1 << 30)
-        return name, f.read(limit + 1), refused
+    scene_data, diagnostics, detected, failure = _core.read_file(
+        os.fsencode(name), name, _format_name(format), options)
+    if failure:
+        raise OSError(failure, os.strerror(failure), name)
+    return name, scene_data, _diagnostics(diagnostics), detected
 
 
 def _read(path: PathLike, format: Optional[str], options: Dict[str, Any]) -> Scene:
-    name, data, refused = _read_bytes(path, options)
-    _raise_on_errors(refused)
-    return _parse(data, name, format, options)
+    name, scene_data, found, detected = _read_file(path, format, options)
+    return _scene(scene_data, found, name, detected)
 
 
 def read(path: PathLike, format: Optional[str] = None, **limits: Any) -> Scene:
     """The scene in the file at ``path``, in any format the tools read.
 
     The format is recognised from the content unless ``format`` names one
-    ("sf", "instructions", "gltf", "glb", "pov"). ``limits`` are the tools'
-    reading flags: max_file_size, max_objects, max_vertices, max_nodes,
-    error_limit, no_loss, transpose_matrices, skip_unsupported.
+    ("sf", "instructions", "gltf", "glb", "pov", "obj"). ``limits`` are the
+    tools' reading flags: max_file_size, max_objects, max_vertices,
+    max_nodes, error_limit, no_loss, transpose_matrices, skip_unsupported.
 
     Raises SceneError (with every diagnostic) when the file is invalid, and
     OSError (FileNotFoundError, ...) when it cannot be read. The warnings
@@ -214,11 +219,7 @@ def check(path: PathLike, **limits: Any) -> List[Diagnostic]:
     or is not an image: that is the tool's policy, not the library's, and
     not here. OSError when the file cannot be read.
     """
-    options = _options(limits, _READ_OPTIONS, "check")
-    name, data, refused = _read_bytes(path, options)
-    if any(d.severity == Severity.ERROR for d in refused):
-        return refused
-    return _diagnostics(_core.parse(data, name, None, options)[1])
+    return _read_file(path, None, _options(limits, _READ_OPTIONS, "check"))[2]
 
 
 def validate(scene: Scene) -> List[Diagnostic]:
@@ -243,26 +244,29 @@ def _format_for(path: str, format: Optional[str]) -> str:
 
 
 def _output_paths(target: str, format: str, external_buffers: bool) -> Tuple[str, str]:
-    """The file written, and its buffer's ("" for none), as sfconvert places
-    them: the buffer beside the .gltf at the end of a link, named after it."""
-    if not external_buffers:
-        return target, ""
-    if format != "gltf":
+    """The file written, and its sidecar ("" for none), as sfconvert places
+    them: a .gltf's buffer (external_buffers) or an .obj's MTL file, beside
+    the file at the end of a link, named after it."""
+    if external_buffers and format != "gltf":
         raise ValueError("external_buffers needs a .gltf output (format 'gltf')")
-    gltf_file = os.path.realpath(target) if os.path.islink(target) else target
-    name = os.path.splitext(os.path.basename(gltf_file))[0] + ".bin"
-    buffer = os.path.join(os.path.dirname(gltf_file), name)
-    if os.path.basename(gltf_file) == name:
-        raise ValueError(f"the buffer file {buffer!r} is the output itself; name the output "
-                         "NAME.gltf")
-    return target, buffer
+    if not external_buffers and format != "obj":
+        return target, ""
+    written = os.path.realpath(target) if os.path.islink(target) else target
+    name = os.path.splitext(os.path.basename(written))[0] + (".mtl" if format == "obj" else ".bin")
+    sidecar = os.path.join(os.path.dirname(written), name)
+    if os.path.basename(written) == name:
+        what, output = ("MTL", "NAME.obj") if format == "obj" else ("buffer", "NAME.gltf")
+        raise ValueError(f"the {what} file {sidecar!r} is the output itself; name the output "
+                         f"{output}")
+    return target, sidecar
 
 
-def _output_clash(inputs: Sequence[str], made_from: str, target: str, buffer: str
-                  ) -> Optional[str]:
+def _output_clash(inputs: Sequence[str], made_from: str, target: str, sidecar: str,
+                  format: str) -> Optional[str]:
     """The tools' check, by file identity, that no output is an input and no
     two outputs are one file: None, or the clash in their words."""
-    outputs = [(os.fsencode(buffer), os.fsencode(made_from), "its buffer")] if buffer else []
+    role = "its MTL file" if format == "obj" else "its buffer"
+    outputs = [(os.fsencode(sidecar), os.fsencode(made_from), role)] if sidecar else []
     outputs.append((os.fsencode(target), os.fsencode(made_from), ""))
     return _core.output_clash([os.fsencode(path) for path in inputs], outputs)
 
@@ -282,9 +286,9 @@ def _output_file(scene: Scene, path: str, format: str, options: Dict[str, Any]) 
     return given
 
 
-def _converted(scene: Scene, path: str, buffer: str, format: str, options: Dict[str, Any]
+def _converted(scene: Scene, path: str, sidecar: str, format: str, options: Dict[str, Any]
                ) -> Tuple[bytes, bytes, List[Diagnostic]]:
-    """The bytes of the scene in ``format``, for ``path``, its buffer's and the losses,
+    """The bytes of the scene in ``format``, for ``path``, its sidecar's and the losses,
     which name the file read, or for a scene built in Python the file written."""
     source = scene.source or path
     problems = _diagnostics(_core.validate(scene._to_data(), source))
@@ -293,13 +297,14 @@ def _converted(scene: Scene, path: str, buffer: str, format: str, options: Dict[
     core_options["generator"] = f"scenefile {__version__} (Python)"
     core_options.pop("external_buffers", None)
     core_options["output_file"] = _output_file(scene, path, format, options)
-    if buffer:
-        core_options["external_buffer"] = os.path.basename(buffer)
-    main, sidecar, diagnostics = _core.convert(scene._to_data(), format, core_options, source)
+    if sidecar:
+        key = "material_library" if format == "obj" else "external_buffer"
+        core_options[key] = os.path.basename(sidecar)
+    main, beside, diagnostics = _core.convert(scene._to_data(), format, core_options, source)
     losses = _diagnostics(diagnostics)
     if main is None:
         raise SceneError(losses)
-    return main, sidecar, losses
+    return main, beside, losses
 
 
 def _write_files(files: Sequence[Tuple[str, bytes]]) -> None:
@@ -316,11 +321,12 @@ def write(scene: Scene, path: PathLike, format: Optional[str] = None, no_loss: b
     """Writes ``scene`` to ``path``; returns the losses.
 
     The format follows the extension (.sf, .txt for an instruction file,
-    .gltf, .glb, .pov) unless ``format`` names one. What the format cannot
-    hold is reported as a warning in the list returned, or with ``no_loss``
-    raises SceneError and writes nothing. ``options`` are sfconvert's:
-    approximate, output_file, fov, width, height, tessellation,
-    external_buffers (a .gltf's buffer in NAME.bin beside it), flat, depth.
+    .gltf, .glb, .pov, .obj with its NAME.mtl beside it) unless ``format``
+    names one. What the format cannot hold is reported as a warning in the
+    list returned, or with ``no_loss`` raises SceneError and writes nothing.
+    ``options`` are sfconvert's: approximate, output_file, fov, width,
+    height, tessellation (glTF's and OBJ's), external_buffers (a .gltf's
+    buffer in NAME.bin beside it), flat, depth.
     An invalid scene raises SceneError (validate() gives its warnings too).
     The file is written as the tools write theirs: whole or not at all,
     through a symbolic link to the file it leads to, keeping the mode of a
@@ -330,13 +336,14 @@ def write(scene: Scene, path: PathLike, format: Optional[str] = None, no_loss: b
     target = _path(path, "path")
     checked = _options(dict(options, no_loss=no_loss), _WRITE_OPTIONS, "write")
     fmt = _format_for(target, format)
-    _, buffer = _output_paths(target, fmt, checked.get("external_buffers", False))
-    clash = _output_clash([], scene.source or "the scene", target, buffer)
+    _, sidecar = _output_paths(target, fmt, checked.get("external_buffers", False))
+    clash = _output_clash([], scene.source or "the scene", target, sidecar, fmt)
     if clash is not None:
         raise ValueError(clash)
-    main, sidecar, losses = _converted(scene, target, buffer, fmt, checked)
-    # In this order: a .gltf's buffer before the file that names it.
-    _write_files([(buffer, sidecar), (target, main)] if buffer else [(target, main)])
+    main, sidecar_bytes, losses = _converted(scene, target, sidecar, fmt, checked)
+    # In this order: a .gltf's buffer or an .obj's MTL file before the file
+    # that names it.
+    _write_files([(sidecar, sidecar_bytes), (target, main)] if sidecar else [(target, main)])
     return losses
 
 
@@ -349,7 +356,7 @@ def convert(src: PathLike, dst: PathLike, format: Optional[str] = None,
     applying to both, and ``width`` and ``height`` also giving a POV-Ray
     input's image size, as sfconvert takes them. Returns what reading noted
     and what writing lost. Never writes over ``src``: an output (``dst``,
-    or its buffer) that is the input file, by any name or link, is a
+    or its buffer or MTL file) that is the input file, by any name or link, is a
     ValueError, before anything is read or written.
     """
     source, target = _path(src, "src"), _path(dst, "dst")
@@ -359,8 +366,8 @@ def convert(src: PathLike, dst: PathLike, format: Optional[str] = None,
         read_options["width"], read_options["height"] = checked["width"], checked["height"]
     write_options = {k: v for k, v in checked.items() if k in _WRITE_OPTIONS}
     fmt = _format_for(target, format)
-    _, buffer = _output_paths(target, fmt, checked.get("external_buffers", False))
-    clash = _output_clash([source], source, target, buffer)
+    _, sidecar = _output_paths(target, fmt, checked.get("external_buffers", False))
+    clash = _output_clash([source], source, target, sidecar, fmt)
     if clash is not None:
         raise ValueError(f"an output is the input file: {clash}; convert never writes over its "
                          "input")

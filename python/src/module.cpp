@@ -7,7 +7,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cerrno>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +24,7 @@
 #include "scenefile/mesh.h"
 #include "scenefile/mesh_fit.h"
 #include "scenefile/read.h"
+#include "scenefile/read_file.h"
 #include "scenefile/render.h"
 #include "scenefile/spelling.h"
 #include "scenefile/transform.h"
@@ -50,7 +53,10 @@ scene::ReadOptions readOptionsFrom(const py::dict& o) {
   if (auto v = option<bool>(o, "no_loss")) options.noLoss = *v;
   if (auto v = option<std::uint64_t>(o, "max_file_size")) options.maxFileSize = *v;
   if (auto v = option<std::size_t>(o, "max_objects")) options.maxObjects = *v;
-  if (auto v = option<std::size_t>(o, "max_vertices")) options.gltf.maxVertices = *v;
+  if (auto v = option<std::size_t>(o, "max_vertices")) {
+    options.gltf.maxVertices = *v;
+    options.obj.maxVertices = *v;
+  }
   if (auto v = option<std::size_t>(o, "max_nodes")) options.gltf.maxNodes = *v;
   if (auto v = option<bool>(o, "transpose_matrices")) options.sceneFile.transposedMatrices = *v;
   if (auto v = option<bool>(o, "skip_unsupported")) options.pov.skipUnsupported = *v;
@@ -76,8 +82,9 @@ scene::ConversionOptions conversionOptionsFrom(const py::dict& o) {
   options.gltf.yfovDegrees = fov;
   options.gltf.width = width;
   options.gltf.height = height;
-  if (auto v = option<int>(o, "tessellation")) options.gltf.segments = *v;
+  if (auto v = option<int>(o, "tessellation")) options.gltf.segments = options.obj.segments = *v;
   if (auto v = option<std::string>(o, "external_buffer")) options.gltf.externalBuffer = *v;
+  if (auto v = option<std::string>(o, "material_library")) options.obj.materialLibrary = *v;
   if (auto v = option<std::string>(o, "generator")) options.gltf.generator = *v;
   options.pov.verticalFovDegrees = fov;
   if (width > 0 && height > 0) {
@@ -97,17 +104,14 @@ std::string_view bytesView(const py::bytes& data) {
   return {PyBytes_AS_STRING(data.ptr()), static_cast<std::size_t>(PyBytes_GET_SIZE(data.ptr()))};
 }
 
-// parse(data, name, format, options) -> (SceneData | None, diagnostics, format name | None)
-py::tuple parse(const py::bytes& data, const py::str& name,
-                const std::optional<std::string>& format, const py::dict& options) {
-  scene::ReadOptions read = readOptionsFrom(options);
-  std::string file = encodeText(name, "the file name");
-  std::string_view text = bytesView(data);
-  const scene::FormatInfo* as = format ? &formatNamed(*format) : nullptr;
+// The scene in `text`, named `file`, read as the format named `format` or
+// as detected: (SceneData | None, diagnostics, format name | None).
+py::tuple parseText(std::string_view text, const std::string& file, const scene::FormatInfo* as,
+                    const scene::ReadOptions& read) {
   scene::ReadResult result;
   std::optional<scene::Format> detected;
   {
-    // bytes are immutable and `data` holds them: safe to read unlocked.
+    // The text is the caller's and stays put: safe to read unlocked.
     py::gil_scoped_release release;
     detected = as ? std::optional<scene::Format>(as->format) : scene::detectFormat(text, file);
     result = as ? scene::parseSceneAs(as->format, text, file, read)
@@ -117,6 +121,42 @@ py::tuple parse(const py::bytes& data, const py::str& name,
   if (detected) formatName = py::str(std::string(scene::formatInfo(*detected).name));
   py::object sceneData = result.ok() ? py::object(sceneToData(result.scene)) : py::none();
   return py::make_tuple(sceneData, diagnosticsToData(result.diagnostics), formatName);
+}
+
+// parse(data, name, format, options) -> (SceneData | None, diagnostics, format name | None)
+py::tuple parse(const py::bytes& data, const py::str& name,
+                const std::optional<std::string>& format, const py::dict& options) {
+  const scene::FormatInfo* as = format ? &formatNamed(*format) : nullptr;
+  return parseText(bytesView(data), encodeText(name, "the file name"), as,
+                   readOptionsFrom(options));
+}
+
+// read_file(path, name, format, options)
+//   -> (SceneData | None, diagnostics, format name | None, errno)
+// The file at `path` (bytes, os.fsencode) read as the tools read theirs
+// (scenefile/read_file.h), its diagnostics naming it `name`; errno is the
+// system's error when it could not be read, else 0, and then there is no
+// diagnostic: Python raises OSError instead.
+py::tuple readFile(const py::bytes& path, const py::str& name,
+                   const std::optional<std::string>& format, const py::dict& options) {
+  const scene::FormatInfo* as = format ? &formatNamed(*format) : nullptr;
+  scene::ReadOptions read = readOptionsFrom(options);
+  std::filesystem::path where(std::string(bytesView(path)));
+  std::string file = encodeText(name, "the file name");
+  scene::SourceText source;
+  {
+    py::gil_scoped_release release;
+    source = scene::readSourceFile(where, read, file);
+  }
+  if (!source.readError.empty()) {
+    int code = source.readErrorCode ? source.readErrorCode.value() : EIO;
+    return py::make_tuple(py::none(), py::list(), py::none(), code);
+  }
+  if (!source.text) {
+    return py::make_tuple(py::none(), diagnosticsToData(source.diagnostics), py::none(), 0);
+  }
+  py::tuple parsed = parseText(*source.text, file, as, read);
+  return py::make_tuple(parsed[0], parsed[1], parsed[2], 0);
 }
 
 py::list checkFileSize(std::uint64_t size, const py::str& name, const py::dict& options) {
@@ -342,6 +382,8 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "the C++ side of the scenefile package: plain data in, plain data out (_core.pyi)";
   m.attr("__version__") = SCENEFILE_VERSION;
   m.def("parse", &sp::parse, py::arg("data"), py::arg("name"), py::arg("format"),
+        py::arg("options"));
+  m.def("read_file", &sp::readFile, py::arg("path"), py::arg("name"), py::arg("format"),
         py::arg("options"));
   m.def("check_file_size", &sp::checkFileSize, py::arg("size"), py::arg("name"),
         py::arg("options"));

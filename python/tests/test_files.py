@@ -89,6 +89,31 @@ def test_a_gltf_and_its_buffer_are_written_both_or_neither(scene, tmp_path):
     assert entries(tmp_path) == ["out.gltf"]
 
 
+def test_an_obj_and_its_mtl_are_written_both_or_neither(scene, tmp_path):
+    (tmp_path / "out.obj").mkdir()
+    with pytest.raises(OSError, match="out.obj.*it is a directory"):
+        scenefile.write(scene, tmp_path / "out.obj")
+    assert entries(tmp_path) == ["out.obj"], "the MTL file was not written either"
+
+
+def test_an_obj_through_a_link_has_its_mtl_beside_the_file_it_leads_to(scene, tmp_path):
+    (tmp_path / "real").mkdir()
+    os.symlink("real/scene.obj", tmp_path / "link.obj")
+    scenefile.write(scene, tmp_path / "link.obj")
+    assert entries(tmp_path / "real") == ["scene.mtl", "scene.obj"]
+    assert b"\nmtllib scene.mtl\n" in (tmp_path / "real" / "scene.obj").read_bytes()
+
+
+def test_an_obj_named_mtl_and_an_mtl_over_the_input_are_refused(tmp_path):
+    with pytest.raises(ValueError, match="the MTL file .* is the output itself; name the "
+                                         "output NAME.obj"):
+        scenefile.convert(ALL, tmp_path / "scene.mtl", format="obj")
+    source = copy_of(ALL, tmp_path / "scene.mtl")
+    with pytest.raises(ValueError, match="scene.mtl.*input"):
+        scenefile.convert(source, tmp_path / "scene.obj")
+    assert entries(tmp_path) == ["scene.mtl"], "nothing written"
+
+
 def test_write_may_replace_the_file_the_scene_came_from(tmp_path):
     path = tmp_path / "scene.sf"
     path.write_bytes(open(ALL, "rb").read())

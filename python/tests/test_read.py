@@ -3,6 +3,7 @@ same diagnostics, the same first error."""
 
 import json
 import os
+import threading
 
 import pytest
 
@@ -128,6 +129,52 @@ def test_a_file_that_cannot_be_read_raises_oserror(tmp_path):
         scenefile.read(tmp_path)
     with pytest.raises(FileNotFoundError):
         scenefile.check(str(tmp_path / "missing.sf"))
+
+
+def test_an_unreadable_file_is_oserror_in_pythons_words(tmp_path):
+    missing = str(tmp_path / "missing.sf")
+    with pytest.raises(FileNotFoundError) as caught:
+        scenefile.read(missing)
+    assert str(caught.value) == f"[Errno 2] No such file or directory: {missing!r}"
+    assert caught.value.filename == missing
+    with pytest.raises(IsADirectoryError, match=r"^\[Errno 21\] Is a directory: "):
+        scenefile.check(tmp_path)
+
+
+def fed_pipe(path, data):
+    """A pipe at ``path`` that a thread writes ``data`` into once it is opened."""
+    os.mkfifo(path)
+
+    def feed():
+        with open(path, "wb") as pipe:
+            try:
+                pipe.write(data)
+            except BrokenPipeError:
+                pass
+
+    threading.Thread(target=feed, daemon=True).start()
+    return path
+
+
+def test_a_pipe_is_read_as_the_tools_read_it(tmp_path):
+    # Its size unknown until read: more than the limit is refused, not cut.
+    path = os.path.join(TESTDATA, "valid", "all-primitives.sf")
+    data = open(path, "rb").read()
+    with pytest.raises(scenefile.SceneError) as caught:
+        scenefile.read(fed_pipe(tmp_path / "big.sf", data), max_file_size=10)
+    assert [d.code for d in caught.value.errors] == ["file-too-large"]
+    assert caught.value.errors[0].message == "the input is more than the limit of 10 bytes"
+    assert scenefile.check(fed_pipe(tmp_path / "c.sf", data), max_file_size=10)[0].code == (
+        "file-too-large")
+    assert scenefile.read(fed_pipe(tmp_path / "whole.sf", data)) == scenefile.read(path)
+
+
+def test_max_vertices_holds_obj_too():
+    path = os.path.join(TESTDATA, "obj", "blender-cube.obj")
+    with pytest.raises(scenefile.SceneError) as caught:
+        scenefile.read(path, max_vertices=3)
+    assert caught.value.errors[0].code == "obj-too-large"
+    assert len(scenefile.read(path).objects) == 1
 
 
 def test_limits_are_the_tools(tmp_path):

@@ -92,6 +92,25 @@ def test_a_gltf_buffer_beside_the_file(sfconvert, tmp_path):
         scenefile.convert(ALL, tmp_path / "x.glb", external_buffers=True)
 
 
+@pytest.mark.parametrize("flags, options", [([], {}), (["--tessellation", "7"],
+                                                      {"tessellation": 7})])
+def test_an_obj_and_its_mtl_are_sfconverts(sfconvert, tmp_path, flags, options):
+    theirs, ours = tmp_path / "theirs", tmp_path / "ours"
+    theirs.mkdir()
+    ours.mkdir()
+    status, their_losses = sfconvert_losses(sfconvert, ALL, theirs / "all.obj", flags)
+    assert status == 0
+    losses = scenefile.convert(ALL, ours / "all.obj", **options)
+    assert sorted(os.listdir(ours)) == ["all.mtl", "all.obj"]
+    for name in ["all.obj", "all.mtl"]:
+        assert (ours / name).read_bytes() == (theirs / name).read_bytes(), name
+    assert [(d.code, d.line, d.message) for d in losses] == their_losses
+    scenefile.write(scenefile.read(ALL), tmp_path / "written.obj", **options)
+    assert (tmp_path / "written.obj").read_bytes() == (theirs / "all.obj").read_bytes().replace(
+        b"mtllib all.mtl", b"mtllib written.mtl")
+    assert (tmp_path / "written.mtl").read_bytes() == (theirs / "all.mtl").read_bytes()
+
+
 def test_no_loss_writes_nothing(sfconvert, tmp_path):
     target = tmp_path / "cube.sf"
     target.write_text("before\n")
