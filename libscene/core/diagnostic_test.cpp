@@ -36,7 +36,7 @@ TEST(DiagnosticCodes, AllCodesAreTheEnumInOrder) {
   for (std::size_t i = 0; i < codes.size(); ++i) {
     EXPECT_EQ(static_cast<std::size_t>(codes[i]), i) << codeName(codes[i]);
   }
-  EXPECT_EQ(codes.back(), DiagnosticCode::CannotReadFile);
+  EXPECT_EQ(codes.back(), DiagnosticCode::GltfExtrasLeftOut);
   EXPECT_EQ(codeName(static_cast<DiagnosticCode>(codes.size())), "unknown");
 }
 
@@ -194,7 +194,7 @@ TEST(DiagnosticCodes, TheDocsCiteOnlyCurrentNames) {
 
 // Every code a file can draw from a check appears in the expected
 // diagnostics of the corpus; the conversion codes are pinned by
-// writers_test.cpp, gltf_writer_test.cpp, gltf_lights_test.cpp and
+// writers_test.cpp, gltf_writer_test.cpp, gltf_lights_test.cpp, gltf_no_extras_test.cpp and
 // obj_writer_test.cpp, which a
 // check never reports,
 // and cannot-read-file by read_file_test.cpp (the tools print it as a file
@@ -207,7 +207,8 @@ TEST(DiagnosticCodes, EveryCheckCodeIsExercisedByTheCorpus) {
       DiagnosticCode::IgnoredLightMatrix,     DiagnosticCode::PlaneMadeFinite,
       DiagnosticCode::GltfValueClamped,       DiagnosticCode::GltfExtrasOnly,
       DiagnosticCode::GltfMatrixSplit,        DiagnosticCode::GltfLightLeftOut,
-      DiagnosticCode::CannotReadFile,         DiagnosticCode::ObjWriteLoss};
+      DiagnosticCode::CannotReadFile,         DiagnosticCode::ObjWriteLoss,
+      DiagnosticCode::GltfExtrasLeftOut};
   std::string expected;
   for (const auto& entry :
        std::filesystem::recursive_directory_iterator(std::filesystem::path(SCENE_TESTDATA_DIR))) {

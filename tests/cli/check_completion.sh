@@ -38,7 +38,7 @@ expect() {
 }
 
 expect "--color " sfrender --col
-expect "--no-clobber --no-lights --no-loss " sfconvert --no-
+expect "--no-clobber --no-extras --no-lights --no-loss " sfconvert --no-
 expect "always auto never " sfcheck --color ""
 expect "json " sfcheck --format j
 expect "json " sfcheck --format = j

@@ -20,6 +20,7 @@ scene::ConversionOptions conversionOptionsFor(const SfconvertOptions& o, bool to
   options.gltf.segments = o.tessellation;
   options.gltf.externalBuffer = bufferFile;
   options.gltf.lights = !o.noLights;
+  options.gltf.extras = !o.noExtras;
   options.gltf.lightFalloff = o.lightFalloff == "none" ? scene::GltfLightFalloff::None
                                                        : scene::GltfLightFalloff::InverseSquare;
   options.gltf.generator = std::string("sfconvert ") + SCENEFILE_VERSION;

@@ -46,6 +46,9 @@ void addFormatOptions(CLI::App& app, SfconvertOptions& o) {
   app.add_flag("--no-lights", o.noLights,
                "glTF: leave the lights out (each reported), for readers that refuse "
                "KHR_lights_punctual, as assimp 5.2 does");
+  app.add_flag("--no-extras", o.noExtras,
+               "glTF: leave out the exact values kept in extras (reported), for readers that "
+               "cannot copy them, as assimp 5.2's export; the file reads back by mesh fitting");
   app.add_option("--light-falloff", o.lightFalloff,
                  "glTF: how the viewer's point lights fall off, which their intensities are made "
                  "for: inverse-square (glTF's rule: Blender, three.js; default) or none (f3d 1.3)")

@@ -31,6 +31,7 @@ struct SfconvertOptions {
   bool externalBuffers = false;
   int tessellation = scene::kDefaultSegments;
   bool noLights = false;
+  bool noExtras = false;
   std::string lightFalloff = "inverse-square";
   bool flat = false;
   bool skipUnsupported = false;

@@ -59,6 +59,11 @@ struct GltfWriteOptions {
   /// them out, each reported (gltf-light-left-out), for readers that refuse
   /// the extension (assimp 5.2).
   bool lights = true;
+  /// Whether the exact values ride in `extras` (docs/GLTF.md, "Extras");
+  /// false leaves every one out, reported once (gltf-extras-left-out), for
+  /// readers that cannot copy object or array extras (assimp 5.2's export):
+  /// the file then reads back by mesh fitting.
+  bool extras = true;
   /// How the lights are scaled (docs/GLTF.md, "Lights").
   GltfLightFalloff lightFalloff = GltfLightFalloff::InverseSquare;
   /// The asset's generator string.

@@ -54,6 +54,12 @@ Json columnsJson(const glm::dmat4& m) {
   return out;
 }
 
+// Our exact values under `extras` (gltf_extras.h), unless the glTF is
+// written without them.
+void putExtras(Json& into, Json sf, bool extras) {
+  if (extras) into["extras"] = gltf::extrasJson(std::move(sf));
+}
+
 std::string base64(std::string_view bytes) {
   static constexpr char kAlphabet[] =
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -235,8 +241,8 @@ std::string lowerCase(std::string_view name) {
   return out;
 }
 
-Json materialJson(const Material& material, ObjectKind kind, std::set<std::string>& extensions,
-                  int number) {
+Json materialJson(const Material& material, ObjectKind kind, bool extras,
+                  std::set<std::string>& extensions, int number) {
   gltf::PbrMaterial pbr = gltf::pbrFromMaterial(material, kind);
   Json out = {{"name", "material " + std::to_string(number)}};
   out["pbrMetallicRoughness"] = {
@@ -255,7 +261,7 @@ Json materialJson(const Material& material, ObjectKind kind, std::set<std::strin
   for (MaterialProperty p : kMaterialProperties) {
     sf[lowerCase(materialPropertyName(p))] = materialValue(material, p);
   }
-  out["extras"] = gltf::extrasJson(std::move(sf));
+  putExtras(out, std::move(sf), extras);
   return out;
 }
 
@@ -299,14 +305,29 @@ std::string colourText(const glm::dvec3& c) {
 }
 
 // Every value glTF cannot hold as it is, reported at its record.
+// Where values go that glTF cannot hold: how severe a loss is, and whether
+// the exact values ride in extras (the hints say so only then).
+struct LossReport {
+  Severity severity;
+  bool extras;
+  DiagnosticList& out;
+
+  Diagnostic& loss(DiagnosticCode code, SourceSpan span, std::string message,
+                   std::string extrasHint) {
+    Diagnostic& d = out.report(severity, code, span, std::move(message));
+    if (extras) d.hint = std::move(extrasHint);
+    return d;
+  }
+};
+
 void reportBeyondFloat(const glm::dmat4& m, const std::string& label, SourceSpan span,
-                       Severity severity, DiagnosticList& out) {
+                       LossReport& report) {
   if (gltf::withinFloatRange(m) == m) return;
-  out.report(severity, DiagnosticCode::GltfValueClamped, span,
-             "the matrix of " + label +
-                 " holds a value beyond single precision (3.4e38), where glTF readers hold node "
-                 "matrices: the node gets the nearest float")
-      .hint = "the exact matrix rides in extras";
+  report.loss(DiagnosticCode::GltfValueClamped, span,
+              "the matrix of " + label +
+                  " holds a value beyond single precision (3.4e38), where glTF readers hold node "
+                  "matrices: the node gets the nearest float",
+              "the exact matrix rides in extras");
 }
 
 // Each LIGHT's glTF light: matched to the scene's light at its reference
@@ -335,94 +356,118 @@ std::vector<LightPlan> planLights(const Scene& scene, const gltf::ReferencePoint
   return plans;
 }
 
-void reportLightLosses(const Scene& scene, Severity lossSeverity,
-                       const gltf::ReferencePoint& reference, const std::vector<LightPlan>& plans,
-                       DiagnosticList& out) {
+void reportLightLosses(const Scene& scene, const gltf::ReferencePoint& reference,
+                       const std::vector<LightPlan>& plans, LossReport& report) {
   std::string where = gltf::describeReferencePoint(reference);
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     std::string label = "LIGHT " + std::to_string(i + 1);
     if (plans.empty()) {
-      out.report(lossSeverity, DiagnosticCode::GltfLightLeftOut, scene.lights[i].span,
-                 label + " (COLOUR " + colourText(scene.lights[i].colour) +
-                     ") is left out: the glTF is written without lights");
+      report.out.report(report.severity, DiagnosticCode::GltfLightLeftOut, scene.lights[i].span,
+                        label + " (COLOUR " + colourText(scene.lights[i].colour) +
+                            ") is left out: the glTF is written without lights");
       continue;
     }
     const LightPlan& plan = plans[i];
     reportBeyondFloat(gltf::lightNodeMatrix(scene.lights[i].matrix), label, scene.lights[i].span,
-                      lossSeverity, out);
+                      report);
     if (!plan.distance) {
       if (plan.point.clamped) {
-        out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
-                   "the intensity of " + label +
-                       " is beyond single precision, where glTF readers hold it: it is clamped "
-                       "to " +
-                       gltf::approximateNumber(plan.point.intensity))
-            .hint = "the exact colour rides in extras";
+        report.loss(DiagnosticCode::GltfValueClamped, scene.lights[i].span,
+                    "the intensity of " + label +
+                        " is beyond single precision, where glTF readers hold it: it is clamped "
+                        "to " +
+                        gltf::approximateNumber(plan.point.intensity),
+                    "the exact colour rides in extras");
       }
       continue;
     }
     if (plan.point.clamped) {
-      out.report(lossSeverity, DiagnosticCode::GltfValueClamped, scene.lights[i].span,
-                 "the intensity that matches " + label + " at its reference distance " +
-                     gltf::approximateNumber(*plan.distance) +
-                     " is beyond single precision, where glTF readers hold it: it is clamped to " +
-                     gltf::approximateNumber(plan.point.intensity) + " cd")
-          .hint = "the exact colour rides in extras";
+      report.loss(DiagnosticCode::GltfValueClamped, scene.lights[i].span,
+                  "the intensity that matches " + label + " at its reference distance " +
+                      gltf::approximateNumber(*plan.distance) +
+                      " is beyond single precision, where glTF readers hold it: it is clamped "
+                      "to " +
+                      gltf::approximateNumber(plan.point.intensity) + " cd",
+                  "the exact colour rides in extras");
     }
-    out.note(DiagnosticCode::LightFalloff, scene.lights[i].span,
-             label +
-                 " becomes a KHR_lights_punctual point light, whose light falls off with the "
-                 "square of the distance where a scene file's does not: its intensity, " +
-                 gltf::approximateNumber(plan.point.intensity) + " cd, matches " + label +
-                 " at the reference distance " + gltf::approximateNumber(*plan.distance) +
-                 ", from the light to " + where);
+    report.out.note(DiagnosticCode::LightFalloff, scene.lights[i].span,
+                    label +
+                        " becomes a KHR_lights_punctual point light, whose light falls off with "
+                        "the square of the distance where a scene file's does not: its "
+                        "intensity, " +
+                        gltf::approximateNumber(plan.point.intensity) + " cd, matches " + label +
+                        " at the reference distance " + gltf::approximateNumber(*plan.distance) +
+                        ", from the light to " + where);
   }
 }
 
-void reportLosses(const Scene& scene, Severity lossSeverity, float planeSize,
-                  const gltf::ReferencePoint& reference, const std::vector<LightPlan>& lights,
-                  DiagnosticList& out) {
+// A material value with no glTF counterpart rides in extras alone; without
+// extras it is lost.
+void reportExtrasOnly(const Material& m, const std::string& label, SourceSpan span,
+                      LossReport& report) {
+  // A glass reflects by its IOR's Fresnel term alone: its REFLECTIVITY
+  // has no counterpart.
+  for (MaterialProperty p :
+       {MaterialProperty::Ambient, MaterialProperty::Diffuse, MaterialProperty::Reflectivity}) {
+    double value = materialValue(m, p);
+    if (value == defaultMaterialValue(p)) continue;
+    if (p == MaterialProperty::Reflectivity && m.transparency <= 0.0) continue;
+    std::string what = std::string(materialPropertyName(p)) + " " + formatNumber(value) + " of " +
+                       label + " has no glTF counterpart";
+    if (report.extras) {
+      report.out.note(DiagnosticCode::GltfExtrasOnly, span, what + " and rides in extras alone");
+    } else {
+      report.out.report(report.severity, DiagnosticCode::LossMaterial, span,
+                        what + " and is dropped: the glTF is written without extras");
+    }
+  }
+}
+
+void reportLosses(const Scene& scene, float planeSize, const gltf::ReferencePoint& reference,
+                  const std::vector<LightPlan>& lights, LossReport& report) {
+  if (!report.extras) {
+    report.out
+        .report(report.severity, DiagnosticCode::GltfExtrasLeftOut, {},
+                "the glTF is written without extras, so it keeps no exact values: not the "
+                "matrices, the object kinds, the material terms, PLANE's infiniteness, the "
+                "CAMERA's colour and look-at point, the LIGHTs' colours, nor OUTPUT_FILE")
+        .hint =
+        "read back, each object is found by fitting its mesh, and the rest comes from "
+        "the glTF values";
+  }
   reportBeyondFloat(gltf::cameraNodeMatrix(scene.camera.matrix), "the CAMERA", scene.camera.span,
-                    lossSeverity, out);
-  reportLightLosses(scene, lossSeverity, reference, lights, out);
+                    report);
+  reportLightLosses(scene, reference, lights, report);
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     const Material& m = object.material;
     std::string label = objectLabel(object, i);
-    reportBeyondFloat(object.matrix, label, object.span, lossSeverity, out);
+    reportBeyondFloat(object.matrix, label, object.span, report);
     if (object.kind == ObjectKind::Plane) {
-      out.report(lossSeverity, DiagnosticCode::PlaneMadeFinite, object.span,
-                 label + " is infinite; glTF gets a square of half-size " +
-                     formatNumber(planeSize) + " in the plane's own space")
-          .hint = "the kind rides in extras, so the glTF reader reads it back as an infinite PLANE";
+      report.loss(DiagnosticCode::PlaneMadeFinite, object.span,
+                  label + " is infinite; glTF gets a square of half-size " +
+                      formatNumber(planeSize) + " in the plane's own space",
+                  "the kind rides in extras, so the glTF reader reads it back as an infinite "
+                  "PLANE");
     }
     if (m.colour.x > 1.0 || m.colour.y > 1.0 || m.colour.z > 1.0) {
-      out.report(lossSeverity, DiagnosticCode::GltfValueClamped, object.span,
-                 "COLOUR " + colourText(m.colour) + " of " + label +
-                     " is clamped to 1 in baseColorFactor")
-          .hint = "the exact colour rides in extras";
+      report.loss(
+          DiagnosticCode::GltfValueClamped, object.span,
+          "COLOUR " + colourText(m.colour) + " of " + label + " is clamped to 1 in baseColorFactor",
+          "the exact colour rides in extras");
     }
     if (m.ri < 1.0) {
-      out.report(lossSeverity, DiagnosticCode::GltfValueClamped, object.span,
-                 "RI " + formatNumber(m.ri) + " of " + label + " is written as KHR_materials_ior 1")
-          .hint = "the exact value rides in extras";
+      report.loss(
+          DiagnosticCode::GltfValueClamped, object.span,
+          "RI " + formatNumber(m.ri) + " of " + label + " is written as KHR_materials_ior 1",
+          "the exact value rides in extras");
     }
-    // A glass reflects by its IOR's Fresnel term alone: its REFLECTIVITY
-    // has no counterpart.
-    for (MaterialProperty p :
-         {MaterialProperty::Ambient, MaterialProperty::Diffuse, MaterialProperty::Reflectivity}) {
-      double value = materialValue(m, p);
-      if (value == defaultMaterialValue(p)) continue;
-      if (p == MaterialProperty::Reflectivity && m.transparency <= 0.0) continue;
-      out.note(DiagnosticCode::GltfExtrasOnly, object.span,
-               std::string(materialPropertyName(p)) + " " + formatNumber(value) + " of " + label +
-                   " has no glTF counterpart and rides in extras alone");
-    }
+    reportExtrasOnly(m, label, object.span, report);
     if (!gltf::isTrsMatrix(object.matrix)) {
-      out.note(DiagnosticCode::GltfMatrixSplit, object.span,
-               "the matrix of " + label +
-                   " has shear, which one glTF node cannot hold: it is written as a chain of "
-                   "three nodes (translation and rotation, scale, rotation)");
+      report.out.note(DiagnosticCode::GltfMatrixSplit, object.span,
+                      "the matrix of " + label +
+                          " has shear, which one glTF node cannot hold: it is written as a chain "
+                          "of three nodes (translation and rotation, scale, rotation)");
     }
   }
 }
@@ -483,10 +528,11 @@ void addCamera(const Scene& scene, const GltfWriteOptions& options, Json& doc, P
   // A scene without a View, written with the default field of view, reads
   // back without one: the yfov is then the writer's, not the scene's.
   if (defaultView) sf["view"] = false;
-  parts.nodes[node]["extras"] = gltf::extrasJson(std::move(sf));
+  putExtras(parts.nodes[node], std::move(sf), options.extras);
 }
 
-void addLights(const Scene& scene, const std::vector<LightPlan>& plans, Json& doc, Parts& parts) {
+void addLights(const Scene& scene, const std::vector<LightPlan>& plans, bool extras, Json& doc,
+               Parts& parts) {
   if (plans.empty()) return;
   Json lights = Json::array();
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
@@ -504,7 +550,7 @@ void addLights(const Scene& scene, const std::vector<LightPlan>& plans, Json& do
                {"colour", vec3Json(light.colour)},
                {"matrix", rowsJson(light.matrix)}};
     if (plans[i].distance) sf["referenceDistance"] = *plans[i].distance;
-    parts.nodes[node]["extras"] = gltf::extrasJson(std::move(sf));
+    putExtras(parts.nodes[node], std::move(sf), extras);
   }
   parts.extensions.insert("KHR_lights_punctual");
   doc["extensions"] = {{"KHR_lights_punctual", {{"lights", std::move(lights)}}}};
@@ -532,7 +578,8 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
     auto [material, newMaterial] =
         materialIndex.emplace(materialKey(object.material, doubleSided), parts.materials.size());
     if (newMaterial) {
-      parts.materials.push_back(materialJson(object.material, object.kind, parts.extensions,
+      parts.materials.push_back(materialJson(object.material, object.kind, options.extras,
+                                             parts.extensions,
                                              static_cast<int>(parts.materials.size()) + 1));
     }
     auto [mesh, newMesh] =
@@ -554,13 +601,13 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
                {"object", i + 1}};
     if (object.transforms) sf["transforms"] = transformsJson(*object.transforms);
     meshObjects[mesh->second].push_back(sf);
-    parts.nodes[node]["extras"] = gltf::extrasJson(std::move(sf));
+    putExtras(parts.nodes[node], std::move(sf), options.extras);
   }
   // Each mesh names its objects too: a program that replaces their nodes by
   // instances of the mesh (glTF-Transform's `instance`) drops the nodes'
   // extras, and keeps the mesh's.
   for (auto& [mesh, objects] : meshObjects) {
-    parts.meshes[mesh]["extras"] = gltf::extrasJson({{"objects", std::move(objects)}});
+    putExtras(parts.meshes[mesh], {{"objects", std::move(objects)}}, options.extras);
   }
 }
 
@@ -622,17 +669,18 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
   gltf::ReferencePoint reference = gltf::referencePoint(scene);
   std::vector<LightPlan> lights;
   if (options.lights) lights = planLights(scene, reference, options.lightFalloff);
-  reportLosses(scene, conversion.noLoss ? Severity::Error : Severity::Warning, planeSize, reference,
-               lights, out);
+  LossReport report{conversion.noLoss ? Severity::Error : Severity::Warning, options.extras, out};
+  reportLosses(scene, planeSize, reference, lights, report);
   if (out.errorCount() != errorsBefore) return std::nullopt;
 
   Json doc;
   Json asset = {{"version", "2.0"}, {"generator", options.generator}};
-  if (scene.outputFile) asset["extras"] = {{gltf::kExtrasKey, {{"outputFile", *scene.outputFile}}}};
+  if (scene.outputFile && options.extras)
+    asset["extras"] = {{gltf::kExtrasKey, {{"outputFile", *scene.outputFile}}}};
   doc["asset"] = std::move(asset);
   Parts parts;
   addCamera(scene, options, doc, parts);
-  addLights(scene, lights, doc, parts);
+  addLights(scene, lights, options.extras, doc, parts);
   addObjects(scene, options, planeSize, parts);
   assemble(doc, parts);
   if (std::optional<std::string> where = firstNonFinite(doc, "")) {
