@@ -60,7 +60,8 @@ _WRITE_OPTIONS: Dict[str, Tuple[type, float, float]] = {
     "no_loss": (bool, 0, 1), "approximate": (bool, 0, 1), "output_file": (str, 0, 0),
     "fov": (View, 0, 0), "width": (int, 1, _SIDE), "height": (int, 1, _SIDE),
     "tessellation": (int, 3, 1024), "external_buffers": (bool, 0, 1), "flat": (bool, 0, 1),
-    "depth": (int, 0, 1000),
+    "depth": (int, 0, 1000), "no_lights": (bool, 0, 1), "no_extras": (bool, 0, 1),
+    "light_falloff": (str, 0, 0),
 }
 
 
@@ -326,7 +327,8 @@ def write(scene: Scene, path: PathLike, format: Optional[str] = None, no_loss: b
     list returned, or with ``no_loss`` raises SceneError and writes nothing.
     ``options`` are sfconvert's: approximate, output_file, fov, width,
     height, tessellation (glTF's and OBJ's), external_buffers (a .gltf's
-    buffer in NAME.bin beside it), flat, depth.
+    buffer in NAME.bin beside it), no_lights, no_extras, light_falloff
+    ("inverse-square" or "none"), flat, depth.
     An invalid scene raises SceneError (validate() gives its warnings too).
     The file is written as the tools write theirs: whole or not at all,
     through a symbolic link to the file it leads to, keeping the mode of a

@@ -86,6 +86,15 @@ scene::ConversionOptions conversionOptionsFrom(const py::dict& o) {
   if (auto v = option<std::string>(o, "external_buffer")) options.gltf.externalBuffer = *v;
   if (auto v = option<std::string>(o, "material_library")) options.obj.materialLibrary = *v;
   if (auto v = option<std::string>(o, "generator")) options.gltf.generator = *v;
+  if (auto v = option<bool>(o, "no_lights")) options.gltf.lights = !*v;
+  if (auto v = option<bool>(o, "no_extras")) options.gltf.extras = !*v;
+  if (auto v = option<std::string>(o, "light_falloff")) {
+    if (*v != "inverse-square" && *v != "none") {
+      throw py::value_error("light_falloff must be 'inverse-square' or 'none', not '" + *v + "'");
+    }
+    options.gltf.lightFalloff =
+        *v == "none" ? scene::GltfLightFalloff::None : scene::GltfLightFalloff::InverseSquare;
+  }
   options.pov.verticalFovDegrees = fov;
   if (width > 0 && height > 0) {
     options.pov.width = width;

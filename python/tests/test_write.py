@@ -23,6 +23,8 @@ CONVERSIONS = [
                          "--tessellation", "12"],
      {"fov": 45, "width": 800, "height": 600, "tessellation": 12}),
     (ALL, "all.glb", [], {}),
+    (ALL, "all-for-assimp.gltf", ["--no-lights", "--no-extras", "--light-falloff", "none"],
+     {"no_lights": True, "no_extras": True, "light_falloff": "none"}),
     (ALL, "all.pov", ["--flat", "--width", "320"], {"flat": True, "width": 320}),
     (SHEAR, "shear.txt", ["--approximate"], {"approximate": True}),
     (GLTF, "torus.sf", [], {}),
@@ -153,6 +155,9 @@ def test_the_format_comes_from_the_extension_or_is_named(tmp_path):
         scenefile.write(scene, tmp_path / "x.gltf", tesselation=8)
     with pytest.raises(ValueError, match="between 3 and 1024"):
         scenefile.write(scene, tmp_path / "x.gltf", tessellation=2)
+    with pytest.raises(ValueError, match="light_falloff must be 'inverse-square' or 'none'"):
+        scenefile.write(scene, tmp_path / "x.gltf", light_falloff="linear")
+    assert not (tmp_path / "x.gltf").exists()
 
 
 def test_files_get_the_mode_umask_leaves(tmp_path):
