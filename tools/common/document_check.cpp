@@ -14,7 +14,8 @@ DocumentCheck checkDocument(std::string_view text, const std::string& shownName,
     scene::checkOutputLocation(check.result.scene, folder, scene::Severity::Warning,
                                check.result.diagnostics);
   }
-  // Whatever the format: sfrender writes the OUTPUT_FILE of each.
+  // Whatever the format: the OUTPUT_FILE a glTF, POV-Ray or OBJ file carries
+  // becomes an instruction file's again when converted, and sfrender writes it.
   checkOutputFileFormat(check.result.scene, scene::Severity::Warning, check.result.diagnostics);
   return check;
 }
