@@ -123,6 +123,27 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
   return bytes;
 }
 
+namespace {
+
+template <typename T>
+std::uint64_t capacityBytes(const std::vector<T>& v) {
+  return static_cast<std::uint64_t>(v.capacity()) * sizeof(T);
+}
+
+}  // namespace
+
+RenderSceneMemory RenderScene::memory() const {
+  RenderSceneMemory memory;
+  memory.records = capacityBytes(objects_) + capacityBytes(linearToWorld_) +
+                   capacityBytes(materials_) + capacityBytes(sceneObjects_) +
+                   capacityBytes(bounded_) + capacityBytes(planes_) + capacityBytes(planeNormals_) +
+                   capacityBytes(lights_);
+  memory.bvh = capacityBytes(bvh_.nodes()) + capacityBytes(bvh_.items());
+  memory.grids = capacityBytes(leafOf_);
+  for (const DirectionGrid& grid : lightGrids_) memory.grids += grid.bytes();
+  return memory;
+}
+
 RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids)
     : camera_(scene.camera) {
   // As many as the BVH's build starts, at most.

@@ -85,6 +85,14 @@ struct EyeGrid {
   }
 };
 
+/// What a RenderScene holds after its build, by part, in bytes (the
+/// capacities of its arrays): for a memory report.
+struct RenderSceneMemory {
+  std::uint64_t records = 0;  ///< the objects' and lights' records
+  std::uint64_t bvh = 0;      ///< the hierarchy
+  std::uint64_t grids = 0;    ///< the lights' direction grids
+};
+
 class RenderScene {
  public:
   /// Compiles the scene, its BVH built on `threads` threads (0: every
@@ -109,6 +117,9 @@ class RenderScene {
   /// scene::Scene itself is not counted. Saturates: a hostile count gives
   /// UINT64_MAX, never a wrapped figure.
   static Bytes bytesFor(std::uint64_t objects, std::uint64_t lights);
+
+  /// What this scene holds, by part.
+  RenderSceneMemory memory() const;
 
   /// The objects' records, numbered as every object here is (Hit::object,
   /// RaySource::object, the accessors below): the planes first, then the

@@ -1,0 +1,90 @@
+// A scene built batch by batch is the scene built whole: the same records,
+// hierarchy, hits and images, however the objects were split.
+#include "renderer/render_scene_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "renderer/render.h"
+#include "renderer/test_scenes.h"
+
+namespace render {
+namespace {
+
+using namespace render::testing;
+
+// The scene built from `s`'s objects added in `batches` batches of nearly
+// equal sizes.
+RenderScene builtInBatches(const scene::Scene& s, int batches, int threads) {
+  RenderSceneBuilder builder(threads);
+  const std::size_t count = s.objects.size();
+  for (int b = 0; b < batches; ++b) {
+    std::size_t begin = count * b / batches;
+    std::size_t end = count * (b + 1) / batches;
+    builder.add(std::span<const scene::Object>(s.objects).subspan(begin, end - begin));
+  }
+  return std::move(builder).finish(s);
+}
+
+void expectSameRecords(const RenderScene& a, const RenderScene& b) {
+  ASSERT_EQ(a.objects().size(), b.objects().size());
+  for (std::uint32_t r = 0; r < a.objects().size(); ++r) {
+    ASSERT_EQ(a.sceneObject(r), b.sceneObject(r)) << "object " << r;
+    ASSERT_EQ(a.objects()[r].toLocal, b.objects()[r].toLocal) << "object " << r;
+    ASSERT_EQ(a.objects()[r].translation, b.objects()[r].translation) << "object " << r;
+    ASSERT_EQ(a.objects()[r].kind, b.objects()[r].kind) << "object " << r;
+    ASSERT_EQ(a.material(r), b.material(r)) << "object " << r;
+    ASSERT_EQ(a.linearToWorld(r), b.linearToWorld(r)) << "object " << r;
+  }
+  ASSERT_EQ(a.bvh().nodes().size(), b.bvh().nodes().size());
+  ASSERT_EQ(0, std::memcmp(a.bvh().nodes().data(), b.bvh().nodes().data(),
+                           a.bvh().nodes().size() * sizeof(BvhNode)));
+  ASSERT_EQ(a.bvh().items(), b.bvh().items());
+  EXPECT_EQ(a.hasTransparency(), b.hasTransparency());
+}
+
+TEST(RenderSceneBuilder, BatchesMakeTheSceneBuiltWhole) {
+  Random random(45);
+  // Past the sizes at which records and the BVH are built in parts.
+  for (int count : {0, 1, 7, 300, 20000}) {
+    scene::Scene s = randomScene(random, count);
+    RenderScene whole(s, 2);
+    for (int batches : {1, 2, 7}) {
+      SCOPED_TRACE(::testing::Message() << count << " objects, " << batches << " batches");
+      RenderScene built = builtInBatches(s, batches, 2);
+      expectSameRecords(whole, built);
+      for (int k = 0; k < 200; ++k) {
+        Ray ray{random.point(25.0), random.direction()};
+        expectSameHit(built.closestHit(ray, RaySource{}), whole.closestHit(ray, RaySource{}),
+                      "ray " + std::to_string(k));
+      }
+    }
+  }
+}
+
+TEST(RenderSceneBuilder, BatchesRenderTheSameImage) {
+  Random random(7);
+  scene::Scene s = randomScene(random, 400);
+  RenderSettings settings;
+  settings.width = 48;
+  settings.height = 36;
+  Image whole = renderImage(RenderScene(s), settings);
+  for (int batches : {2, 7}) {
+    Image built = renderImage(builtInBatches(s, batches, 2), settings);
+    EXPECT_EQ(built.rgb, whole.rgb) << batches << " batches";
+  }
+}
+
+TEST(RenderSceneBuilder, NothingAddedIsAnEmptyScene) {
+  scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+  s.lights.push_back(light({1, 1, 1}));
+  RenderScene built = RenderSceneBuilder(1).finish(s);
+  EXPECT_TRUE(built.objects().empty());
+  EXPECT_TRUE(built.bvh().empty());
+  EXPECT_EQ(built.lights().size(), 1u);
+  EXPECT_FALSE(built.closestHit(Ray{}, RaySource{}).has_value());
+}
+
+}  // namespace
+}  // namespace render
