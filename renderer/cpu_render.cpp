@@ -8,6 +8,7 @@
 
 #include "renderer/adaptive_sampling.h"
 #include "renderer/camera.h"
+#include "renderer/camera_trace.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/render_tiles.h"
 
@@ -16,11 +17,6 @@ namespace render {
 namespace {
 
 constexpr int kTileSize = kRenderTileSize;
-// The side of a cell of the eye's direction grid, in pixels, and where
-// objects are dense.
-constexpr int kEyeCellPixels = 4;
-constexpr int kDenseEyeCellPixels = 2;
-constexpr std::uint64_t kMaxEyeCells = std::uint64_t{1} << 22;
 
 // Keeps an image finite whatever the scene: NaN becomes 0, and values past
 // the float range are clamped to it.
@@ -95,7 +91,7 @@ class PixelTracer {
   PixelTracer(const RenderScene& scene, const RenderSettings& settings)
       : scene_(scene),
         settings_(settings),
-        camera_(scene.camera(), settings),
+        camera_(scene, settings),
         tracer_(scene, settings.maxDepth),
         // Not a number, or below 0, allows no error.
         tolerance_(std::max(0.0, settings.pruneTolerance)),
@@ -107,9 +103,10 @@ class PixelTracer {
                    tracer_.bound().at(0) < RadianceBound::kUnbounded) {
     // The media the camera starts in, for a camera inside glass.
     if (scene.hasTransparency()) {
-      for (std::uint32_t object : scene.mediaContaining(camera_.eye())) eyeMedia_.push(object);
+      for (std::uint32_t object : scene.mediaContaining(camera_.camera().eye())) {
+        eyeMedia_.push(object);
+      }
     }
-    if (settings.eyeGrid && settings.packets) buildEyeGrid();
   }
 
   // The stack each sample starts with: copied afresh per sample only where
@@ -132,17 +129,9 @@ class PixelTracer {
     for (int first = 0; first < count; first += kPacket) {
       int n = std::min(kPacket, count - first);
       Ray rays[kPacket];
-      for (int k = 0; k < n; ++k) {
-        rays[k].origin = camera_.eye();
-        rays[k].direction = camera_.directionThrough(at[first + k].x, at[first + k].y);
-      }
+      for (int k = 0; k < n; ++k) camera_.makeRay(at[first + k], rays[k]);
       std::optional<Hit> hits[kPacket];
-      if (eyeGrid_) {
-        scene_.closestHitsFromEye(*eyeGrid_, rays, n, hits);
-      } else if (settings_.packets) {
-        const RaySource fromCamera[kPacket] = {};
-        scene_.closestHits(rays, fromCamera, n, hits);
-      }
+      if (settings_.packets) camera_.closestHits(rays, n, hits);
       for (int k = 0; k < n; ++k) {
         if (scene_.hasTransparency()) media = eyeMedia_;
         ++context.counts.primary;
@@ -218,44 +207,12 @@ class PixelTracer {
  private:
   const RenderScene& scene_;
   const RenderSettings& settings_;
-  PinholeCamera camera_;
+  CameraTrace camera_;
   Tracer tracer_;
   double tolerance_;
   std::uint64_t allowance_;
   bool certifies_;
   MediumStack eyeMedia_;
-  std::optional<EyeGrid> eyeGrid_;
-
-  // The eye's direction grid, where it pays: for a render of at least 4
-  // samples a bounded object. Its build costs about a camera ray's search
-  // per object, and at 1,000,000 objects in 1080p (2 samples an object) it
-  // made the render slower, not faster.
-  void buildEyeGrid() {
-    std::uint64_t objects = scene_.boundedObjects().size();
-    if (objects < RenderScene::kMinEyeGridObjects || uniformSampleCount(settings_) < 4 * objects) {
-      return;
-    }
-    // Cells of 4 pixels a side, or of 2 where there is more than an object
-    // in 64 pixels: about one listed object a ray either way (the floor
-    // scenes of 1,000 and 100,000 objects at 1080p list 0.70 and 1.34; with
-    // cells of 4 the second lists 2.43).
-    double pixelsPerObject =
-        static_cast<double>(settings_.width) * settings_.height / static_cast<double>(objects);
-    int cell = pixelsPerObject < 64.0 ? kDenseEyeCellPixels : kEyeCellPixels;
-    // At most kMaxEyeCells cells (about 50 MB), whatever the image's size.
-    auto cellsAcross = [&](int pixels, int side) {
-      return static_cast<int>((static_cast<std::int64_t>(pixels) + side - 1) / side);
-    };
-    while (static_cast<std::uint64_t>(cellsAcross(settings_.width, cell)) *
-               static_cast<std::uint64_t>(cellsAcross(settings_.height, cell)) >
-           kMaxEyeCells) {
-      cell *= 2;
-    }
-    GridWindow window = camera_.imageWindow(cellsAcross(settings_.width, cell),
-                                            cellsAcross(settings_.height, cell));
-    EyeGrid grid = scene_.eyeGrid(camera_.eye(), window);
-    if (grid.grid.built()) eyeGrid_ = std::move(grid);
-  }
 };
 
 // Where pixels go in the image of a region.
