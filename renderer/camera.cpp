@@ -3,26 +3,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/sample_sequence.h"
 #include "scenefile/matrix.h"
 
 namespace render {
-
-namespace {
-
-// SplitMix64: a counter-based generator, so each pixel's samples depend on
-// the seed and the pixel alone.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
-double unitInterval(std::uint64_t bits) {
-  return static_cast<double>(bits >> 11) * 0x1.0p-53;
-}
-
-}  // namespace
 
 PinholeCamera::PinholeCamera(const scene::Camera& camera, const RenderSettings& settings)
     : width_(settings.width), height_(settings.height) {
@@ -54,14 +38,8 @@ GridWindow PinholeCamera::imageWindow(int columns, int rows) const {
 
 glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed) {
   if (count <= 1) return {i + 0.5, j + 0.5};
-  int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
-  int rows = (count + columns - 1) / columns;
-  std::uint64_t state =
-      mix(seed ^ mix((static_cast<std::uint64_t>(j) << 32) ^ static_cast<std::uint32_t>(i)) ^
-          mix(static_cast<std::uint64_t>(index) + 0x5851F42D4C957F2Dull));
-  double u = unitInterval(mix(state));
-  double v = unitInterval(mix(state + 1));
-  return {i + ((index % columns) + u) / columns, j + ((index / columns) + v) / rows};
+  glm::dvec2 offset = PixelSampleSequence(i, j, seed)[static_cast<std::uint32_t>(index)];
+  return {i + offset.x, j + offset.y};
 }
 
 }  // namespace render

@@ -52,8 +52,9 @@ class PinholeCamera {
 };
 
 // The position of sample `index` of `count` in pixel (i, j): the centre for
-// one sample, else a jittered point in its own cell of a stratified grid,
-// the same for a given seed whatever the thread.
+// one sample, else point `index` of the pixel's Owen-scrambled Sobol
+// sequence (PixelSampleSequence), the same for a given seed whatever the
+// thread.
 glm::dvec2 samplePosition(int i, int j, int index, int count, std::uint64_t seed);
 
 }  // namespace render

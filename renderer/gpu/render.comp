@@ -688,19 +688,37 @@ uint64_t mixBits(uint64_t x) {
   return x ^ (x >> 31);
 }
 
-double unitInterval(uint64_t bits) { return double(bits >> 11) * kEpsilon; }
+// PixelSampleSequence of sample_sequence.cpp: Owen-scrambled Sobol points,
+// bit for bit.
+uint sobolSecond(uint index) {
+  uint result = 0u;
+  for (uint column = 0x80000000u; index != 0u; index >>= 1, column ^= column >> 1) {
+    if ((index & 1u) != 0u) result ^= column;
+  }
+  return result;
+}
 
-// samplePosition of render.cpp: the same SplitMix64 stream.
+uint owenScramble(uint v, uint scramble) {
+  v = bitfieldReverse(v);
+  v ^= v * 0x3d20adeau;
+  v += scramble;
+  v *= (scramble >> 16) | 1u;
+  v ^= v * 0x05526c56u;
+  v ^= v * 0x53a22864u;
+  return bitfieldReverse(v);
+}
+
+// samplePosition of camera.cpp.
 dvec2 samplePosition(int i, int j, int index, int count) {
   if (count <= 1) return dvec2(double(i) + 0.5LF, double(j) + 0.5LF);
-  int columns = int(ceil(sqrt(double(count))));
-  int rows = (count + columns - 1) / columns;
-  uint64_t state = mixBits(seed ^ mixBits((uint64_t(j) << 32) ^ uint64_t(uint(i))) ^
-                           mixBits(uint64_t(index) + 0x5851F42D4C957F2DUL));
-  double u = unitInterval(mixBits(state));
-  double v = unitInterval(mixBits(state + 1UL));
-  precise double x = double(i) + (double(index % columns) + u) / double(columns);
-  precise double y = double(j) + (double(index / columns) + v) / double(rows);
+  uint64_t state = mixBits(seed ^ mixBits((uint64_t(j) << 32) ^ uint64_t(uint(i))));
+  uint xScramble = uint(mixBits(state) >> 32);
+  uint yScramble = uint(mixBits(state + 1UL) >> 32);
+  const double kFraction = 2.3283064365386962890625e-10LF;  // 2^-32
+  double u = double(owenScramble(bitfieldReverse(uint(index)), xScramble)) * kFraction;
+  double v = double(owenScramble(sobolSecond(uint(index)), yScramble)) * kFraction;
+  precise double x = double(i) + u;
+  precise double y = double(j) + v;
   return dvec2(x, y);
 }
 
