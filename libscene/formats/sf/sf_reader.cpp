@@ -99,14 +99,7 @@ std::size_t recordsToReserve(const TextCounts& counts) {
   return std::min<std::size_t>(counts.records, std::size_t{1} << 22);
 }
 
-// What the parse of one part of a file (parseSceneFileInParts) found that
-// the whole-file checks need.
-struct PartFacts {
-  bool anyRecord = false;
-  bool firstIsCamera = false;
-  bool cameraNamed = false;
-  std::size_t objectsSeen = 0;
-};
+using PartFacts = SceneFilePartFacts;
 
 // How many objects' room a part faults in at a time: 4 MB.
 constexpr std::size_t kObjectsPopulatedAhead = (std::size_t{4} << 20) / sizeof(Object);
@@ -452,70 +445,102 @@ std::span<const std::string_view> sceneFileRecordNames() {
   return kRecordNames;
 }
 
-std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::string fileName,
-                                                const ReadOptions& options, unsigned parts) {
-  std::vector<std::size_t> starts = partStarts(text, parts);
-  if (starts.size() < 2) return std::nullopt;
-  starts.push_back(text.size());
-  const std::size_t count = starts.size() - 1;
-  auto part = [&](std::size_t k) { return text.substr(starts[k], starts[k + 1] - starts[k]); };
+namespace {
 
-  // First each part's lines and records, for where the next parts' lines
-  // start and for the room the first part makes for the whole file's
-  // objects (moving them into a vector of their own costs a tenth of the
-  // reading).
-  std::vector<std::uint32_t> lines(count, 0);
+// Each part's lines and records (for where the next parts' lines start, and
+// for the room each part makes for its objects), then the parts themselves,
+// on as many threads: `text` cut at `starts` (and its end), its first line
+// the file's line `firstLine`. Each result is emptied, its objects' room
+// kept. With `roomForAll`, the first part makes room for every part's
+// objects (moving them into a vector of their own costs a tenth of the
+// reading). False where a thread could not start or the read was asked to
+// stop.
+bool readPartsOnThreads(std::string_view text, std::span<const std::size_t> starts,
+                        std::uint32_t firstLine, const ReadOptions& options, bool roomForAll,
+                        std::vector<ReadResult>& results, std::vector<PartFacts>& facts,
+                        std::vector<std::uint32_t>& lines) {
+  const std::size_t count = starts.size();
+  auto part = [&](std::size_t k) {
+    std::size_t end = k + 1 < count ? starts[k + 1] : text.size();
+    return text.substr(starts[k], end - starts[k]);
+  };
+  lines.assign(count, 0);
   std::vector<std::size_t> records(count, 0);
   bool counted = runOnThreads(count, [&](std::size_t k) {
     TextCounts counts = countLinesAndRecords(part(k));
     lines[k] = static_cast<std::uint32_t>(counts.lines);
     records[k] = recordsToReserve(counts);
   });
-  if (!counted) return std::nullopt;
-  std::vector<std::uint32_t> firstLine(count, 1);
+  if (!counted) return false;
+  std::vector<std::uint32_t> partLine(count, firstLine);
   std::size_t allRecords = records[0];
   for (std::size_t k = 1; k < count; ++k) {
-    firstLine[k] = firstLine[k - 1] + lines[k - 1];
+    partLine[k] = partLine[k - 1] + lines[k - 1];
     allRecords += records[k];
   }
+  if (roomForAll) records[0] = allRecords;
 
-  // Then the parts themselves. A part stops at its first diagnostic: any
-  // diagnostic sends the file to the whole-file reader, whose diagnostics
-  // are the ones reported. Each part's objects get their room here, on this
-  // thread, though the part's own thread fills it: glibc may hand out again
-  // what this thread frees, where a big block of a part's thread goes back
-  // to the system when freed, to be zeroed afresh for the next big array.
-  std::vector<ReadResult> results;
-  results.reserve(count);
+  // A part stops at its first diagnostic: any diagnostic sends the file to
+  // the whole-file reader, whose diagnostics are the ones reported. Each
+  // part's objects get their room here, on this thread, though the part's
+  // own thread fills it: glibc may hand out again what this thread frees,
+  // where a big block of a part's thread goes back to the system when
+  // freed, to be zeroed afresh for the next big array.
+  results.resize(count, ReadResult{Scene{}, DiagnosticList({}, options.errorLimit)});
   for (std::size_t k = 0; k < count; ++k) {
-    results.push_back(ReadResult{Scene{}, DiagnosticList(fileName, options.errorLimit)});
-    results[k].scene.objects.reserve(
-        std::min(k == 0 ? allRecords : records[k], options.maxObjects));
+    std::vector<Object> room = std::move(results[k].scene.objects);
+    room.clear();
+    results[k] = ReadResult{Scene{}, DiagnosticList({}, options.errorLimit)};
+    results[k].scene.objects = std::move(room);
+    results[k].scene.objects.reserve(std::min(records[k], options.maxObjects));
   }
-  std::vector<PartFacts> facts(count);
+  facts.assign(count, PartFacts{});
   bool read = runOnThreads(count, [&](std::size_t k) {
-    facts[k] = SceneFileParser(part(k), options, results[k], firstLine[k],
-                               k == 0 ? allRecords : records[k])
-                   .runPart();
+    facts[k] = SceneFileParser(part(k), options, results[k], partLine[k], records[k]).runPart();
   });
   // A stopped read's parts are cut short anywhere: the whole-file reader
   // stops at once, where it checks first.
-  if (!read || options.stop.stop_requested()) return std::nullopt;
+  return read && !options.stop.stop_requested();
+}
 
-  // The parts make the file's scene only where each read cleanly, the CAMERA
-  // came first in the first part and nowhere else, and all of them together
-  // hold no more objects than allowed.
+// The parts make their text's scene only where each read cleanly, the
+// CAMERA came first in the file's first part and nowhere else, and all of
+// them together, after `objectsBefore`, hold no more objects than allowed;
+// then the objects and lights they named, else nothing.
+std::optional<std::size_t> cleanPartsObjects(const std::vector<ReadResult>& results,
+                                             const std::vector<PartFacts>& facts, bool firstOfFile,
+                                             std::size_t objectsBefore,
+                                             const ReadOptions& options) {
   std::size_t objectsSeen = 0;
-  for (std::size_t k = 0; k < count; ++k) {
+  for (std::size_t k = 0; k < results.size(); ++k) {
     if (!results[k].diagnostics.empty() || !facts[k].anyRecord) return std::nullopt;
-    if (k == 0 ? !facts[k].firstIsCamera : facts[k].cameraNamed) return std::nullopt;
+    bool cameraHere = k == 0 && firstOfFile;
+    if (cameraHere ? !facts[k].firstIsCamera : facts[k].cameraNamed) return std::nullopt;
     objectsSeen += facts[k].objectsSeen;
   }
-  if (objectsSeen > options.maxObjects) return std::nullopt;
-  populateMergeTarget(results, count);
+  if (objectsSeen > options.maxObjects || objectsBefore > options.maxObjects - objectsSeen) {
+    return std::nullopt;
+  }
+  return objectsSeen;
+}
+
+}  // namespace
+
+std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::string fileName,
+                                                const ReadOptions& options, unsigned parts) {
+  std::vector<std::size_t> starts = partStarts(text, parts);
+  if (starts.size() < 2) return std::nullopt;
+  std::vector<ReadResult> results;
+  std::vector<PartFacts> facts;
+  std::vector<std::uint32_t> lines;
+  if (!readPartsOnThreads(text, starts, 1, options, true, results, facts, lines) ||
+      !cleanPartsObjects(results, facts, true, 0, options)) {
+    return std::nullopt;
+  }
+  populateMergeTarget(results, results.size());
   ReadResult merged{std::move(results[0].scene),
                     DiagnosticList(std::move(fileName), options.errorLimit)};
-  for (std::size_t k = 1; k < count; ++k) {
+  for (std::size_t k = 1; k < results.size(); ++k) {
     Scene& scene = results[k].scene;
     merged.scene.lights.insert(merged.scene.lights.end(), scene.lights.begin(), scene.lights.end());
     merged.scene.objects.insert(merged.scene.objects.end(),
@@ -525,6 +550,22 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
   // The whole-file check of a clean file (SceneFileParser::finish).
   checkSceneLevel(merged.scene, merged.diagnostics);
   return merged;
+}
+
+bool parseSceneFileWindow(const SceneFileWindow& window, const ReadOptions& options, unsigned parts,
+                          SceneFileWindowRead& read) {
+  std::vector<std::size_t> starts = partStarts(window.text, std::max(parts, 1u));
+  if (!readPartsOnThreads(window.text, starts, window.firstLine, options, false, read.parts,
+                          read.facts, read.partLines)) {
+    return false;
+  }
+  std::optional<std::size_t> objects =
+      cleanPartsObjects(read.parts, read.facts, window.first, window.objectsBefore, options);
+  if (!objects) return false;
+  read.objectsSeen = *objects;
+  read.lines = 0;
+  for (std::uint32_t n : read.partLines) read.lines += n;
+  return true;
 }
 
 ReadResult parseSceneFile(std::string_view text, std::string fileName, const ReadOptions& options) {

@@ -1,0 +1,231 @@
+// Reading a scene file in windows (scenefile/read_stream.h).
+#include "scenefile/read_stream.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "libscene/core/finite_check.h"
+#include "libscene/formats/sf/sf_reader.h"
+#include "scenefile/read_file.h"
+#include "scenefile/validation.h"
+
+namespace scene {
+
+namespace {
+
+// The batches a scene read whole is handed over in: 1 MiB of objects.
+constexpr std::size_t kWholeReadBatch = (std::size_t{1} << 20) / sizeof(Object);
+
+// Hands `objects` from `from` on to the sink in batches; the count handed.
+std::uint64_t handOver(const std::vector<Object>& objects, std::size_t from,
+                       const ObjectBatchSink& sink) {
+  std::span<const Object> all(objects);
+  for (std::size_t at = from; at < all.size(); at += kWholeReadBatch) {
+    sink(all.subspan(at, std::min(kWholeReadBatch, all.size() - at)));
+  }
+  return all.size() > from ? all.size() - from : 0;
+}
+
+// The file read whole (readSceneFile), the objects past the first `handed`
+// handed over: a file in another format, one window long, or whose windows
+// held a diagnostic.
+StreamReadResult readWhole(const std::filesystem::path& path, const ReadOptions& options,
+                           const ObjectBatchSink& sink, SourceExcerpts* quotes,
+                           std::uint64_t handed, StreamReadMemory memory) {
+  StreamReadResult result;
+  result.readWhole = true;
+  SourceText source = readSourceFile(path, options);
+  if (!source.text) {
+    result.read = ReadResult{Scene{}, std::move(source.diagnostics)};
+    return result;
+  }
+  std::string name = path.string();
+  result.format = detectFormat(*source.text, name);
+  result.read = parseScene(*source.text, name, options);
+  if (quotes) quotes->capture(name, *source.text, result.read.diagnostics);
+  std::vector<Object>& objects = result.read.scene.objects;
+  memory.textBytes = std::max<std::uint64_t>(memory.textBytes, source.text->capacity());
+  memory.modelBytes =
+      std::max<std::uint64_t>(memory.modelBytes, objects.capacity() * sizeof(Object));
+  source.text.reset();
+  result.objectCount = handed + handOver(objects, static_cast<std::size_t>(handed), sink);
+  std::vector<Object>().swap(objects);
+  result.memory = memory;
+  return result;
+}
+
+// The bytes of an open file, read into a buffer that holds one window and
+// the start of the next.
+class WindowBuffer {
+ public:
+  WindowBuffer(int fd, std::size_t window) : fd_(fd), window_(window) {}
+
+  // Fills the buffer up to the window's size past what it holds; false
+  // where the read failed.
+  bool fill() {
+    if (bytes_.size() < held_ + window_) bytes_.resize(held_ + window_);
+    while (!atEnd_ && held_ < bytes_.size()) {
+      ssize_t n = ::read(fd_, bytes_.data() + held_, bytes_.size() - held_);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) return false;
+      if (n == 0) atEnd_ = true;
+      held_ += static_cast<std::size_t>(n);
+      total_ += static_cast<std::uint64_t>(n);
+    }
+    return true;
+  }
+
+  // Where the window ends: at the last line in the buffer that starts with
+  // a capital letter (a record's name, in a valid file), or the file's end;
+  // 0 where the buffer holds no such line past its first.
+  std::size_t windowEnd() const {
+    if (atEnd_) return held_;
+    for (std::size_t at = held_; at > 1; --at) {
+      if (bytes_[at - 1] == '\n' && at < held_ && bytes_[at] >= 'A' && bytes_[at] <= 'Z') {
+        return at;
+      }
+    }
+    return 0;
+  }
+
+  // Drops the window's `end` bytes, keeping what follows them.
+  void drop(std::size_t end) {
+    std::memmove(bytes_.data(), bytes_.data() + end, held_ - end);
+    held_ -= end;
+  }
+
+  // A buffer of one more window, for a record longer than the window.
+  void grow() { window_ *= 2; }
+
+  std::string_view text(std::size_t end) const { return {bytes_.data(), end}; }
+  std::string_view held() const { return {bytes_.data(), held_}; }
+  bool empty() const { return held_ == 0; }
+  bool atEnd() const { return atEnd_; }
+  std::uint64_t total() const { return total_; }
+  std::uint64_t capacity() const { return bytes_.capacity(); }
+
+ private:
+  int fd_;
+  std::size_t window_;
+  std::vector<char> bytes_;
+  std::size_t held_ = 0;
+  std::uint64_t total_ = 0;
+  bool atEnd_ = false;
+};
+
+// What the windows read so far made of the file.
+struct StreamedScene {
+  Scene header;
+  std::uint64_t handed = 0;
+  std::size_t objectsSeen = 0;
+  std::uint32_t nextLine = 1;
+  StreamReadMemory memory;
+};
+
+// One window: read, checked and handed over; false where it sends the file
+// to the whole-file reader.
+bool readWindow(std::string_view text, const ReadOptions& options, unsigned threads,
+                SceneFileWindowRead& read, StreamedScene& done, const ObjectBatchSink& sink) {
+  SceneFileWindow window{text, done.nextLine, done.nextLine == 1, done.objectsSeen};
+  if (!parseSceneFileWindow(window, options, threads, read)) return false;
+  std::uint64_t model = 0;
+  for (const ReadResult& part : read.parts) {
+    if (!objectsFinite(part.scene.objects, 1)) return false;
+    model += part.scene.objects.capacity() * sizeof(Object);
+  }
+  done.memory.modelBytes = std::max(done.memory.modelBytes, model);
+  if (window.first) done.header.camera = read.parts.front().scene.camera;
+  for (const ReadResult& part : read.parts) {
+    const Scene& scene = part.scene;
+    done.header.lights.insert(done.header.lights.end(), scene.lights.begin(), scene.lights.end());
+    if (!scene.objects.empty()) sink(scene.objects);
+    done.handed += scene.objects.size();
+  }
+  done.objectsSeen += read.objectsSeen;
+  done.nextLine += read.lines;
+  return true;
+}
+
+// The windows of an open scene file, into `done`; false where the file goes
+// to the whole-file reader.
+bool readWindows(WindowBuffer& buffer, const ReadOptions& options, unsigned threads,
+                 const ObjectBatchSink& sink, StreamedScene& done) {
+  SceneFileWindowRead read;
+  while (!buffer.empty()) {
+    std::size_t end = buffer.windowEnd();
+    if (end == 0) {
+      buffer.grow();
+    } else {
+      if (!readWindow(buffer.text(end), options, threads, read, done, sink)) return false;
+      buffer.drop(end);
+    }
+    done.memory.textBytes = std::max(done.memory.textBytes, buffer.capacity());
+    if (options.stop.stop_requested()) return true;
+    // A file that grew past the limit while read is the whole reader's.
+    if (!buffer.fill() || buffer.total() > options.maxFileSize) return false;
+  }
+  return true;
+}
+
+unsigned threadCount(const ReadOptions& options) {
+  unsigned threads = options.threads > 0 ? options.threads : std::thread::hardware_concurrency();
+  return std::max(threads, 1u);
+}
+
+// The streamed file's result: its header's whole-file checks (as
+// SceneFileParser::finish and parseScene's last check make them), the
+// quotes taken from its first window, where the camera is.
+StreamReadResult finishStream(StreamedScene done, const std::filesystem::path& path,
+                              const ReadOptions& options, std::string_view firstWindow,
+                              SourceExcerpts* quotes) {
+  StreamReadResult result;
+  result.format = Format::SceneFile;
+  result.objectCount = done.handed;
+  result.memory = done.memory;
+  result.read =
+      ReadResult{std::move(done.header), DiagnosticList(path.string(), options.errorLimit)};
+  if (!options.stop.stop_requested()) {
+    checkSceneLevel(result.read.scene, result.read.diagnostics);
+    checkFramingFinite(result.read.scene, result.read.diagnostics);
+  }
+  if (quotes) quotes->capture(path.string(), firstWindow, result.read.diagnostics);
+  return result;
+}
+
+}  // namespace
+
+StreamReadResult streamSceneFile(const std::filesystem::path& path, const ReadOptions& options,
+                                 const ObjectBatchSink& sink, SourceExcerpts* quotes) {
+  const unsigned threads = threadCount(options);
+  const std::size_t window = std::max<std::size_t>(options.sceneFile.windowBytes, 1) * threads;
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) ||
+      static_cast<std::uint64_t>(info.st_size) <= window ||
+      static_cast<std::uint64_t>(info.st_size) > options.maxFileSize) {
+    return readWhole(path, options, sink, quotes, 0, {});
+  }
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return readWhole(path, options, sink, quotes, 0, {});
+  WindowBuffer buffer(fd, window);
+  std::string firstWindow;
+  bool streamed = false;
+  StreamedScene done;
+  if (buffer.fill() && detectFormat(buffer.held(), path.string()) == Format::SceneFile) {
+    // The camera's lines, for the quotes of the whole-file checks.
+    if (quotes) firstWindow = buffer.held();
+    streamed = readWindows(buffer, options, threads, sink, done);
+  }
+  ::close(fd);
+  if (!streamed) return readWhole(path, options, sink, quotes, done.handed, done.memory);
+  return finishStream(std::move(done), path, options, firstWindow, quotes);
+}
+
+}  // namespace scene
