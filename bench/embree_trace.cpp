@@ -1,7 +1,7 @@
-// embree_trace: sfrender's primary rays traced by Embree 3, against
-// sfrender's own pass over the same rays, in one process.
+// embree_trace: sfrender's primary and shadow rays traced by Embree 3,
+// against sfrender's own passes over the same rays, in one process.
 //
-//   embree_trace SCENE [--width W --height H --runs R --threads "1 2"]
+//   embree_trace SCENE [--width W --height H --runs R --threads "1 2" --only VARIANT]
 //
 // Reads SCENE through the project's reader and compiles it as sfrender does
 // (render::RenderScene). Embree gets one user geometry
@@ -14,13 +14,23 @@
 // does. So the hits are the project's, and only the search differs.
 //
 // The rays are those of render::PinholeCamera through the pixel centres.
-// Each variant is timed on each thread count (rows handed out to threads
-// one at a time): Embree one ray at a time (rtcIntersect1) and in packets
-// of 4 (2x2 pixels, rtcIntersect4) and 8 (4x2, rtcIntersect8), and
-// render::renderObjectIds, sfrender's own primary-ray pass. The object id
-// of every pixel is compared with renderObjectIds: a difference can only be
-// a tie (two objects met at the same distance) or a ray whose float box
-// test misses where the double one meets, and their count is printed.
+// Each variant is timed on each thread count: Embree one ray at a time
+// (rtcIntersect1) and in packets of 4 (2x2 pixels, rtcIntersect4) and 8
+// (4x2, rtcIntersect8), rows handed out to threads one at a time; and
+// sfrender's camera path (render::traceCameraRays: the camera's rays, the
+// eye's grid where it pays, the packets, tiles in turn). The object id of
+// every pixel is compared with render::renderObjectIds (one ray at a time):
+// a difference can only be a tie (two objects met at the same distance) or
+// a ray whose float box test misses where the double one meets, and their
+// count is printed.
+//
+// Shadow rays: from every primary hit toward every light, sfrender's
+// render::Tracer::shadowed (its light grids, shadowCell, the occluder hint)
+// against Embree's rtcOccluded1/4/8 on the same rays (the renderer's offset
+// origin, its segment's end short of the light, the planes tested first,
+// the renderer's exact test with the ray's source in the callback), in
+// packets of consecutive hits of a tile's row; both take tiles in turn. The
+// answers are compared, ray by ray.
 //
 // Prints "key: value" lines (for bench/tracers.sh) and then a table.
 #include <embree3/rtcore.h>
@@ -32,6 +42,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -41,8 +52,12 @@
 
 #include "bench/scene_loading.h"
 #include "renderer/camera.h"
+#include "renderer/camera_trace.h"
+#include "renderer/float_error.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "renderer/render_tiles.h"
+#include "renderer/tracer.h"
 #include "renderer/unit_shapes.h"
 
 namespace {
@@ -68,6 +83,22 @@ double objectDistance(const render::RenderObject& object, const render::Ray& ray
   return -1.0;
 }
 
+// The renderer's test of object `index` by a ray leaving `source`
+// (RenderScene's intersectObject): whether it meets the object at
+// 0 < t < tMax.
+bool blocks(const render::RenderObject& object, std::uint32_t index, const render::Ray& ray,
+            const render::RaySource& source, double tMax) {
+  bool self = index == source.object;
+  bool plane = object.kind == scene::ObjectKind::Plane;
+  if (self && (plane || !source.inward)) return false;
+  glm::dvec3 o = object.toLocalPoint(ray.origin);
+  glm::dvec3 d = object.toLocal * ray.direction;
+  render::SpanDistances span = render::unitShapeDistances(object.kind, o, d);
+  if (span.empty) return false;
+  if (!self && span.enter > 0.0 && span.enter < tMax) return true;
+  return !plane && span.exit > 0.0 && span.exit < tMax;
+}
+
 // What the callbacks share: the objects, and Embree primitive -> object.
 struct Geometry {
   const std::vector<render::RenderObject>* objects = nullptr;
@@ -82,6 +113,8 @@ struct TraceContext {
   RTCIntersectContext embree;
   const render::Ray* rays = nullptr;
   double* nearest = nullptr;
+  // Shadow rays: what each leaves (nearest then holds each one's tMax).
+  const render::RaySource* sources = nullptr;
 };
 
 void boundsOf(const RTCBoundsFunctionArguments* args) {
@@ -117,6 +150,20 @@ void intersect(const RTCIntersectFunctionNArguments* args) {
     RTCHitN_primID(hits, args->N, lane) = args->primID;
     RTCHitN_geomID(hits, args->N, lane) = args->geomID;
     RTCHitN_instID(hits, args->N, lane, 0) = RTC_INVALID_GEOMETRY_ID;
+  }
+}
+
+void occluded(const RTCOccludedFunctionNArguments* args) {
+  const auto* g = static_cast<const Geometry*>(args->geometryUserPtr);
+  auto* context = reinterpret_cast<TraceContext*>(args->context);
+  std::uint32_t object = g->bounded[args->primID];
+  for (unsigned lane = 0; lane < args->N; ++lane) {
+    if (args->valid[lane] != -1) continue;
+    unsigned id = RTCRayN_id(args->ray, args->N, lane);
+    if (blocks((*g->objects)[object], object, context->rays[id], context->sources[id],
+               context->nearest[id])) {
+      RTCRayN_tfar(args->ray, args->N, lane) = -std::numeric_limits<float>::infinity();
+    }
   }
 }
 
@@ -273,20 +320,330 @@ class Tracers {
   std::vector<std::uint32_t> planes_;
 };
 
+// A shadow ray as render::Tracer::shadowed makes it from a hit toward a
+// light, for Embree.
+struct ShadowQuery {
+  render::Ray ray;
+  render::RaySource source;
+  double tMax = 0.0;
+};
+
+// The primary hits, pixel by pixel, and the shadow rays' answers (1:
+// blocked), per pixel and light.
+struct ShadowWork {
+  std::vector<std::optional<render::Hit>> hits;
+  std::size_t lights = 0;
+  std::size_t rays = 0;  // (hit, light) pairs
+};
+
+class ShadowTracers {
+ public:
+  ShadowTracers(const render::RenderScene& scene, const render::RenderSettings& settings,
+                const ShadowWork& work, RTCScene embree)
+      : scene_(scene), settings_(settings), work_(work), embree_(embree) {
+    for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
+      if (scene.objects()[i].kind == scene::ObjectKind::Plane) planes_.push_back(i);
+    }
+  }
+
+  // sfrender: render::Tracer::shadowed for every hit and light, with each
+  // thread's trace context (its occluder hints), tiles in turn.
+  void sfrender(int threads, std::vector<std::uint8_t>& answers) const {
+    render::Tracer tracer(scene_, settings_.maxDepth);
+    std::vector<render::TraceContext> contexts(static_cast<std::size_t>(threads));
+    forTiles(threads, [&](int worker, int x0, int x1, int y) {
+      render::TraceContext& context = contexts[static_cast<std::size_t>(worker)];
+      for (int x = x0; x < x1; ++x) {
+        std::size_t pixel = static_cast<std::size_t>(y) * settings_.width + x;
+        const std::optional<render::Hit>& hit = work_.hits[pixel];
+        if (!hit) continue;
+        for (std::size_t light = 0; light < work_.lights; ++light) {
+          std::uint32_t* hint = &context.lastOccluder[light % render::TraceContext::kOccluderSlots];
+          answers[pixel * work_.lights + light] = tracer.shadowed(*hit, light, context, hint);
+        }
+      }
+    });
+  }
+
+  // Embree: rtcOccluded<width> on the rays of consecutive hits of a tile's
+  // row toward one light (width 1, 4 or 8).
+  void embree(int width, int threads, std::vector<std::uint8_t>& answers) const {
+    forTiles(threads, [&](int, int x0, int x1, int y) {
+      for (std::size_t light = 0; light < work_.lights; ++light) {
+        ShadowQuery batch[8];
+        std::size_t at[8];
+        int n = 0;
+        for (int x = x0; x < x1; ++x) {
+          std::size_t pixel = static_cast<std::size_t>(y) * settings_.width + x;
+          const std::optional<render::Hit>& hit = work_.hits[pixel];
+          if (!hit) continue;
+          std::size_t answer = pixel * work_.lights + light;
+          int state = prepare(*hit, light, batch[n]);
+          if (state >= 0) {
+            answers[answer] = static_cast<std::uint8_t>(state);
+            continue;
+          }
+          at[n++] = answer;
+          if (n == width) {
+            occluded(width, batch, n, at, answers);
+            n = 0;
+          }
+        }
+        if (n > 0) occluded(width, batch, n, at, answers);
+      }
+    });
+  }
+
+ private:
+  // perRow(worker, x0, x1, y) for each row of each 32x32 tile, tiles in
+  // turn on `threads` threads.
+  template <typename PerRow>
+  void forTiles(int threads, PerRow&& perRow) const {
+    render::forEachTile(render::PixelRegion{0, 0, settings_.width, settings_.height}, threads,
+                        [&](int worker, const render::PixelRegion& tile) {
+                          for (int y = tile.y0; y < tile.y1; ++y)
+                            perRow(worker, tile.x0, tile.x1, y);
+                        },
+                        {});
+  }
+
+  // Tracer::shadowed's ray from `hit` toward light `light` into q, and the
+  // planes' test: 0 clear, 1 blocked, -1 for Embree to say.
+  int prepare(const render::Hit& hit, std::size_t light, ShadowQuery& q) const {
+    const glm::dvec3& position = scene_.lights()[light].position;
+    glm::dvec3 toLight = position - hit.point;
+    q.ray.origin = render::offsetRayOrigin(hit.point, hit.pointError, hit.normal, toLight);
+    q.ray.direction = position - q.ray.origin;
+    q.source = render::RaySource{hit.object, glm::dot(q.ray.direction, hit.normal) < 0.0};
+    const glm::dvec3& o = q.ray.origin;
+    const glm::dvec3& d = q.ray.direction;
+    double extent = std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z),
+                              std::abs(o.x), std::abs(o.y), std::abs(o.z)});
+    double length = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    if (length == 0.0) return 0;
+    q.tMax = 1.0 - render::gamma(32) * extent / length;
+    if (q.tMax <= 0.0) return 0;
+    for (std::uint32_t plane : planes_) {
+      if (blocks(scene_.objects()[plane], plane, q.ray, q.source, q.tMax)) return 1;
+    }
+    return -1;
+  }
+
+  void occluded(int width, const ShadowQuery* batch, int n, const std::size_t* at,
+                std::vector<std::uint8_t>& answers) const {
+    render::Ray rays[8];
+    render::RaySource sources[8];
+    double limits[8];
+    for (int k = 0; k < n; ++k) {
+      rays[k] = batch[k].ray;
+      sources[k] = batch[k].source;
+      limits[k] = batch[k].tMax;
+    }
+    TraceContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.rays = rays;
+    context.nearest = limits;
+    context.sources = sources;
+    if (width == 1) {
+      RTCRay r;
+      fill(r, batch[0], 0);
+      rtcOccluded1(embree_, &context.embree, &r);
+      answers[at[0]] = r.tfar < 0.0f;
+    } else if (width == 4) {
+      alignas(16) RTCRay4 r;
+      alignas(16) int valid[4];
+      fillN(r, valid, 4, batch, n);
+      rtcOccluded4(valid, embree_, &context.embree, &r);
+      for (int k = 0; k < n; ++k) answers[at[k]] = r.tfar[k] < 0.0f;
+    } else {
+      alignas(32) RTCRay8 r;
+      alignas(32) int valid[8];
+      fillN(r, valid, 8, batch, n);
+      rtcOccluded8(valid, embree_, &context.embree, &r);
+      for (int k = 0; k < n; ++k) answers[at[k]] = r.tfar[k] < 0.0f;
+    }
+  }
+
+  // The float ray Embree steers by; its segment ends at tMax rounded up.
+  static void fill(RTCRay& r, const ShadowQuery& q, unsigned id) {
+    r.org_x = static_cast<float>(q.ray.origin.x);
+    r.org_y = static_cast<float>(q.ray.origin.y);
+    r.org_z = static_cast<float>(q.ray.origin.z);
+    r.dir_x = static_cast<float>(q.ray.direction.x);
+    r.dir_y = static_cast<float>(q.ray.direction.y);
+    r.dir_z = static_cast<float>(q.ray.direction.z);
+    r.tnear = 0.0f;
+    r.tfar = render::floatAtOrAbove(q.tMax);
+    r.time = 0.0f;
+    r.mask = 0xFFFFFFFF;
+    r.id = id;
+    r.flags = 0;
+  }
+  template <typename RayN>
+  static void fillN(RayN& rays, int* valid, int width, const ShadowQuery* batch, int n) {
+    for (int k = 0; k < width; ++k) {
+      RTCRay r;
+      fill(r, batch[k < n ? k : 0], static_cast<unsigned>(k));
+      rays.org_x[k] = r.org_x, rays.org_y[k] = r.org_y, rays.org_z[k] = r.org_z;
+      rays.dir_x[k] = r.dir_x, rays.dir_y[k] = r.dir_y, rays.dir_z[k] = r.dir_z;
+      rays.tnear[k] = r.tnear, rays.tfar[k] = r.tfar, rays.time[k] = 0.0f;
+      rays.mask[k] = r.mask, rays.id[k] = r.id, rays.flags[k] = 0;
+      valid[k] = k < n ? -1 : 0;
+    }
+  }
+
+  const render::RenderScene& scene_;
+  render::RenderSettings settings_;
+  const ShadowWork& work_;
+  RTCScene embree_;
+  std::vector<std::uint32_t> planes_;
+};
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::size_t differences(const std::vector<std::int32_t>& a, const std::vector<std::int32_t>& b) {
+template <typename T>
+std::size_t differences(const std::vector<T>& a, const std::vector<T>& b) {
   std::size_t count = 0;
   for (std::size_t i = 0; i < a.size(); ++i) count += a[i] != b[i];
   return count;
 }
 
-int run(const std::string& path, render::RenderSettings settings, int runs,
-        const std::vector<int>& threadCounts) {
+struct Row {
+  std::string name;
+  std::vector<double> mrays;
+  std::size_t diff = 0;
+};
+
+// How each variant is timed: runs (median), thread counts, and, when not
+// empty, the one variant to time (for a profiler).
+struct Timing {
+  int runs = 3;
+  std::vector<int> threadCounts{1, 2};
+  std::string only;
+};
+
+template <typename T>
+struct Variant {
+  std::string name;
+  std::function<void(int threads, std::vector<T>& out)> pass;
+};
+
+// Times each variant `runs` times on each thread count, the variants in
+// turn in each run (a load that comes and goes hits them alike), for
+// `rays` rays; their medians, and the entries of each one's output that
+// differ from `reference`. Prints the key lines.
+template <typename T>
+std::vector<Row> timed(std::vector<Variant<T>> variants, double rays, const Timing& timing,
+                       const std::vector<T>& reference) {
+  if (!timing.only.empty()) {
+    std::erase_if(variants, [&](const Variant<T>& v) { return v.name != timing.only; });
+  }
+  const int runs = timing.runs;
+  const std::vector<int>& threadCounts = timing.threadCounts;
+  std::vector<Row> rows;
+  for (const Variant<T>& v : variants) rows.push_back(Row{v.name, {}, 0});
+  for (int threads : threadCounts) {
+    std::vector<std::vector<double>> seconds(variants.size());
+    std::vector<T> out(reference.size());
+    for (int r = 0; r < runs; ++r) {
+      for (std::size_t v = 0; v < variants.size(); ++v) {
+        auto start = Clock::now();
+        variants[v].pass(threads, out);
+        seconds[v].push_back(since(start));
+        rows[v].diff = std::max(rows[v].diff, differences(out, reference));
+      }
+    }
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+      double mrays = rays / median(seconds[v]) / 1e6;
+      rows[v].mrays.push_back(mrays);
+      std::printf("%s_%dt_mrays: %.4f\n", rows[v].name.c_str(), threads, mrays);
+    }
+  }
+  for (const Row& row : rows) std::printf("%s_differences: %zu\n", row.name.c_str(), row.diff);
+  return rows;
+}
+
+void printTable(const char* title, const std::vector<Row>& table,
+                const std::vector<int>& threadCounts) {
+  std::printf("\n%-16s", title);
+  for (int threads : threadCounts) std::printf(" | %2d thread(s), Mrays/s", threads);
+  std::printf(" | differing\n");
+  for (const Row& row : table) {
+    std::printf("%-16s", row.name.c_str());
+    for (double m : row.mrays) std::printf(" | %21.3f", m);
+    std::printf(" | %zu\n", row.diff);
+  }
+}
+
+// sfrender's camera path, the ids of its hits into `ids`; `hits`, when
+// given, gets the hits themselves.
+void sfrenderIds(const render::RenderScene& scene, render::RenderSettings settings, int threads,
+                 std::vector<std::int32_t>& ids,
+                 std::vector<std::optional<render::Hit>>* hits = nullptr) {
+  settings.threads = threads;
+  render::traceCameraRays(
+      scene, settings,
+      [&](int y, int x0, int n, const render::Ray*, const std::optional<render::Hit>* found) {
+        std::size_t at = static_cast<std::size_t>(y) * settings.width + x0;
+        for (int k = 0; k < n; ++k) {
+          ids[at + k] =
+              found[k] ? static_cast<std::int32_t>(scene.sceneObject(found[k]->object)) : -1;
+          if (hits) (*hits)[at + k] = found[k];
+        }
+      });
+}
+
+std::vector<Row> primaryRays(const render::RenderScene& compiled,
+                             const render::RenderSettings& settings, const Tracers& tracers,
+                             const Timing& timing) {
+  const std::vector<std::int32_t> reference = render::renderObjectIds(compiled, settings);
+  const double pixels = static_cast<double>(reference.size());
+  std::vector<Variant<std::int32_t>> variants;
+  variants.push_back({"sfrender", [&](int threads, std::vector<std::int32_t>& ids) {
+                        sfrenderIds(compiled, settings, threads, ids);
+                      }});
+  for (int width : {1, 4, 8}) {
+    variants.push_back({"embree" + std::to_string(width),
+                        [&tracers, width](int threads, std::vector<std::int32_t>& ids) {
+                          tracers.traceAll(width, threads, ids);
+                        }});
+  }
+  return timed(variants, pixels, timing, reference);
+}
+
+std::vector<Row> shadowRays(const render::RenderScene& compiled,
+                            const render::RenderSettings& settings, RTCScene embree,
+                            const Timing& timing) {
+  ShadowWork work;
+  std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
+  work.hits.resize(pixels);
+  work.lights = compiled.lights().size();
+  std::vector<std::int32_t> ids(pixels);
+  sfrenderIds(compiled, settings, 1, ids, &work.hits);
+  for (const auto& hit : work.hits) work.rays += hit ? work.lights : 0;
+  std::printf("shadow_rays: %zu\n", work.rays);
+  ShadowTracers tracers(compiled, settings, work, embree);
+  // The reference: one thread of sfrender's own pass.
+  std::vector<std::uint8_t> reference(pixels * work.lights, 0);
+  tracers.sfrender(1, reference);
+  std::vector<Variant<std::uint8_t>> variants;
+  variants.push_back({"sfrender_shadow", [&](int threads, std::vector<std::uint8_t>& answers) {
+                        tracers.sfrender(threads, answers);
+                      }});
+  for (int width : {1, 4, 8}) {
+    variants.push_back({"embree" + std::to_string(width) + "_shadow",
+                        [&tracers, width](int threads, std::vector<std::uint8_t>& answers) {
+                          tracers.embree(width, threads, answers);
+                        }});
+  }
+  return timed(variants, static_cast<double>(work.rays), timing, reference);
+}
+
+int run(const std::string& path, render::RenderSettings settings, const Timing& timing) {
   std::optional<scene::Scene> loaded = bench::loadScene(path, "embree_trace");
   if (!loaded) return 1;
   auto t0 = Clock::now();
@@ -316,6 +673,7 @@ int run(const std::string& path, render::RenderSettings settings, int runs,
   rtcSetGeometryUserData(user, &geometry);
   rtcSetGeometryBoundsFunction(user, boundsOf, nullptr);
   rtcSetGeometryIntersectFunction(user, intersect);
+  rtcSetGeometryOccludedFunction(user, occluded);
   rtcCommitGeometry(user);
   rtcAttachGeometry(embree.scene, user);
   rtcReleaseGeometry(user);
@@ -327,73 +685,38 @@ int run(const std::string& path, render::RenderSettings settings, int runs,
   }
 
   settings.threads = 1;
-  const std::vector<std::int32_t> reference = render::renderObjectIds(compiled, settings);
-  const double pixels = static_cast<double>(settings.width) * settings.height;
   Tracers tracers(compiled, settings, geometry, embree.scene);
-
   std::printf("objects: %zu\n", compiled.objects().size());
-  std::printf("rays: %.0f\n", pixels);
+  std::printf("rays: %lld\n", static_cast<long long>(settings.width) * settings.height);
   std::printf("sfrender_build_s: %.6f\n", sfBuild);
   std::printf("embree_build_s: %.6f\n", embreeBuild);
-  struct Row {
-    std::string name;
-    std::vector<double> mrays;
-    std::size_t diff = 0;
-  };
-  std::vector<Row> table;
-  const char* names[] = {"sfrender", "embree1", "embree4", "embree8"};
-  const int packet[] = {0, 1, 4, 8};
-  for (int v = 0; v < 4; ++v) {
-    Row row{names[v], {}, 0};
-    for (int threads : threadCounts) {
-      std::vector<double> seconds;
-      std::vector<std::int32_t> ids(reference.size(), -2);
-      for (int r = 0; r < runs; ++r) {
-        auto start = Clock::now();
-        if (packet[v] == 0) {
-          render::RenderSettings s = settings;
-          s.threads = threads;
-          ids = render::renderObjectIds(compiled, s);
-        } else {
-          tracers.traceAll(packet[v], threads, ids);
-        }
-        seconds.push_back(since(start));
-      }
-      row.diff = std::max(row.diff, differences(ids, reference));
-      double mrays = pixels / median(seconds) / 1e6;
-      row.mrays.push_back(mrays);
-      std::printf("%s_%dt_mrays: %.4f\n", names[v], threads, mrays);
-    }
-    std::printf("%s_differences: %zu\n", names[v], row.diff);
-    table.push_back(row);
-  }
-
-  std::printf("\n%-10s", "variant");
-  for (int threads : threadCounts) std::printf(" | %2d thread(s), Mrays/s", threads);
-  std::printf(" | ids differing\n");
-  for (const Row& row : table) {
-    std::printf("%-10s", row.name.c_str());
-    for (double m : row.mrays) std::printf(" | %21.3f", m);
-    std::printf(" | %zu\n", row.diff);
-  }
+  std::printf("sfrender_eye_grid: %d\n",
+              render::CameraTrace(compiled, settings).hasEyeGrid() ? 1 : 0);
+  std::vector<Row> primary = primaryRays(compiled, settings, tracers, timing);
+  std::vector<Row> shadow = shadowRays(compiled, settings, embree.scene, timing);
+  printTable("primary", primary, timing.threadCounts);
+  printTable("shadow", shadow, timing.threadCounts);
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"sfrender's primary rays traced by Embree 3 (user geometry) and by sfrender"};
+  CLI::App app{
+      "sfrender's primary and shadow rays traced by Embree 3 (user geometry) and by sfrender"};
   render::RenderSettings settings;
   settings.width = 1920;
   settings.height = 1080;
   std::string input;
-  int runs = 3;
-  std::vector<int> threads{1, 2};
+  Timing timing;
   app.add_option("scene", input, "scene file (any format sfrender reads)")->required();
   app.add_option("--width", settings.width, "image width")->check(CLI::Range(1, 1 << 15));
   app.add_option("--height", settings.height, "image height")->check(CLI::Range(1, 1 << 15));
-  app.add_option("--runs", runs, "timed runs of each variant (median)")->check(CLI::Range(1, 100));
-  app.add_option("--threads", threads, "thread counts to time")->check(CLI::Range(1, 256));
+  app.add_option("--runs", timing.runs, "timed runs of each variant (median)")
+      ->check(CLI::Range(1, 100));
+  app.add_option("--threads", timing.threadCounts, "thread counts to time")
+      ->check(CLI::Range(1, 256));
+  app.add_option("--only", timing.only, "time this variant alone (sfrender, embree8_shadow, ...)");
   CLI11_PARSE(app, argc, argv);
-  return run(input, settings, runs, threads);
+  return run(input, settings, timing);
 }
