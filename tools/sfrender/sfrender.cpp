@@ -22,8 +22,10 @@
 #include "renderer/adaptive_sampling.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
+#include "renderer/render_scene_builder.h"
 #include "renderer/saturating.h"
 #include "scenefile/read.h"
+#include "scenefile/read_stream.h"
 #include "scenefile/render.h"
 #include "scenefile/validation.h"
 #include "tools/common/diagnostic_printer.h"
@@ -38,6 +40,7 @@
 #include "tools/common/tool_output.h"
 #include "tools/sfrender/image_region.h"
 #include "tools/sfrender/image_target.h"
+#include "tools/sfrender/memory_report.h"
 #include "tools/sfrender/progress_line.h"
 #include "tools/sfrender/render_hint.h"
 #include "tools/sfrender/thread_probe.h"
@@ -129,7 +132,7 @@ int imageHeight(const render::RenderSettings& s) {
 
 // The scene to render and where its image goes.
 struct SceneAndTarget {
-  scene::Scene scene;
+  scene::Scene scene;  // the camera, lights and view: the objects go to the builder
   fs::path target;
   bool toStdout = false;        // -o -: PPM on standard output
   bool fromOutputFile = false;  // the target is the scene's OUTPUT_FILE
@@ -190,6 +193,12 @@ class RenderJob {
 
  private:
   MaybeFailure readScene();
+  MaybeFailure readStandardInput(const std::string& shown, const scene::ReadOptions& read);
+  MaybeFailure acceptScene(scene::ReadResult result, std::optional<scene::Format> format,
+                           const std::string& shown, const SourceExcerpts& sources);
+  void addObjects(std::span<const scene::Object> objects);
+  std::vector<StageMemory> stagesHeld(const render::RenderScene& compiled,
+                                      const render::Image& image) const;
   void chooseTarget();
   MaybeFailure targetRefusal();
   MaybeFailure resourceRefusal();
@@ -204,54 +213,116 @@ class RenderJob {
   const std::optional<fs::path>* planned_;
   render::RenderSettings settings_;
   SceneAndTarget job_;
+  // The objects, compiled as they are read: no list of them all is held.
+  std::optional<render::RenderSceneBuilder> builder_;
+  std::uint64_t objectCount_ = 0;
+  scene::StreamReadMemory readMemory_;
 };
 
-// Step 1: the scene, from the file, standard input or the built-in one.
+void RenderJob::addObjects(std::span<const scene::Object> objects) {
+  builder_->add(objects);
+  objectCount_ += objects.size();
+}
+
+// Step 1: the scene, from the file, standard input or the built-in one, its
+// objects compiled as they come: a scene file is streamed
+// (scenefile/read_stream.h), so that neither its text nor a model of all
+// its objects is ever held.
 MaybeFailure RenderJob::readScene() {
+  builder_.emplace(renderThreadCount(o_.settings.threads));
   if (o_.input.empty()) {
     job_.scene = render::defaultScene();
+    addObjects(job_.scene.objects);
+    job_.scene.objects.clear();
     return std::nullopt;
   }
   std::string shown = inputDisplayName(o_.input);
   stage_.set("reading " + printableText(shown));
-  InputText text = readInputText(o_.input, o_.read, &output_.streams().in);
-  DiagnosticFormat format = DiagnosticFormat::Text;
+  // A big scene file is read on the render's threads too.
+  scene::ReadOptions read = o_.read;
+  read.threads = static_cast<unsigned>(renderThreadCount(o_.settings.threads));
+  if (isStandardStream(o_.input)) return readStandardInput(shown, read);
+  SourceExcerpts sources;
+  scene::StreamReadResult streamed = scene::streamSceneFile(
+      o_.input, read, [this](std::span<const scene::Object> batch) { addObjects(batch); },
+      &sources);
+  readMemory_ = streamed.memory;
+  // The text and model the read freed go back to the system before the
+  // BVH and the image take their room.
+  ::malloc_trim(0);
+  const std::vector<scene::Diagnostic>& items = streamed.read.diagnostics.items();
+  if (!streamed.format && items.size() == 1 &&
+      items[0].code == scene::DiagnosticCode::CannotReadFile) {
+    return fileFailure(ExitCode::IoError, shown, printableText(items[0].message));
+  }
+  if (!streamed.format && items.size() == 1 &&
+      items[0].code == scene::DiagnosticCode::FileTooLarge) {
+    DiagnosticPrinter(output_.err(), output_.diagnosticStyle(DiagnosticFormat::Text))
+        .print(streamed.read.diagnostics);
+    return toldFailure(ExitCode::InvalidInput);
+  }
+  return acceptScene(std::move(streamed.read), streamed.format, shown, sources);
+}
+
+// Standard input, read whole: a pipe cannot be read again for the
+// diagnostics of a file with errors.
+MaybeFailure RenderJob::readStandardInput(const std::string& shown,
+                                          const scene::ReadOptions& read) {
+  InputText text = readInputText(o_.input, read, &output_.streams().in);
   if (text.tooLarge()) {
-    DiagnosticPrinter(output_.err(), output_.diagnosticStyle(format)).print(text.diagnostics);
+    DiagnosticPrinter(output_.err(), output_.diagnosticStyle(DiagnosticFormat::Text))
+        .print(text.diagnostics);
     return toldFailure(ExitCode::InvalidInput);
   }
   if (!text.text) {
     return fileFailure(ExitCode::IoError, shown,
                        "cannot read the file: " + printableText(text.readError));
   }
-  // A big scene file is read on the render's threads too.
-  scene::ReadOptions read = o_.read;
-  read.threads = static_cast<unsigned>(renderThreadCount(o_.settings.threads));
   scene::ReadResult result = scene::parseScene(*text.text, shown, read);
+  SourceExcerpts sources;
+  sources.capture(shown, *text.text, result.diagnostics);
+  std::optional<scene::Format> format = scene::detectFormat(*text.text, shown);
+  text.text.reset();
+  if (result.ok()) addObjects(result.scene.objects);
+  std::vector<scene::Object>().swap(result.scene.objects);
+  return acceptScene(std::move(result), format, shown, sources);
+}
+
+// The scene read, its diagnostics printed; a failure where it holds errors.
+MaybeFailure RenderJob::acceptScene(scene::ReadResult result, std::optional<scene::Format> format,
+                                    const std::string& shown, const SourceExcerpts& sources) {
   // Only an instruction file names its image where it can be seen; the
   // OUTPUT_FILE that another format carries for a round trip (glTF extras,
   // OBJ comments) does not choose the image's name.
-  if (scene::detectFormat(*text.text, shown) != scene::Format::InstructionFile) {
-    result.scene.outputFile.reset();
-  }
+  if (format != scene::Format::InstructionFile) result.scene.outputFile.reset();
   if (result.scene.outputFile && o_.output.empty()) {
     // OUTPUT_FILE is the instruction file's to choose, inside its folder
     // (standard input's: the current folder).
     fs::path folder = isStandardStream(o_.input) ? fs::path() : fs::path(o_.input).parent_path();
     scene::checkOutputLocation(result.scene, folder, scene::Severity::Error, result.diagnostics);
   }
-  SourceExcerpts sources;
-  sources.capture(shown, *text.text, result.diagnostics);
-  DiagnosticStyle style = output_.diagnosticStyle(format);
+  DiagnosticStyle style = output_.diagnosticStyle(DiagnosticFormat::Text);
   // The view this render will use, which no hint asks for again.
   render::RenderSettings inUse = settings_;
   scene::applySceneView(result.scene, o_.width, o_.height, o_.fov.has_value(), inUse);
   style.hint = [inUse](const scene::Diagnostic& d) { return renderHintText(d, inUse); };
   DiagnosticPrinter(output_.err(), style, &sources).print(result.diagnostics);
   if (!result.ok()) return toldFailure(ExitCode::InvalidInput);
-  output_.detail("read " + printableText(shown) + " (" + sceneContents(result.scene) + ")");
+  output_.detail("read " + printableText(shown) + " (" + countOf(objectCount_, "object") + ", " +
+                 countOf(result.scene.lights.size(), "light") + ")");
   job_.scene = std::move(result.scene);
   return std::nullopt;
+}
+
+// What each stage held at most, for -v: the read's text and model, the
+// compiled scene's parts, the image.
+std::vector<StageMemory> RenderJob::stagesHeld(const render::RenderScene& compiled,
+                                               const render::Image& image) const {
+  render::RenderSceneMemory held = compiled.memory();
+  std::uint64_t pixels = (image.rgb.capacity() + image.coverage.capacity()) * sizeof(float);
+  return {{"text", readMemory_.textBytes}, {"model", readMemory_.modelBytes},
+          {"records", held.records},       {"BVH", held.bvh},
+          {"grids", held.grids},           {"image", pixels}};
 }
 
 void RenderJob::chooseTarget() {
@@ -319,9 +390,12 @@ MaybeFailure RenderJob::targetRefusal() {
 // Whether the render fits in memory and its threads start: refused before
 // it starts rather than killed, or aborted, half-way.
 MaybeFailure RenderJob::resourceRefusal() {
-  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
-      job_.scene.objects.size(), job_.scene.lights.size(), imageWidth(settings_),
-      imageHeight(settings_), settings_.coverage);
+  render::RenderMemoryEstimate estimate =
+      render::estimateRenderMemory(objectCount_, job_.scene.lights.size(), imageWidth(settings_),
+                                   imageHeight(settings_), settings_.coverage);
+  // The records were made as the objects were read: the free memory has
+  // counted them already.
+  estimate.scene = 0;
   if (settings_.adaptiveThreshold > 0) {
     estimate.image = render::saturatingSum(
         estimate.image, render::adaptiveSamplingBytes(imageWidth(settings_), imageHeight(settings_),
@@ -432,8 +506,9 @@ MaybeFailure RenderJob::run() {
   if (MaybeFailure failure = resourceRefusal()) return failure;
   stage_.set("preparing the scene");
   // The lights' direction grids serve the CPU path only.
-  render::RenderScene compiled(job_.scene, renderThreadCount(settings_.threads),
-                               settings_.device != render::RenderDevice::Gpu);
+  render::RenderScene compiled =
+      std::move(*builder_).finish(job_.scene, settings_.device != render::RenderDevice::Gpu);
+  builder_.reset();
   output_.step("preparing the scene");
   render::RenderStatistics statistics;
   render::ProgressCallback progress;
@@ -468,8 +543,12 @@ MaybeFailure RenderJob::run() {
   // The scene and its compiled form are freed while the image is written:
   // at 1,000,000 objects their destructors took 8 ms, and the heap they
   // leave, handed back to the system, 25 ms more at the process's exit.
+  std::vector<StageMemory> held = stagesHeld(compiled, image);
   ReleasedScene aside(std::move(job_.scene), std::move(compiled));
-  return writeImage(image, statistics);
+  MaybeFailure failure = writeImage(image, statistics);
+  // The peak as it stands once the image is written, whose bytes it counts.
+  if (!failure) output_.detail(memoryReportText(held, peakResidentBytes(), objectCount_));
+  return failure;
 }
 
 // --merge: the regions in o.inputs, one image in o.output (region_merge.h).
