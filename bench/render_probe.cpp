@@ -6,9 +6,14 @@
 //       Reads SCENE (any format sfrender reads), then times apart, on one
 //       process: parsing (scene::parseScene on the file in memory, on T
 //       threads), building the render scene and its BVH
-//       (render::RenderScene construction), and
+//       (render::RenderSceneBuilder, the objects added in batches of 65,536
+//       as a streaming reader hands them over, then finish), and
 //       rendering (render::renderImage). Prints "key: value" lines:
-//       file_bytes, objects, parse_s, build_s, render_s, primary_rays,
+//       file_bytes, objects, parse_s, build_s (add_s + finish_s),
+//       records_bytes_per_object, bvh_bytes_per_object,
+//       grids_bytes_per_object (RenderScene::memory), build_peak_bytes_per_object
+//       (the most the build held beyond what was held before it, from
+//       VmHWM), render_s, primary_rays,
 //       total_rays, ns_per_primary_ray (render wall time over primary rays,
 //       times the threads: CPU time per ray), peak_rss_bytes, and rgb_fnv1a
 //       (a hash of the image's floats, to see that two renders agree bit
@@ -41,6 +46,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <span>
 #include <sstream>
 #include <string>
 
@@ -48,6 +54,7 @@
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "renderer/render_scene_builder.h"
 #include "scenefile/read.h"
 
 namespace {
@@ -57,13 +64,53 @@ double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-long peakRssBytes() {
+// A kB field of /proc/self/status ("VmHWM:", "VmRSS:"), in bytes.
+long statusBytes(const std::string& key) {
   std::ifstream status("/proc/self/status");
   std::string line;
   while (std::getline(status, line)) {
-    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6)) * 1024;
+    if (line.rfind(key, 0) == 0) return std::stol(line.substr(key.size())) * 1024;
   }
   return 0;
+}
+
+long peakRssBytes() {
+  return statusBytes("VmHWM:");
+}
+
+// Sets VmHWM to what is held now (Linux 4.0 on), so that the next reading
+// is the peak from here.
+void resetPeakRss() {
+  std::ofstream("/proc/self/clear_refs") << "5";
+}
+
+// Builds the render scene as sfrender's streaming read does, and prints
+// the build's times and memory by stage.
+render::RenderScene buildInBatches(const scene::Scene& scene, int threads) {
+  constexpr std::size_t kBatch = 65536;
+  const double objects = std::max<double>(1.0, static_cast<double>(scene.objects.size()));
+  resetPeakRss();
+  const long before = statusBytes("VmRSS:");
+  auto t0 = Clock::now();
+  render::RenderSceneBuilder builder(threads);
+  std::span<const scene::Object> all(scene.objects);
+  for (std::size_t first = 0; first < all.size(); first += kBatch) {
+    builder.add(all.subspan(first, std::min(kBatch, all.size() - first)));
+  }
+  const double add = since(t0);
+  t0 = Clock::now();
+  render::RenderScene compiled = std::move(builder).finish(scene);
+  const double finish = since(t0);
+  const long peak = peakRssBytes();
+  render::RenderSceneMemory memory = compiled.memory();
+  std::printf("add_s: %.6f\n", add);
+  std::printf("finish_s: %.6f\n", finish);
+  std::printf("build_s: %.6f\n", add + finish);
+  std::printf("records_bytes_per_object: %.1f\n", memory.records / objects);
+  std::printf("bvh_bytes_per_object: %.1f\n", memory.bvh / objects);
+  std::printf("grids_bytes_per_object: %.1f\n", memory.grids / objects);
+  std::printf("build_peak_bytes_per_object: %.1f\n", (peak - before) / objects);
+  return compiled;
 }
 
 int timeScene(const std::string& path, const render::RenderSettings& settings) {
@@ -74,7 +121,8 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
   }
   std::ostringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::string text = buffer.str();
+  const std::size_t fileBytes = text.size();
 
   scene::ReadOptions read;
   read.threads = static_cast<unsigned>(std::max(0, settings.threads));
@@ -85,19 +133,17 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
     std::cerr << "render_probe: " << path << " has errors\n";
     return 1;
   }
-  t0 = Clock::now();
-  render::RenderScene compiled(result.scene, settings.threads);
-  const double build = since(t0);
+  std::string().swap(text);
+  std::printf("objects: %zu\n", result.scene.objects.size());
+  std::printf("parse_s: %.6f\n", parse);
+  const render::RenderScene compiled = buildInBatches(result.scene, settings.threads);
   render::RenderStatistics stats;
   t0 = Clock::now();
   render::Image image = render::renderImage(compiled, settings, &stats);
   const double renderSeconds = since(t0);
   const auto total = stats.rays.primary + stats.rays.secondary + stats.rays.shadow;
   const int threads = settings.threads > 0 ? settings.threads : 1;
-  std::printf("file_bytes: %zu\n", text.size());
-  std::printf("objects: %zu\n", result.scene.objects.size());
-  std::printf("parse_s: %.6f\n", parse);
-  std::printf("build_s: %.6f\n", build);
+  std::printf("file_bytes: %zu\n", fileBytes);
   std::printf("render_s: %.6f\n", renderSeconds);
   std::printf("primary_rays: %llu\n", static_cast<unsigned long long>(stats.rays.primary));
   std::printf("total_rays: %llu\n", static_cast<unsigned long long>(total));

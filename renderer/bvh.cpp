@@ -454,42 +454,45 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
                        boxes >= kMinParallelBoxes ? kParallelBytes : 0);
 }
 
-Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, std::vector<Bounds>* itemBoxes) {
-  if (boxes.empty()) return;
+Bvh::Bvh(const std::vector<Bounds>& boxes, int threads)
+    : Bvh(
+          static_cast<std::uint32_t>(boxes.size()), [&](std::uint32_t i) { return boxes[i]; },
+          threads) {}
+
+Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int threads) {
+  if (n == 0) return;
   threads = std::min(resolveThreads(threads), kMaxBuildThreads);
-  const std::uint32_t n = static_cast<std::uint32_t>(boxes.size());
   if (n < kMinParallelBoxes) threads = 1;
-  // The list and the nodes side by side, each on a thread of its own: most
-  // of either is the first touch of its fresh pages. The list is made in
-  // one pass (sized first, it would be written twice).
+  // The list in parts side by side, each part's extent merged after (a
+  // union of boxes, the same whatever the parts), and the nodes sized
+  // beside them: most of either is the first touch of its fresh pages.
   std::vector<BuildItem> items;
   allocateHere(items, n);
   allocateHere(nodes_, kNodesPerBox * n);
-  NodeExtent extent;
-  runParts(2, threads, [&](std::size_t array) {
-    if (array == 0) {
-      for (std::uint32_t i = 0; i < n; ++i) {
-        items.push_back(BuildItem{boxes[i], i, 0});
-        extent.extend(items.back());
-      }
-    } else {
+  items.resize(n);
+  const std::size_t parts = static_cast<std::size_t>(threads);
+  std::vector<NodeExtent> extents(parts);
+  runParts(parts + 1, threads, [&](std::size_t part) {
+    if (part == parts) {
       nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
+      return;
+    }
+    const std::uint32_t end = static_cast<std::uint32_t>(n * (part + 1) / parts);
+    for (std::uint32_t i = static_cast<std::uint32_t>(n * part / parts); i < end; ++i) {
+      items[i] = BuildItem{boxOf(i), i, 0};
+      extents[part].extend(items[i]);
     }
   });
+  NodeExtent extent;
+  for (const NodeExtent& part : extents) extent.extend(part);
   BuildInput in{items.data(), nodes_.data()};
-  // The items in the order the build left them, which the leaves index,
-  // and their boxes in that order where asked for, in one pass over them,
-  // shared out to the threads.
+  // The items in the order the build left them, which the leaves index.
   auto keepOrder = [&] {
     items_.resize(n);
-    if (itemBoxes) itemBoxes->resize(n);
-    Bounds* boxesInOrder = itemBoxes ? itemBoxes->data() : nullptr;
-    const std::size_t parts = static_cast<std::size_t>(threads);
     runParts(parts, threads, [&](std::size_t part) {
       const std::uint32_t end = static_cast<std::uint32_t>(n * (part + 1) / parts);
       for (std::uint32_t i = static_cast<std::uint32_t>(n * part / parts); i < end; ++i) {
         items_[i] = items[i].index;
-        if (boxesInOrder) boxesInOrder[i] = items[i].box;
       }
     });
   };

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -55,14 +56,14 @@ class Bvh {
   static constexpr std::uint32_t kTasksPerThread = 8;
 
   Bvh() = default;
-  /// Builds over the boxes; items are indices into `boxes`. `threads`
-  /// threads share the build (0: the hardware's count); the tree is the
-  /// same, node for node and item for item, whatever their number.
-  /// `itemBoxes`, when given, gets the boxes in the order of items():
-  /// (*itemBoxes)[k] is boxes[items()[k]], neighbours in space near each
-  /// other. It may be &boxes, which is read in full before it is written.
-  explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1,
-               std::vector<Bounds>* itemBoxes = nullptr);
+  /// Builds over `count` boxes, box i being boxOf(i) (called once for each,
+  /// from any of the threads, so that the caller need not hold them all);
+  /// items are the boxes' indices. `threads` threads share the build (0:
+  /// the hardware's count); the tree is the same, node for node and item for
+  /// item, whatever their number.
+  Bvh(std::uint32_t count, const std::function<Bounds(std::uint32_t)>& boxOf, int threads);
+  /// The same over boxes held in a list.
+  explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
 
   /// The most bytes the build over `boxes` boxes holds at once: the nodes
   /// as reserved (kNodesPerBox), the items, a copy of each box beside its

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -109,22 +110,22 @@ TEST(BvhBuild, DeepTreesWithLeavesOfManyBoxesAreTheSameWhateverTheThreadCount) {
   for (int threads : {2, 3, 4}) expectSameTree(one, Bvh(boxes, threads), threads);
 }
 
-// The boxes in the items' order, into another vector or back into the
-// boxes themselves, on one thread and on several.
-TEST(BvhBuild, GivesTheBoxesInTheOrderOfItsItems) {
+// Boxes handed over one by one build the tree built over the list, each
+// asked for once, on one thread and on several.
+TEST(BvhBuild, BoxesMadeOnTheFlyBuildTheSameTree) {
   for (int threads : {1, 3}) {
     std::vector<Bounds> boxes = randomBoxes(11, 40000);
-    std::vector<Bounds> inOrder;
-    Bvh bvh(boxes, threads, &inOrder);
-    ASSERT_EQ(inOrder.size(), boxes.size());
-    for (std::size_t k = 0; k < boxes.size(); ++k) {
-      const Bounds& expected = boxes[bvh.items()[k]];
-      ASSERT_EQ(std::memcmp(&inOrder[k], &expected, sizeof(Bounds)), 0) << "item " << k;
-    }
-    std::vector<Bounds> inPlace = boxes;
-    Bvh again(inPlace, threads, &inPlace);
-    expectSameTree(bvh, again, threads);
-    ASSERT_EQ(std::memcmp(inPlace.data(), inOrder.data(), inOrder.size() * sizeof(Bounds)), 0);
+    Bvh fromList(boxes, threads);
+    std::vector<std::atomic<int>> asked(boxes.size());
+    Bvh onTheFly(
+        static_cast<std::uint32_t>(boxes.size()),
+        [&](std::uint32_t i) {
+          ++asked[i];
+          return boxes[i];
+        },
+        threads);
+    expectSameTree(fromList, onTheFly, threads);
+    for (std::size_t i = 0; i < boxes.size(); ++i) ASSERT_EQ(asked[i], 1) << "box " << i;
   }
 }
 

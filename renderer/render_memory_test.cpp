@@ -27,8 +27,8 @@ TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
   EXPECT_EQ(estimateRenderMemory(2000, 0, 1, 1).scene,
             2 * estimateRenderMemory(1000, 0, 1, 1).scene);
   EXPECT_EQ(estimateRenderMemory(2000, 0, 1, 1).bvh, 2 * estimateRenderMemory(1000, 0, 1, 1).bvh);
-  // At least the float image, and each object's matrices (two 3x3 doubles
-  // and a translation, more than 160 bytes) and material.
+  // At least the float image, and each object's record (a 3x3 double
+  // matrix and a translation), colour and material, more than 200 bytes.
   EXPECT_GE(small.image, 640u * 480 * 12);
   EXPECT_GE(big.scene, 1'000'000u * 200);
   EXPECT_GT(big.bvh, small.bvh);
@@ -43,25 +43,25 @@ TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
 TEST(RenderMemory, ThePartsAreTheTypesSizes) {
   RenderMemoryEstimate e = estimateRenderMemory(1000, 7, 640, 480);
   EXPECT_EQ(e.image, 640u * 480 * 3 * (3 * sizeof(float)));
-  // The records, each object's index in its list, its index in the scene
-  // and its BVH leaf, and a plane's normal, counted for any object.
-  EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
-                             3 * sizeof(std::uint32_t) + sizeof(glm::dvec3)) +
+  // The records, their colours, a material each (at most), each object's
+  // index in the scene and in the plane list, and a plane's normal, counted
+  // for any object.
+  EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(scene::Material) +
+                             2 * sizeof(std::uint32_t) + sizeof(glm::dvec3)) +
                          7 * sizeof(RenderLight));
-  // At least the nodes, items and boxes, the build's copy of each box
-  // beside its index (padded to 8 bytes), and the constructor's three lists
-  // of indices (the planes and the bounded objects in the scene's order,
-  // which may double, and the BVH's order). The threads' lists of the top
-  // of the tree and of its subtrees come only with a parallel build, from
-  // 16,384 boxes.
-  std::uint64_t parts = 1000 * (2 * sizeof(Bounds) + (sizeof(Bounds) + 8) + 2 * sizeof(BvhNode) +
-                                4 * sizeof(std::uint32_t));
+  // At least the nodes and items, the build's copy of each box beside its
+  // index (padded to 8 bytes), the BVH's old item numbers, a byte of marks
+  // for the records' moves, and for the grids each item's box and leaf. The
+  // threads' lists of the top of the tree and of its subtrees come only
+  // with a parallel build, from 16,384 boxes.
+  std::uint64_t parts = 1000 * (sizeof(Bounds) + (sizeof(Bounds) + 8) + 2 * sizeof(BvhNode) +
+                                3 * sizeof(std::uint32_t) + 1);
   // And 7 lights' grids of at most 8 cells a box on each face: per cell
   // its start, count and full flag, per entry an index (16 a box, plus one
   // a cell, at most), and while two build at once, 6 ranges of cells a box
-  // each in a vector that may double, and each item's leaf.
+  // each in a vector that may double.
   std::uint64_t cells = 6 * 8 * 1000 + 1;
-  std::uint64_t grids = 7 * (cells * 13 + (16 * 1000 + cells) * 4) + 1000 * (2 * 2 * 6 * 20 + 4);
+  std::uint64_t grids = 7 * (cells * 13 + (16 * 1000 + cells) * 4) + 1000 * (2 * 2 * 6 * 20);
   EXPECT_GE(e.bvh, parts + grids);
   EXPECT_LE(e.bvh, parts + grids + 1000 * 12);
   EXPECT_EQ(estimateRenderMemory(5, 0, 0, -3).image, 0u);  // no pixels

@@ -9,6 +9,7 @@
 #include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
 #include "renderer/parallel_parts.h"
+#include "renderer/render_scene_builder.h"
 #include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
 
@@ -23,18 +24,6 @@ glm::dmat3 inverse3(const glm::dmat3& a) {
   glm::dmat3 adjugateT(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
   double det = glm::dot(a[0], adjugateT[0]);
   return glm::transpose(adjugateT) / det;
-}
-
-// How far ahead of the record being made the constructor fetches its
-// scene object.
-constexpr std::size_t kGatherAhead = 8;
-
-// Asks for the cache lines of `object` ahead of their use.
-void prefetchObject(const scene::Object& object) {
-  const char* bytes = reinterpret_cast<const char*>(&object);
-  for (std::size_t line = 0; line < sizeof(scene::Object); line += 64) {
-    __builtin_prefetch(bytes + line);
-  }
 }
 
 // Half the size of a unit shape's box under `m` on each axis (none for a
@@ -72,6 +61,24 @@ std::optional<Bounds> shapeBounds(scene::ObjectKind kind, const glm::dmat4& m) {
   return Bounds{centre - *extent, centre + *extent};
 }
 
+RenderObject renderObject(scene::ObjectKind kind, const glm::dmat4& toWorld) {
+  RenderObject record;
+  record.kind = kind;
+  record.translation = glm::dvec3(toWorld[3]);
+  record.toLocal = inverse3(glm::dmat3(toWorld));
+  return record;
+}
+
+glm::dmat3 RenderObject::toWorldLinear() const {
+  return inverse3(toLocal);
+}
+
+std::optional<Bounds> worldBounds(const RenderObject& object) {
+  glm::dmat4 matrix(object.toWorldLinear());
+  matrix[3] = glm::dvec4(object.translation, 1.0);
+  return worldBounds(object.kind, matrix);
+}
+
 std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
   std::optional<glm::dvec3> extent = shapeExtent(kind, m);
   if (!extent) return std::nullopt;
@@ -82,26 +89,24 @@ std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
 }
 
 RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t lights) {
-  // The vectors of the constructor below. objects_, linearToWorld_,
-  // materials_, sceneObjects_ and lights_ are sized once, and so are bounded_
-  // and planes_, one index an object between them. While it builds, the
-  // planes' and bounded objects' lists in the scene's order take 4 bytes
-  // an object (8 are counted, from when they grew by doubling), the BVH's
-  // old item numbers 4, and the boxes one box an object, counted twice
-  // over, as when they too grew by doubling.
+  // The vectors of RenderSceneBuilder. Kept: per object its record, colour
+  // and scene index, a plane's normal and place in the plane list (counted
+  // for every object, as any may be a plane), and a material (as many
+  // distinct ones as objects, at most).
   Bytes bytes;
-  // A plane's normal is counted for every object, as any may be a plane.
-  std::uint64_t perObject = sizeof(RenderObject) + sizeof(glm::dmat3) + sizeof(scene::Material) +
-                            2 * sizeof(std::uint32_t) + sizeof(glm::dvec3);
+  std::uint64_t perObject = sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(std::uint32_t) +
+                            sizeof(glm::dvec3) + sizeof(std::uint32_t) + sizeof(scene::Material);
   bytes.scene = saturatingSum(saturatingProduct(objects, perObject),
                               saturatingProduct(lights, sizeof(RenderLight)));
+  // While it builds: the BVH (Bvh::bytesFor), its old item numbers and the
+  // records' moves' marks (a byte an object is counted), and for the grids
+  // one box an object and each item's leaf.
   bytes.bvh =
-      saturatingSum(saturatingProduct(objects, 2 * sizeof(Bounds) + 3 * sizeof(std::uint32_t)),
+      saturatingSum(saturatingProduct(objects, sizeof(Bounds) + 2 * sizeof(std::uint32_t) + 1),
                     Bvh::bytesFor(objects));
   // The lights' grids (DirectionGrid::bytes, bounded by its limits), and
   // while they are built (kGridsBuiltAtOnce at a time), each one's cell
-  // ranges of each box (at most one a window, in a vector that may double),
-  // and the leaf of each item.
+  // ranges of each box (at most one a window, in a vector that may double).
   std::uint64_t grids = std::min<std::uint64_t>(lights, kMaxLightGrids);
   if (objects >= kMinLightGridObjects && grids > 0) {
     DirectionGrid::Limits limits;
@@ -114,12 +119,10 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
                                           saturatingProduct(entries, sizeof(std::uint32_t)));
     std::uint64_t atOnce = std::min<std::uint64_t>(grids, kGridsBuiltAtOnce);
     std::uint64_t building = saturatingProduct(
-        objects, atOnce * 2 * DirectionGrid::kMaxWindows * DirectionGrid::kRangeBytes +
-                     sizeof(std::uint32_t));
+        objects, atOnce * 2 * DirectionGrid::kMaxWindows * DirectionGrid::kRangeBytes);
     bytes.bvh =
         saturatingSum(bytes.bvh, saturatingSum(saturatingProduct(grids, perGrid), building));
   }
-  bytes.scene = saturatingSum(bytes.scene, saturatingProduct(objects, sizeof(std::uint32_t)));
   return bytes;
 }
 
@@ -134,152 +137,19 @@ std::uint64_t capacityBytes(const std::vector<T>& v) {
 
 RenderSceneMemory RenderScene::memory() const {
   RenderSceneMemory memory;
-  memory.records = capacityBytes(objects_) + capacityBytes(linearToWorld_) +
-                   capacityBytes(materials_) + capacityBytes(sceneObjects_) +
-                   capacityBytes(bounded_) + capacityBytes(planes_) + capacityBytes(planeNormals_) +
-                   capacityBytes(lights_);
+  memory.records = capacityBytes(objects_) + capacityBytes(colours_) + capacityBytes(materials_) +
+                   capacityBytes(sceneObjects_) + capacityBytes(planes_) +
+                   capacityBytes(planeNormals_) + capacityBytes(lights_);
   memory.bvh = capacityBytes(bvh_.nodes()) + capacityBytes(bvh_.items());
   memory.grids = capacityBytes(leafOf_);
   for (const DirectionGrid& grid : lightGrids_) memory.grids += grid.bytes();
   return memory;
 }
 
-RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids)
-    : camera_(scene.camera) {
-  // As many as the BVH's build starts, at most.
-  threads = std::min(resolveThreads(threads), Bvh::kMaxBuildThreads);
-  const std::size_t count = scene.objects.size();
-  std::size_t parts = count < kMinParallelObjects ? 1 : static_cast<std::size_t>(threads);
-  // Step 1: the planes and the bounded objects, by their place in the
-  // scene, and the bounded objects' boxes in that order, made in parts
-  // side by side. The arrays are sized side by side, one to a thread: a
-  // resize writes every page of a fresh array, and those first touches
-  // took 107 ms of one thread at 1,000,000 objects, a seventh of the
-  // preparing. Each part's planes are counted beside them (sorting the
-  // objects into the two lists on one thread took 12 ms there), and the
-  // boxes have room for every object until the count is known.
-  std::vector<Bounds> boxes;
-  // Their room is taken on this thread (renderer/parallel_parts.h,
-  // allocateHere) and written on the others.
-  allocateHere(objects_, count);
-  allocateHere(materials_, count);
-  allocateHere(linearToWorld_, count);
-  allocateHere(sceneObjects_, count);
-  allocateHere(boxes, count);
-  auto partBegin = [&](std::size_t part) { return count * part / parts; };
-  std::vector<std::size_t> planesBefore(parts + 1, 0);  // [k + 1]: part k's, then summed
-  constexpr std::size_t kArrays = 5;
-  runParts(kArrays + parts, static_cast<int>(parts), [&](std::size_t task) {
-    switch (task) {
-      case 0:
-        objects_.resize(count);
-        break;
-      case 1:
-        materials_.resize(count);
-        break;
-      case 2:
-        linearToWorld_.resize(count);
-        break;
-      case 3:
-        sceneObjects_.resize(count);
-        break;
-      case 4:
-        boxes.resize(count);
-        break;
-      default: {
-        std::size_t part = task - kArrays;
-        std::size_t planes = 0;
-        for (std::size_t i = partBegin(part); i < partBegin(part + 1); ++i) {
-          planes += scene.objects[i].kind == scene::ObjectKind::Plane ? 1 : 0;
-        }
-        planesBefore[part + 1] = planes;
-        break;
-      }
-    }
-  });
-  for (std::size_t part = 0; part < parts; ++part) planesBefore[part + 1] += planesBefore[part];
-  std::vector<std::uint32_t> planesInScene(planesBefore[parts]);
-  std::vector<std::uint32_t> boundedInScene(count - planesBefore[parts]);
-  boxes.resize(boundedInScene.size());
-  runParts(parts, threads, [&](std::size_t part) {
-    std::size_t plane = planesBefore[part];
-    std::size_t bounded = partBegin(part) - plane;
-    for (std::size_t i = partBegin(part); i < partBegin(part + 1); ++i) {
-      const scene::Object& o = scene.objects[i];
-      if (o.kind == scene::ObjectKind::Plane) {
-        planesInScene[plane++] = static_cast<std::uint32_t>(i);
-        continue;
-      }
-      boundedInScene[bounded] = static_cast<std::uint32_t>(i);
-      boxes[bounded++] = *worldBounds(o.kind, o.matrix);
-    }
-  });
-
-  // Step 2: the BVH, whose order becomes the records' order (the planes
-  // first): neighbours in space are neighbours in memory, so the records a
-  // ray reads lie together. In the scene's order, which a file may give
-  // at random, the render of 1,000,000 objects took a third longer.
-  // The boxes in the BVH's order from here on, for the grids' build.
-  bvh_ = Bvh(boxes, threads, &boxes);
-  std::vector<std::uint32_t> order = bvh_.numberItemsByPlace();
-  const std::uint32_t planeCount = static_cast<std::uint32_t>(planesInScene.size());
-  std::copy(planesInScene.begin(), planesInScene.end(), sceneObjects_.begin());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    sceneObjects_[planeCount + k] = boundedInScene[order[k]];
-  }
-  planes_.resize(planeCount);
-  std::iota(planes_.begin(), planes_.end(), 0u);
-  bounded_.resize(boundedInScene.size());
-  std::iota(bounded_.begin(), bounded_.end(), planeCount);
-
-  // Step 3: the records in that order, the lights, and the lights' grids.
-  makeRecords(scene, parts, threads);
-  lights_.reserve(scene.lights.size());
-  for (const scene::Light& light : scene.lights) {
-    lights_.push_back(RenderLight{light.position(), light.colour});
-  }
-  // A grid per light, for its shadow rays (docs/TRACING.md, "Direction
-  // grids"); not for a scene of planes alone, which has nothing to list.
-  if (lightGrids && boxes.size() >= kMinLightGridObjects) buildLightGrids(boxes, threads);
-}
-
-void RenderScene::makeRecords(const scene::Scene& scene, std::size_t parts, int threads) {
-  const std::size_t count = scene.objects.size();
-  // In parts side by side, each record gathered from its place in the
-  // scene, which a file in no spatial order makes a random read: the object
-  // kGatherAhead records on is fetched while this one is made (at 1,000,000
-  // objects 50 -> 33 ms on 2 threads; 4 to 16 ahead did the same).
-  std::vector<std::uint8_t> transparent(parts, 0);
-  std::vector<MaterialMaxima> maxima(parts);
-  runParts(parts, threads, [&](std::size_t part) {
-    // Gathered here and stored once: the parts' entries share a cache line,
-    // which writing them object by object passed between the threads.
-    MaterialMaxima gathered;
-    bool anyTransparent = false;
-    const std::size_t end = count * (part + 1) / parts;
-    for (std::size_t r = count * part / parts; r < end; ++r) {
-      if (r + kGatherAhead < end) prefetchObject(scene.objects[sceneObjects_[r + kGatherAhead]]);
-      const scene::Object& o = scene.objects[sceneObjects_[r]];
-      glm::dmat3 linear(o.matrix);
-      RenderObject& record = objects_[r];
-      record.kind = o.kind;
-      record.translation = glm::dvec3(o.matrix[3]);
-      record.toLocal = inverse3(linear);
-      linearToWorld_[r] = linear;
-      materials_[r] = o.material;
-      anyTransparent |= o.material.transparency > 0.0;
-      gathered.add(o.kind, o.material);
-    }
-    transparent[part] = anyTransparent ? 1 : 0;
-    maxima[part] = gathered;
-  });
-  for (const MaterialMaxima& part : maxima) materialMaxima_.merge(part);
-  hasTransparency_ = std::find(transparent.begin(), transparent.end(), 1) != transparent.end();
-  planeNormals_.reserve(planes_.size());
-  for (std::uint32_t plane : planes_) {
-    planeNormals_.push_back(
-        glm::normalize(objects_[plane].normalToWorld(glm::dvec3(0.0, 1.0, 0.0))));
-  }
+RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids) {
+  RenderSceneBuilder builder(threads);
+  builder.add(scene.objects);
+  *this = std::move(builder).finish(scene, lightGrids);
 }
 
 void RenderScene::buildLightGrids(const std::vector<Bounds>& boxes, int threads) {
@@ -309,10 +179,7 @@ void RenderScene::buildLightGrids(const std::vector<Bounds>& boxes, int threads)
 }
 
 Bounds RenderScene::itemBounds(std::uint32_t item) const {
-  std::uint32_t index = bounded_[item];
-  glm::dmat4 matrix(linearToWorld_[index]);
-  matrix[3] = glm::dvec4(objects_[index].translation, 1.0);
-  return *worldBounds(objects_[index].kind, matrix);
+  return *worldBounds(objects_[bounded_[item]]);
 }
 
 EyeGrid RenderScene::eyeGrid(const glm::dvec3& eye, const GridWindow& window) const {
@@ -456,7 +323,7 @@ void RenderScene::hitOn(std::uint32_t index, const Ray& ray, const Candidate& c,
   hit.object = index;
   // m * (point, 1) as glm's dmat4 product adds it up: the first two
   // columns' products, then the third's with the translation (times 1).
-  const glm::dmat3& m = linearToWorld_[index];
+  const glm::dmat3 m = object.toWorldLinear();
   const glm::dvec3& translation = object.translation;
   hit.point = (m[0] * s.point.x + m[1] * s.point.y) + (m[2] * s.point.z + translation);
   for (int r = 0; r < 3; ++r) {
@@ -637,7 +504,8 @@ std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) con
   std::vector<std::uint32_t> media;
   for (std::uint32_t i = 0; i < objects_.size(); ++i) {
     const RenderObject& object = objects_[i];
-    if (object.kind == scene::ObjectKind::Plane || materials_[i].transparency <= 0.0) continue;
+    if (object.kind == scene::ObjectKind::Plane || materials_[object.material].transparency <= 0.0)
+      continue;
     glm::dvec3 local = object.toLocalPoint(p);
     bool inside = false;
     switch (object.kind) {
@@ -658,8 +526,8 @@ std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) con
   // Larger solids first: the smallest is the innermost; of equal ones, the
   // first in the scene first, whatever the BVH's order.
   std::sort(media.begin(), media.end(), [this](std::uint32_t a, std::uint32_t b) {
-    double volumeA = std::abs(glm::determinant(linearToWorld_[a]));
-    double volumeB = std::abs(glm::determinant(linearToWorld_[b]));
+    double volumeA = std::abs(glm::determinant(linearToWorld(a)));
+    double volumeB = std::abs(glm::determinant(linearToWorld(b)));
     if (volumeA != volumeB) return volumeA > volumeB;
     return sceneObjects_[a] < sceneObjects_[b];
   });

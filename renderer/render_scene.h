@@ -33,14 +33,18 @@ struct RaySource {
   bool inward = false;
 };
 
-// What every ray that reaches an object reads of it, and nothing else (104
-// bytes): the rest, read once per hit, is kept apart in RenderScene (the
-// 3x3 block of the object's matrix, and its material), and the normal
-// matrix, the transpose of toLocal, is not kept at all.
+// What every ray that reaches an object reads of it, and the number of its
+// material (104 bytes): its colour, read once per hit, is kept apart in
+// RenderScene, and neither the 3x3 block of its matrix (toWorldLinear, the
+// inverse of toLocal, worked out where needed) nor the normal matrix (the
+// transpose of toLocal) is kept.
 struct RenderObject {
   glm::dmat3 toLocal{1.0};      // inverse of the 3x3 block of the object's matrix
   glm::dvec3 translation{0.0};  // the matrix's last column
   scene::ObjectKind kind = scene::ObjectKind::Sphere;
+  // Its material's properties but the colour: an index into a table of the
+  // scene's distinct ones (in the padding after `kind`).
+  std::uint32_t material = 0;
 
   // A world point in object space. The translation comes off first, in
   // world space: folding it into an offset (toLocal * t) would cancel large
@@ -50,6 +54,25 @@ struct RenderObject {
   // the 3x3 block: v * toLocal is transpose(toLocal) * v in glm, with the
   // same products added in the same order, so the same bits.
   glm::dvec3 normalToWorld(const glm::dvec3& n) const { return n * toLocal; }
+  // The 3x3 block of the object's matrix as the tracer takes it: the
+  // inverse of toLocal, so that the hit points, the BVH's boxes and the
+  // grids all follow the one matrix that the intersections use.
+  glm::dmat3 toWorldLinear() const;
+};
+static_assert(sizeof(RenderObject) == 104);
+
+// The record of an object of kind `kind` under `toWorld` (material 0).
+RenderObject renderObject(scene::ObjectKind kind, const glm::dmat4& toWorld);
+
+// Object numbers first, first + 1, ..., first + count - 1: the bounded
+// objects, laid out after the planes in the BVH's order (BVH item k is
+// object first + k).
+struct ObjectRange {
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+  std::size_t size() const { return count; }
+  bool empty() const { return count == 0; }
+  std::uint32_t operator[](std::size_t k) const { return first + static_cast<std::uint32_t>(k); }
 };
 
 struct RenderLight {
@@ -101,14 +124,14 @@ class RenderScene {
   /// for the tests and benchmarks that compare: the answers are the same.
   explicit RenderScene(const scene::Scene& scene, int threads = 0, bool lightGrids = true);
 
-  /// What the constructor allocates for a scene of `objects` objects and
-  /// `lights` lights, in bytes, as two parts.
+  /// What the build (RenderSceneBuilder) allocates for a scene of `objects`
+  /// objects and `lights` lights, in bytes, as two parts.
   struct Bytes {
-    /// Kept while the scene lives: the compiled objects and lights, and each
-    /// object's index in the bounded or the plane list.
+    /// Kept while the scene lives: the compiled objects, their colours and
+    /// materials (as many distinct ones as objects, at most), the lights.
     std::uint64_t scene = 0;
-    /// The BVH, with its build's temporaries and the boxes it is built
-    /// over, and the lights' direction grids with theirs.
+    /// The BVH, with its build's temporaries, and the lights' direction
+    /// grids with theirs and the boxes they are built over.
     std::uint64_t bvh = 0;
   };
   /// The most the constructor holds for such a scene, from the sizes and
@@ -128,7 +151,11 @@ class RenderScene {
   const std::vector<RenderObject>& objects() const { return objects_; }
   /// The index in scene::Scene::objects of object `object`.
   std::uint32_t sceneObject(std::uint32_t object) const { return sceneObjects_[object]; }
-  const scene::Material& material(std::uint32_t object) const { return materials_[object]; }
+  scene::Material material(std::uint32_t object) const {
+    scene::Material m = materials_[objects_[object].material];
+    m.colour = colours_[object];
+    return m;
+  }
   const std::vector<RenderLight>& lights() const { return lights_; }
   const scene::Camera& camera() const { return camera_; }
   bool hasTransparency() const { return hasTransparency_; }
@@ -137,9 +164,9 @@ class RenderScene {
   const Bvh& bvh() const { return bvh_; }
   // What the GPU renderer uploads (renderer/gpu/gpu_scene.h): per BVH item
   // its object, the planes kept apart, and each object's 3x3 block.
-  const std::vector<std::uint32_t>& boundedObjects() const { return bounded_; }
+  ObjectRange boundedObjects() const { return bounded_; }
   const std::vector<std::uint32_t>& planeObjects() const { return planes_; }
-  const glm::dmat3& linearToWorld(std::uint32_t object) const { return linearToWorld_[object]; }
+  glm::dmat3 linearToWorld(std::uint32_t object) const { return objects_[object].toWorldLinear(); }
 
   // The nearest surface with 0 < t < tMax.
   std::optional<Hit> closestHit(const Ray& ray, const RaySource& source,
@@ -262,11 +289,10 @@ class RenderScene {
     hitOn(index, ray, candidate, hit.emplace());
     return hit;
   }
-  // The constructor's steps after the BVH: the records (objects_,
-  // materials_, linearToWorld_, planeNormals_, materialMaxima_) from the scene's objects that
-  // sceneObjects_ names, in `parts` parts on `threads` threads; and the
-  // lights' grids over `boxes` (item k's box at k), with each item's leaf.
-  void makeRecords(const scene::Scene& scene, std::size_t parts, int threads);
+  friend class RenderSceneBuilder;
+  RenderScene() = default;
+  // The build's last step (RenderSceneBuilder::finish): the lights' grids
+  // over `boxes` (item k's box at k), with each item's leaf.
   void buildLightGrids(const std::vector<Bounds>& boxes, int threads);
   // Whether the ray meets the box of the leaf holding BVH item `item`
   // within (0, tMax): hitsBox on the leaf's float box, which contains the
@@ -278,12 +304,10 @@ class RenderScene {
                       std::uint32_t* lastOccluder) const;
 
   std::vector<RenderObject> objects_;
-  // Per object, read once per hit: the 3x3 block of its matrix (toWorld)
-  // and its material.
-  std::vector<glm::dmat3> linearToWorld_;
-  std::vector<scene::Material> materials_;
+  std::vector<glm::dvec3> colours_;          // per object, read once per hit
+  std::vector<scene::Material> materials_;   // RenderObject::material's table (colour unused)
   std::vector<std::uint32_t> sceneObjects_;  // object -> its index in the scene
-  std::vector<std::uint32_t> bounded_;       // BVH item -> object
+  ObjectRange bounded_;                      // BVH item -> object
   std::vector<std::uint32_t> planes_;        // unbounded objects, tested for every ray
   // Per plane (as planes_: objects 0 to its size less 1), its world normal:
   // the same at every point, so made once, by the expression hitOn uses
@@ -306,5 +330,8 @@ std::optional<Bounds> shapeBounds(scene::ObjectKind kind, const glm::dmat4& toWo
 // shapeBounds widened by its own rounding, so that it holds every point the
 // tracer can find on the shape.
 std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& toWorld);
+// worldBounds of a compiled object, under the matrix the tracer takes
+// (RenderObject::toWorldLinear and its translation).
+std::optional<Bounds> worldBounds(const RenderObject& object);
 
 }  // namespace render

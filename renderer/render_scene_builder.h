@@ -1,10 +1,15 @@
 // Compiles a scene's objects into a RenderScene batch by batch, as a reader
-// hands them over, so that no whole list of scene::Object need be held.
+// hands them over, so that no whole list of scene::Object need be held: each
+// batch becomes records at once, and finish() lays them out in the BVH's
+// order in place.
 #pragma once
 
+#include <cstdint>
+#include <map>
 #include <span>
 #include <vector>
 
+#include "renderer/material_maxima.h"
 #include "renderer/render_scene.h"
 #include "scenefile/scene.h"
 
@@ -16,9 +21,14 @@ class RenderSceneBuilder {
   /// scene is the same whatever their number.
   explicit RenderSceneBuilder(int threads = 0);
 
-  /// Compiles `objects` into render records at once; they may be destroyed
-  /// after the call. Objects are numbered in the order they are added
-  /// (RenderScene::sceneObject).
+  /// Room for `objects` objects in all, for a caller that knows the count:
+  /// the records are then allocated once rather than grown.
+  void reserve(std::uint64_t objects);
+
+  /// Compiles `objects` into render records at once (on the builder's
+  /// threads); they may be destroyed after the call. Objects are numbered in
+  /// the order they are added (RenderScene::sceneObject). Throws
+  /// std::length_error past kMaxObjects in all.
   void add(std::span<const scene::Object> objects);
 
   /// The finished scene: the BVH and the light grids over every object
@@ -26,9 +36,31 @@ class RenderSceneBuilder {
   /// ignored). Frees every build temporary before it returns.
   RenderScene finish(const scene::Scene& header, bool lightGrids = true) &&;
 
+  /// The most objects a scene may have: objects are numbered in 32 bits,
+  /// RaySource::kNone aside.
+  static constexpr std::uint64_t kMaxObjects = 0xFFFFFFFE;
+
  private:
+  // The number of `material`'s properties but its colour in materials_,
+  // added there if new.
+  std::uint32_t materialNumber(const scene::Material& material);
+  // Lays the records out as `order` says (record r becomes the one that
+  // was at order[r]), in place.
+  void permute(const std::vector<std::uint32_t>& order);
+
   int threads_;
-  std::vector<scene::Object> objects_;
+  // In the order added, until finish() lays them out in the BVH's.
+  std::vector<RenderObject> objects_;
+  std::vector<glm::dvec3> colours_;
+  std::uint32_t planes_ = 0;
+  // The distinct materials, colour aside (it is zero), and their numbers by
+  // their properties' bits; the last one found, which the next object
+  // mostly shares.
+  std::vector<scene::Material> materials_;
+  std::map<std::array<std::uint64_t, 7>, std::uint32_t> materialNumbers_;
+  std::uint32_t lastMaterial_ = 0;
+  MaterialMaxima materialMaxima_;
+  bool hasTransparency_ = false;
 };
 
 }  // namespace render

@@ -214,7 +214,7 @@ TEST(RecordOrder, PlanesFirstThenTheBvhsOrderEachRecordItsSceneObjects) {
     const scene::Object& o = s.objects[inScene];
     ASSERT_EQ(one.objects()[r].kind, o.kind) << "object " << r;
     ASSERT_EQ(one.objects()[r].translation, glm::dvec3(o.matrix[3])) << "object " << r;
-    ASSERT_EQ(one.linearToWorld(r), glm::dmat3(o.matrix)) << "object " << r;
+    ASSERT_EQ(one.objects()[r].toLocal, renderObject(o.kind, o.matrix).toLocal) << "object " << r;
     ASSERT_EQ(one.material(r), o.material) << "object " << r;
     if (o.kind == ObjectKind::Plane) {
       // The planes come first, in the scene's order.
@@ -235,8 +235,7 @@ TEST(RecordOrder, PlanesFirstThenTheBvhsOrderEachRecordItsSceneObjects) {
   for (const BvhNode& node : one.bvh().nodes()) {
     for (std::uint32_t i = 0; i < node.count; ++i) {
       std::uint32_t object = one.boundedObjects()[one.bvh().items()[node.offset + i]];
-      const scene::Object& o = s.objects[one.sceneObject(object)];
-      Bounds box = *worldBounds(o.kind, o.matrix);
+      Bounds box = *worldBounds(one.objects()[object]);
       for (int a = 0; a < 3; ++a) {
         ASSERT_LE(node.planes[a], box.lo[a]) << "object " << object;
         ASSERT_GE(node.planes[3 + a], box.hi[a]) << "object " << object;
