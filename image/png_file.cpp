@@ -64,6 +64,10 @@ bool writePng(const PngLevels& levels, png_bytep* rows, PngSink& sink) {
   // bytes and 141 -> 102 ms), where libpng and zlib had been 13% of a
   // 1-sample render's CPU time. docs/RENDERING.md, "Image files".
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  // zlib's level 3, not its default 6: at 1920x1080 (floor-1000000) 0.11
+  // instead of 0.20 s for a file 3% larger (2,541,007 bytes, not 2,466,878);
+  // level 1 saved 0.02 s more for 4% more bytes.
+  png_set_compression_level(png, 3);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   if (levels.originX != 0 || levels.originY != 0) {
     png_set_oFFs(png, info, levels.originX, levels.originY, PNG_OFFSET_PIXEL);
