@@ -39,7 +39,8 @@ std::uint64_t handOver(const std::vector<Object>& objects, std::size_t from,
 // held a diagnostic.
 StreamReadResult readWhole(const std::filesystem::path& path, const ReadOptions& options,
                            const ObjectBatchSink& sink, SourceExcerpts* quotes,
-                           std::uint64_t handed, StreamReadMemory memory) {
+                           const ObjectCountEstimate& estimate, std::uint64_t handed,
+                           StreamReadMemory memory) {
   StreamReadResult result;
   result.readWhole = true;
   SourceText source = readSourceFile(path, options);
@@ -56,6 +57,7 @@ StreamReadResult readWhole(const std::filesystem::path& path, const ReadOptions&
   memory.modelBytes =
       std::max<std::uint64_t>(memory.modelBytes, objects.capacity() * sizeof(Object));
   source.text.reset();
+  if (handed == 0 && estimate) estimate(objects.size());
   result.objectCount = handed + handOver(objects, static_cast<std::size_t>(handed), sink);
   std::vector<Object>().swap(objects);
   result.memory = memory;
@@ -123,6 +125,8 @@ class WindowBuffer {
 
 // What the windows read so far made of the file.
 struct StreamedScene {
+  std::uint64_t fileBytes = 0;
+  const ObjectCountEstimate* estimate = nullptr;
   Scene header;
   std::uint64_t handed = 0;
   std::size_t objectsSeen = 0;
@@ -142,7 +146,15 @@ bool readWindow(std::string_view text, const ReadOptions& options, unsigned thre
     model += part.scene.objects.capacity() * sizeof(Object);
   }
   done.memory.modelBytes = std::max(done.memory.modelBytes, model);
-  if (window.first) done.header.camera = read.parts.front().scene.camera;
+  if (window.first) {
+    done.header.camera = read.parts.front().scene.camera;
+    if (*done.estimate) {
+      (*done.estimate)(static_cast<std::uint64_t>(static_cast<double>(done.fileBytes) *
+                                                  static_cast<double>(read.objectsSeen) /
+                                                  static_cast<double>(text.size())) +
+                       1);
+    }
+  }
   for (const ReadResult& part : read.parts) {
     const Scene& scene = part.scene;
     done.header.lights.insert(done.header.lights.end(), scene.lights.begin(), scene.lights.end());
@@ -203,28 +215,31 @@ StreamReadResult finishStream(StreamedScene done, const std::filesystem::path& p
 }  // namespace
 
 StreamReadResult streamSceneFile(const std::filesystem::path& path, const ReadOptions& options,
-                                 const ObjectBatchSink& sink, SourceExcerpts* quotes) {
+                                 const ObjectBatchSink& sink, SourceExcerpts* quotes,
+                                 const ObjectCountEstimate& estimate) {
   const unsigned threads = threadCount(options);
   const std::size_t window = std::max<std::size_t>(options.sceneFile.windowBytes, 1) * threads;
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) ||
       static_cast<std::uint64_t>(info.st_size) <= window ||
       static_cast<std::uint64_t>(info.st_size) > options.maxFileSize) {
-    return readWhole(path, options, sink, quotes, 0, {});
+    return readWhole(path, options, sink, quotes, estimate, 0, {});
   }
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return readWhole(path, options, sink, quotes, 0, {});
+  if (fd < 0) return readWhole(path, options, sink, quotes, estimate, 0, {});
   WindowBuffer buffer(fd, window);
   std::string firstWindow;
   bool streamed = false;
   StreamedScene done;
+  done.fileBytes = static_cast<std::uint64_t>(info.st_size);
+  done.estimate = &estimate;
   if (buffer.fill() && detectFormat(buffer.held(), path.string()) == Format::SceneFile) {
     // The camera's lines, for the quotes of the whole-file checks.
     if (quotes) firstWindow = buffer.held();
     streamed = readWindows(buffer, options, threads, sink, done);
   }
   ::close(fd);
-  if (!streamed) return readWhole(path, options, sink, quotes, done.handed, done.memory);
+  if (!streamed) return readWhole(path, options, sink, quotes, estimate, done.handed, done.memory);
   return finishStream(std::move(done), path, options, firstWindow, quotes);
 }
 

@@ -129,7 +129,19 @@ std::string manySpheres(int count, int lightEvery = 0) {
 TEST(ReadStream, TheSinkSeesEveryObjectOnceInOrder) {
   fs::path path = writeFile("read_stream_order.sf", manySpheres(3000, 100));
   for (unsigned threads : {1u, 2u, 3u}) {
-    Streamed streamed = stream(path, withWindow(1000, threads));
+    std::vector<std::uint64_t> estimates;
+    Streamed streamed;
+    streamed.result = streamSceneFile(
+        path, withWindow(1000, threads),
+        [&](std::span<const Object> batch) {
+          EXPECT_EQ(estimates.size(), 1u) << "the estimate comes first";
+          streamed.objects.insert(streamed.objects.end(), batch.begin(), batch.end());
+          ++streamed.batches;
+        },
+        nullptr, [&](std::uint64_t objects) { estimates.push_back(objects); });
+    // Objects and lights, by the first window's bytes an object.
+    ASSERT_EQ(estimates.size(), 1u);
+    EXPECT_NEAR(static_cast<double>(estimates[0]), 3030.0, 200.0);
     ASSERT_TRUE(streamed.result.read.ok()) << formatDiagnostics(streamed.result.read.diagnostics);
     EXPECT_FALSE(streamed.result.readWhole);
     EXPECT_GT(streamed.batches, 10u);

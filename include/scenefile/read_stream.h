@@ -21,6 +21,11 @@ namespace scene {
 /// reused after the call returns (the callee copies what it keeps).
 using ObjectBatchSink = std::function<void(std::span<const Object> batch)>;
 
+/// Told, before the first batch, about how many objects the file holds (a
+/// file read in windows: its size by its first window's bytes an object),
+/// so that a caller can make room for them at once.
+using ObjectCountEstimate = std::function<void(std::uint64_t objects)>;
+
 /// What a streamed read held at most at once, for a memory report.
 struct StreamReadMemory {
   std::uint64_t textBytes = 0;   ///< the file's text, in bytes of buffer
@@ -55,6 +60,7 @@ struct StreamReadResult {
 /// (maxFileSize, from the size on disk, and maxObjects) hold as for
 /// readSceneFile. `quotes` keeps the lines the diagnostics point at.
 StreamReadResult streamSceneFile(const std::filesystem::path& path, const ReadOptions& options,
-                                 const ObjectBatchSink& sink, SourceExcerpts* quotes = nullptr);
+                                 const ObjectBatchSink& sink, SourceExcerpts* quotes = nullptr,
+                                 const ObjectCountEstimate& estimate = {});
 
 }  // namespace scene

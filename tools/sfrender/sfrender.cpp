@@ -244,8 +244,8 @@ MaybeFailure RenderJob::readScene() {
   if (isStandardStream(o_.input)) return readStandardInput(shown, read);
   SourceExcerpts sources;
   scene::StreamReadResult streamed = scene::streamSceneFile(
-      o_.input, read, [this](std::span<const scene::Object> batch) { addObjects(batch); },
-      &sources);
+      o_.input, read, [this](std::span<const scene::Object> batch) { addObjects(batch); }, &sources,
+      [this](std::uint64_t objects) { builder_->reserve(objects); });
   readMemory_ = streamed.memory;
   // The text and model the read freed go back to the system before the
   // BVH and the image take their room.
