@@ -180,6 +180,38 @@ void SharedSides::keep(int column, const PixelLattice& lattice, const SampleColo
   bottomValid_[column] = 1;
 }
 
+int CornerInterpolation::anchorsOf(int x, int y, int anchors[4][2]) const {
+  bool oddX = (x & 1) != 0, oddY = (y & 1) != 0;
+  if (!on() || !(oddX || oddY) || x + oddX > fullWidth || y + oddY > fullHeight) return 0;
+  int count = 0;
+  for (int dy = oddY ? -1 : 0; dy <= (oddY ? 1 : 0); dy += 2) {
+    for (int dx = oddX ? -1 : 0; dx <= (oddX ? 1 : 0); dx += 2) {
+      anchors[count][0] = x + dx;
+      anchors[count][1] = y + dy;
+      ++count;
+    }
+  }
+  return count;
+}
+
+bool CornerInterpolation::agree(const SampleLook* looks, int count) const {
+  SampleSpread spread;
+  for (int k = 0; k < count; ++k) spread.add(looks[k]);
+  return !spread.exceeds(tolerance);
+}
+
+SampleColour meanOf(const SampleColour* const* samples, int count) {
+  SampleColour mean;
+  for (int k = 0; k < count; ++k) {
+    mean.colour += samples[k]->colour;
+    mean.slack += samples[k]->slack;
+  }
+  mean.colour /= static_cast<double>(count);
+  mean.slack /= static_cast<double>(count);
+  mean.object = samples[0]->object;
+  return mean;
+}
+
 TileEdgeCorners::TileEdgeCorners(int x0, int y0, int width, int height, int tileSize)
     : x0_(x0),
       y0_(y0),
@@ -227,7 +259,10 @@ std::uint64_t TileEdgeCorners::bytesFor(int width, int height, int tileSize) {
 std::uint64_t adaptiveSamplingBytes(int width, int height, int threads, int tileSize) {
   tileSize = std::max(1, tileSize);
   std::uint64_t tileCorners = static_cast<std::uint64_t>(tileSize + 1) * (tileSize + 1);
-  std::uint64_t perThread = tileCorners * (sizeof(SampleColour) + sizeof(SampleLook));
+  // Each corner's sample and look, and the inner corners' positions and
+  // samples while they are traced or interpolated.
+  std::uint64_t perThread =
+      tileCorners * (2 * sizeof(SampleColour) + sizeof(SampleLook) + 2 * sizeof(int));
   return saturatingSum(
       TileEdgeCorners::bytesFor(width, height, tileSize),
       saturatingProduct(static_cast<std::uint64_t>(std::max(1, threads)), perThread));

@@ -188,6 +188,29 @@ class SharedSides {
   std::vector<std::uint8_t> bottomValid_;
 };
 
+// Which pixel corners adaptive sampling takes from their neighbours instead
+// of tracing (docs/RENDERING.md, "Adaptive sampling"). A corner (x, y) of
+// the full image with x and y even is an anchor, always traced; any other
+// lies between two anchors (x or y odd) or four (both odd), and is their
+// mean where they show one object and colours within `tolerance`, else
+// traced. A corner's sample is thus a function of its position alone,
+// whichever tile or region asks for it.
+struct CornerInterpolation {
+  double tolerance = -1.0;  // below 0: every corner is traced
+  int fullWidth = 0, fullHeight = 0;
+
+  bool on() const { return tolerance >= 0.0; }
+  // The anchors of corner (x, y) into `anchors`, and how many: 0 for an
+  // anchor, a corner whose anchors leave the image, or with interpolation
+  // off; each of those is traced.
+  int anchorsOf(int x, int y, int anchors[4][2]) const;
+  // Whether a corner between anchors that look as `looks` is their mean.
+  bool agree(const SampleLook* looks, int count) const;
+};
+
+// The mean of `count` anchors' samples: a corner between them.
+SampleColour meanOf(const SampleColour* const* samples, int count);
+
 // The samples at the pixel corners that lie on the edges of a region's
 // tiles (squares of `tileSize` pixels from the region's top-left corner,
 // cut at its far edges), the corners that neighbouring tiles share: every
@@ -248,7 +271,8 @@ class TileEdgeCorners {
 // The bytes adaptive sampling keeps beside the image of a region of
 // `width` x `height` pixels rendered on `threads` threads: the samples of
 // its tiles' edge corners (TileEdgeCorners, tiles of `tileSize`), and for
-// each thread a tile's corners, their samples and looks. Saturates.
+// each thread a tile's corners, their samples and looks, and its inner
+// corners' work lists. Saturates.
 std::uint64_t adaptiveSamplingBytes(int width, int height, int threads, int tileSize);
 
 }  // namespace render

@@ -352,6 +352,8 @@ TEST(AdaptiveSampling, CornersThatDifferByHalfTheThresholdAddTheCentre) {
   settings.width = 160;
   settings.height = 120;
   settings.coverage = false;
+  // Every corner traced, as the `--spp 2` image's are.
+  settings.interpolatesCorners = false;
   RenderStatistics statistics;
   Image adaptive = renderImage(compiled, settings, &statistics);
   RenderSettings cornersOnly = settings;
@@ -384,6 +386,68 @@ TEST(AdaptiveSampling, CornersThatDifferByHalfTheThresholdAddTheCentre) {
   renderImage(compiled, cornersOnly, &shallow);
   EXPECT_EQ(shallow.centredPixels, 0u);
   EXPECT_EQ(shallow.samples, 161u * 121u);
+}
+
+TEST(AdaptiveSampling, ACornerBetweenAnchorsIsTheirMeanWhereTheyAgree) {
+  CornerInterpolation rule{0.1, 5, 4};
+  int anchors[4][2];
+  EXPECT_EQ(rule.anchorsOf(2, 2, anchors), 0);  // an anchor: traced
+  ASSERT_EQ(rule.anchorsOf(3, 2, anchors), 2);
+  EXPECT_EQ((std::vector<int>{anchors[0][0], anchors[0][1], anchors[1][0], anchors[1][1]}),
+            (std::vector<int>{2, 2, 4, 2}));
+  ASSERT_EQ(rule.anchorsOf(2, 1, anchors), 2);
+  EXPECT_EQ((std::vector<int>{anchors[0][0], anchors[0][1], anchors[1][0], anchors[1][1]}),
+            (std::vector<int>{2, 0, 2, 2}));
+  EXPECT_EQ(rule.anchorsOf(1, 3, anchors), 4);
+  // Corner 5 of an image 5 pixels wide has no anchor to its right.
+  EXPECT_EQ(rule.anchorsOf(5, 2, anchors), 0);
+  EXPECT_EQ(rule.anchorsOf(3, 4, anchors), 2);
+  EXPECT_EQ(CornerInterpolation{}.anchorsOf(3, 2, anchors), 0);  // off
+
+  SampleLook near[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.55, 0.5, 0.5}, 1)};
+  EXPECT_TRUE(rule.agree(near, 2));
+  SampleLook far[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.65, 0.5, 0.5}, 1)};
+  EXPECT_FALSE(rule.agree(far, 2));
+  SampleLook objects[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.5, 0.5, 0.5}, 2)};
+  EXPECT_FALSE(rule.agree(objects, 2));
+
+  SampleColour a{{0.25, 0.5, 0.75}, 0.125, 3}, b{{0.75, 0.5, 0.25}, 0.375, 3};
+  const SampleColour* pair[2] = {&a, &b};
+  SampleColour mean = meanOf(pair, 2);
+  EXPECT_EQ(mean.colour, glm::dvec3(0.5));
+  EXPECT_EQ(mean.slack, 0.25);
+  EXPECT_EQ(mean.object, 3u);
+}
+
+// Corners taken from agreeing anchors spare so many samples that half the
+// threshold costs fewer than tracing every corner, for less error: on the
+// default scene at 160x120, 23,077 samples against 29,528 and RMSE 0.00265
+// against 0.00298 (larger images have more corners between agreeing
+// anchors, and spare more).
+TEST(AdaptiveSampling, InterpolatedCornersGiveLessErrorForFewerSamples) {
+  RenderScene compiled(defaultScene());
+  RenderSettings settings = adaptiveSettings(256, 0.0);
+  settings.width = 160;
+  settings.height = 120;
+  Image reference = renderImage(compiled, settings);
+  auto rmse = [&](const Image& image) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < image.rgb.size(); ++k) {
+      double d = std::clamp(image.rgb[k], 0.0f, 1.0f) - std::clamp(reference.rgb[k], 0.0f, 1.0f);
+      sum += d * d;
+    }
+    return std::sqrt(sum / static_cast<double>(image.rgb.size()));
+  };
+  settings.samplesPerPixel = 16;
+  settings.adaptiveThreshold = 0.1;
+  RenderStatistics traced, interpolated;
+  settings.interpolatesCorners = false;
+  double tracedError = rmse(renderImage(compiled, settings, &traced));
+  settings.interpolatesCorners = true;
+  settings.adaptiveThreshold = 0.05;
+  double interpolatedError = rmse(renderImage(compiled, settings, &interpolated));
+  EXPECT_LT(interpolated.samples, traced.samples * 17 / 20);
+  EXPECT_LT(interpolatedError, tracedError);
 }
 
 TEST(AdaptiveSampling, OneSampleAPixelRefinesNothing) {

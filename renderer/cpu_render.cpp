@@ -17,6 +17,9 @@ namespace render {
 namespace {
 
 constexpr int kTileSize = kRenderTileSize;
+// The share of adaptive sampling's threshold within which a corner's
+// anchors must agree for it to be their mean (CornerInterpolation).
+constexpr double kAnchorsAgreement = 0.1;
 
 // Keeps an image finite whatever the scene: NaN becomes 0, and values past
 // the float range are clamped to it.
@@ -280,16 +283,96 @@ struct CornerSamples {
   PixelRegion corners;
   std::vector<SampleColour> samples;
   std::vector<SampleLook> looks;
+  // The corners inside the tile's edges, and their samples: fillTileCorners'
+  // work lists, kept to spare their allocations.
+  std::vector<glm::ivec2> inner;
+  std::vector<SampleColour> innerSamples;
 
   std::size_t at(int x, int y) const {
     return static_cast<std::size_t>(y - corners.y0) * corners.width() + (x - corners.x0);
   }
 };
 
+// Traces the pixel corners `corners` into the samples `into` points at, as
+// packets.
+void traceCorners(const PixelTracer& tracer, const std::vector<glm::ivec2>& corners,
+                  const std::vector<SampleColour*>& into, MediumStack& media, Worker& worker) {
+  if (corners.empty()) return;
+  std::vector<glm::dvec2> at(corners.begin(), corners.end());
+  std::vector<SampleColour> traced(corners.size());
+  tracer.traceSamples(at.data(), static_cast<int>(at.size()), tracer.tolerance(), media,
+                      worker.context, traced.data());
+  for (std::size_t k = 0; k < corners.size(); ++k) *into[k] = traced[k];
+  worker.samples += corners.size();
+}
+
+// The samples of the pixel corners `corners` into out[0, corners.size()),
+// as `rule` says (CornerInterpolation): first those it traces, then each
+// other from its anchors. find(x, y) gives the sample of an anchor that the
+// caller holds, or that this batch traced first; nullptr for any other,
+// which is traced here.
+template <typename Find>
+void sampleCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
+                   const std::vector<glm::ivec2>& corners, SampleColour* out, Find&& find,
+                   MediumStack& media, Worker& worker) {
+  std::vector<glm::ivec2> now;
+  std::vector<SampleColour*> into;
+  int anchors[4][2];
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    if (rule.anchorsOf(corners[k].x, corners[k].y, anchors) == 0) {
+      now.push_back(corners[k]);
+      into.push_back(&out[k]);
+    }
+  }
+  traceCorners(tracer, now, into, media, worker);
+  // The anchors the caller lacks (beyond a run's ends, or its region's).
+  std::vector<glm::ivec2> extra;
+  auto lookup = [&](const glm::ivec2& at, const std::vector<SampleColour>& extraSamples) {
+    const SampleColour* known = find(at.x, at.y);
+    if (known) return known;
+    auto it = std::find(extra.begin(), extra.end(), at);
+    return it == extra.end() ? nullptr
+                             : &extraSamples[static_cast<std::size_t>(it - extra.begin())];
+  };
+  const std::vector<SampleColour> none;
+  for (const glm::ivec2& corner : corners) {
+    int count = rule.anchorsOf(corner.x, corner.y, anchors);
+    for (int a = 0; a < count; ++a) {
+      glm::ivec2 at(anchors[a][0], anchors[a][1]);
+      if (!find(at.x, at.y) && std::find(extra.begin(), extra.end(), at) == extra.end()) {
+        extra.push_back(at);
+      }
+    }
+  }
+  std::vector<SampleColour> extraSamples(extra.size());
+  into.clear();
+  for (SampleColour& sample : extraSamples) into.push_back(&sample);
+  traceCorners(tracer, extra, into, media, worker);
+  now.clear();
+  into.clear();
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    int count = rule.anchorsOf(corners[k].x, corners[k].y, anchors);
+    if (count == 0) continue;
+    const SampleColour* samples[4];
+    SampleLook looks[4];
+    for (int a = 0; a < count; ++a) {
+      samples[a] = lookup(glm::ivec2(anchors[a][0], anchors[a][1]), extraSamples);
+      looks[a] = lookOf(samples[a]->colour, samples[a]->object);
+    }
+    if (rule.agree(looks, count)) {
+      out[k] = meanOf(samples, count);
+    } else {
+      now.push_back(corners[k]);
+      into.push_back(&out[k]);
+    }
+  }
+  traceCorners(tracer, now, into, media, worker);
+}
+
 // Adaptive sampling's pass 1: the corners on the edges of the region's
-// tiles, which neighbouring tiles share (TileEdgeCorners), traced a run at
-// a time, as packets.
-void traceTileEdges(const PixelTracer& tracer, TileEdgeCorners& edges, std::vector<Worker>& workers,
+// tiles, which neighbouring tiles share (TileEdgeCorners), a run at a time.
+void traceTileEdges(const PixelTracer& tracer, const CornerInterpolation& rule,
+                    TileEdgeCorners& edges, std::vector<Worker>& workers,
                     const ProgressCallback& progress, const CancelFlag* cancel) {
   forEachPart(
       static_cast<int>(edges.runCount()), static_cast<int>(workers.size()),
@@ -298,27 +381,33 @@ void traceTileEdges(const PixelTracer& tracer, TileEdgeCorners& edges, std::vect
         Worker& worker = workers[index];
         MediumStack media = tracer.eyeMedia();
         const TileEdgeCorners::Run& run = edges.run(static_cast<std::size_t>(part));
-        glm::dvec2 at[kTileSize + 1];
+        std::vector<glm::ivec2> corners(static_cast<std::size_t>(run.count));
         for (int k = 0; k < run.count; ++k) {
-          at[k] = run.down ? glm::dvec2(run.x, run.y + k) : glm::dvec2(run.x + k, run.y);
+          corners[k] = run.down ? glm::ivec2(run.x, run.y + k) : glm::ivec2(run.x + k, run.y);
         }
-        tracer.traceSamples(at, run.count, tracer.tolerance(), media, worker.context,
-                            edges.samples(run));
-        worker.samples += static_cast<std::uint64_t>(run.count);
+        SampleColour* out = edges.samples(run);
+        // The run's own anchors, traced first.
+        auto find = [&](int x, int y) -> const SampleColour* {
+          int k = run.down ? y - run.y : x - run.x;
+          bool on = run.down ? x == run.x : y == run.y;
+          return on && k >= 0 && k < run.count ? &out[k] : nullptr;
+        };
+        sampleCorners(tracer, rule, corners, out, find, media, worker);
       },
       progress);
 }
 
 // The corners of `tile`'s pixels into `corners`: those on its edges from
 // pass 1, the others traced here a row at a time, as packets.
-void fillTileCorners(const PixelTracer& tracer, const PixelRegion& tile,
-                     const TileEdgeCorners& edges, CornerSamples& corners, MediumStack& media,
-                     Worker& worker) {
+void fillTileCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
+                     const PixelRegion& tile, const TileEdgeCorners& edges, CornerSamples& corners,
+                     MediumStack& media, Worker& worker) {
   corners.corners = PixelRegion{tile.x0, tile.y0, tile.x1 + 1, tile.y1 + 1};
   std::size_t count = static_cast<std::size_t>(corners.corners.width()) * corners.corners.height();
   corners.samples.resize(count);
   corners.looks.resize(count);
-  glm::dvec2 at[kTileSize];
+  std::vector<glm::ivec2>& inner = corners.inner;
+  inner.clear();
   for (int y = tile.y0; y <= tile.y1; ++y) {
     SampleColour* row = &corners.samples[corners.at(tile.x0, y)];
     if (edges.onEdgeRow(y)) {
@@ -327,11 +416,23 @@ void fillTileCorners(const PixelTracer& tracer, const PixelRegion& tile,
     }
     row[0] = edges.sample(tile.x0, y);
     row[tile.x1 - tile.x0] = edges.sample(tile.x1, y);
-    int inner = tile.x1 - tile.x0 - 1;
-    if (inner <= 0) continue;
-    for (int k = 0; k < inner; ++k) at[k] = glm::dvec2(tile.x0 + 1 + k, y);
-    tracer.traceSamples(at, inner, tracer.tolerance(), media, worker.context, row + 1);
-    worker.samples += static_cast<std::uint64_t>(inner);
+    for (int x = tile.x0 + 1; x < tile.x1; ++x) inner.emplace_back(x, y);
+  }
+  // The inner corners' anchors all lie in the tile: its edges, or inner
+  // anchors, which sampleCorners traces first.
+  corners.innerSamples.resize(inner.size());
+  auto find = [&](int x, int y) -> const SampleColour* {
+    bool edge = x == tile.x0 || x == tile.x1 || edges.onEdgeRow(y);
+    if (edge) return &corners.samples[corners.at(x, y)];
+    // Inner corners run row by row, tile.x1 - tile.x0 - 1 a row.
+    std::size_t columns = static_cast<std::size_t>(tile.x1 - tile.x0 - 1);
+    std::size_t k = static_cast<std::size_t>(y - tile.y0 - 1) * columns +
+                    static_cast<std::size_t>(x - tile.x0 - 1);
+    return &corners.innerSamples[k];
+  };
+  sampleCorners(tracer, rule, inner, corners.innerSamples.data(), find, media, worker);
+  for (std::size_t k = 0; k < inner.size(); ++k) {
+    corners.samples[corners.at(inner[k].x, inner[k].y)] = corners.innerSamples[k];
   }
   for (std::size_t c = 0; c < count; ++c) {
     corners.looks[c] = lookOf(corners.samples[c].colour, corners.samples[c].object);
@@ -344,9 +445,10 @@ void fillTileCorners(const PixelTracer& tracer, const PixelRegion& tile,
 // lattice (PixelLattice), its neighbours' shared points lent (SharedSides).
 class PixelSubdivider {
  public:
-  PixelSubdivider(const PixelTracer& tracer, const TileEdgeCorners& edges, double threshold,
-                  int depth)
+  PixelSubdivider(const PixelTracer& tracer, const CornerInterpolation& rule,
+                  const TileEdgeCorners& edges, double threshold, int depth)
       : tracer_(tracer),
+        rule_(rule),
         edges_(edges),
         threshold_(threshold),
         lattice_(depth),
@@ -361,7 +463,7 @@ class PixelSubdivider {
 
   // A new tile: its corners traced or taken from the edges.
   void startTile(const PixelRegion& tile, MediumStack& media, Worker& worker) {
-    fillTileCorners(tracer_, tile, edges_, corners_, media, worker);
+    fillTileCorners(tracer_, rule_, tile, edges_, corners_, media, worker);
     shared_.startTile();
   }
   void startRow() { shared_.startRow(); }
@@ -429,6 +531,7 @@ class PixelSubdivider {
   // centredPoints_' weights: an eighth each corner, a half the centre.
   inline static const std::vector<double> kCentredWeights = {0.125, 0.125, 0.5, 0.125, 0.125};
   const PixelTracer& tracer_;
+  CornerInterpolation rule_;
   const TileEdgeCorners& edges_;
   CornerSamples corners_;  // the tile's
   double threshold_;
@@ -494,10 +597,18 @@ void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
     firstProgress = [&](int done, int) { progress(done, firstTiles + secondTiles); };
     secondProgress = [&](int done, int) { progress(firstTiles + done, firstTiles + secondTiles); };
   }
-  traceTileEdges(tracer, edges, workers, firstProgress, cancel);
   const int depth = subdivisionDepth(std::max(1, settings.samplesPerPixel));
+  CornerInterpolation rule;
+  // From one cut on (--spp 4), corners between anchors that agree to a tenth
+  // of the threshold are their mean: on the default scene and glass-mirror
+  // a third of the samples for the same error (docs/RENDERING.md).
+  if (depth > 0 && settings.interpolatesCorners)
+    rule.tolerance = kAnchorsAgreement * settings.adaptiveThreshold;
+  rule.fullWidth = settings.width;
+  rule.fullHeight = settings.height;
+  traceTileEdges(tracer, rule, edges, workers, firstProgress, cancel);
   std::vector<PixelSubdivider> subdividers(
-      workers.size(), PixelSubdivider(tracer, edges, settings.adaptiveThreshold, depth));
+      workers.size(), PixelSubdivider(tracer, rule, edges, settings.adaptiveThreshold, depth));
   forEachTile(
       region, static_cast<int>(workers.size()),
       [&](int index, const PixelRegion& tile) {

@@ -42,6 +42,11 @@ struct RenderSettings : scene::RenderSettings {
   // (RenderScene::closestHitsFromEye, docs/TRACING.md, "Direction
   // grids") where it can answer: the same image, bit for bit, either way.
   bool eyeGrid = true;
+  // Whether adaptive sampling takes a pixel corner between traced anchors
+  // that agree as their mean instead of tracing it (CornerInterpolation,
+  // docs/RENDERING.md, "Adaptive sampling"); false traces every corner, for
+  // the tests and benchmarks that compare.
+  bool interpolatesCorners = true;
   // The device GPU renders go through, kept open by the caller for as long
   // as renders use it; null: each GPU render opens a device of its own.
   // Auto with one given asks no probe: it takes it where it is a real GPU.
