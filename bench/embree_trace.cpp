@@ -42,6 +42,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -65,6 +66,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// The calling thread's CPU time, in seconds: on one thread, what a pass
+// costs whatever else the machine runs.
+double threadSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 // The renderer's test of one object by a camera ray (RenderScene's
@@ -548,12 +557,15 @@ std::vector<Row> timed(std::vector<Variant<T>> variants, double rays, const Timi
   for (const Variant<T>& v : variants) rows.push_back(Row{v.name, {}, 0});
   for (int threads : threadCounts) {
     std::vector<std::vector<double>> seconds(variants.size());
+    std::vector<std::vector<double>> cpuSeconds(variants.size());
     std::vector<T> out(reference.size());
     for (int r = 0; r < runs; ++r) {
       for (std::size_t v = 0; v < variants.size(); ++v) {
         auto start = Clock::now();
+        double cpuStart = threadSeconds();
         variants[v].pass(threads, out);
         seconds[v].push_back(since(start));
+        cpuSeconds[v].push_back(threadSeconds() - cpuStart);
         rows[v].diff = std::max(rows[v].diff, differences(out, reference));
       }
     }
@@ -561,6 +573,10 @@ std::vector<Row> timed(std::vector<Variant<T>> variants, double rays, const Timi
       double mrays = rays / median(seconds[v]) / 1e6;
       rows[v].mrays.push_back(mrays);
       std::printf("%s_%dt_mrays: %.4f\n", rows[v].name.c_str(), threads, mrays);
+      if (threads == 1) {
+        std::printf("%s_1t_cpu_mrays: %.4f\n", rows[v].name.c_str(),
+                    rays / median(cpuSeconds[v]) / 1e6);
+      }
     }
   }
   for (const Row& row : rows) std::printf("%s_differences: %zu\n", row.name.c_str(), row.diff);

@@ -1,7 +1,9 @@
 // Bvh::traversePacket: up to Bvh::kPacketSize coherent rays (a row of a
 // tile's camera rays) walked down the hierarchy together, each box tested
-// for all of them at once in SIMD lanes, with every ray visiting exactly the
-// leaves, in exactly the order, that Bvh::traverse visits for it alone.
+// for all of them at once in SIMD lanes (SSE2, or AVX2 where the processor
+// has it: the same operations on each lane, so the same bits), with every
+// ray visiting exactly the leaves, in exactly the order, that Bvh::traverse
+// visits for it alone.
 //
 // Why the hits are the same, bit for bit (docs/TRACING.md, "Packets"): a
 // ray's closest hit is the first item, in its own visiting order, that
@@ -36,6 +38,11 @@
 
 #include "renderer/bvh.h"
 
+#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+#define SCENEFILE_PACKET_VECTORS 1
+#define SCENEFILE_PACKET_AVX2 1
+#endif
+
 namespace render {
 
 namespace detail {
@@ -44,7 +51,11 @@ namespace detail {
 // indices that their shared direction signs pick (Bvh::NodeRay per ray).
 struct PacketNodeRays {
   static constexpr int kLanes = Bvh::kPacketSize;
-  static_assert(kLanes == 4, "the SSE2 test below holds four lanes in two vectors");
+  static_assert(kLanes % 4 == 0, "the box test takes lanes four at a time");
+#if defined(SCENEFILE_PACKET_VECTORS)
+  using Doubles4 = double __attribute__((vector_size(32)));
+  using Longs4 = long long __attribute__((vector_size(32)));
+#endif
 
   // Fills lanes past `count` with the first ray's values; their tMax of
   // -infinity keeps them out of every box.
@@ -76,39 +87,37 @@ struct PacketNodeRays {
 
   // hitsNode on every lane for the box `node`: bit `lane` set where that
   // ray meets it within tMax[lane], its entry distance in tEntry[lane].
+  // Four lanes a vector (GCC's vector extensions: two SSE2 operations each,
+  // one AVX2 operation where traversePacket's AVX2 version inlines this),
+  // with hitsNode's operations in its order on each lane: the float planes
+  // convert to double exactly, `x > m ? x : m` and `x < m ? x : m` leave m
+  // as it was for a NaN distance, as in hitsNode, and nothing is fused
+  // (neither target has FMA), so every version gives the same bits.
   int hits(const BvhNode& node, const double* tMax, double* tEntry) const {
     const double widen = 1.0 + 2.0 * gamma(3);
-#if defined(__SSE2__)
-    __m128d tMinLow = _mm_setzero_pd();
-    __m128d tMinHigh = _mm_setzero_pd();
-    __m128d tMaxLow = _mm_loadu_pd(tMax);
-    __m128d tMaxHigh = _mm_loadu_pd(tMax + 2);
-    const __m128d widenBoth = _mm_set1_pd(widen);
-    for (int i = 0; i < 3; ++i) {
-      // The float planes convert to double exactly, as in hitsNode.
-      __m128d nearBoth = _mm_set1_pd(static_cast<double>(node.planes[nearPlane[i]]));
-      __m128d farBoth = _mm_set1_pd(static_cast<double>(node.planes[farPlane[i]]));
-      __m128d originLow = _mm_loadu_pd(&origin[i][0]);
-      __m128d originHigh = _mm_loadu_pd(&origin[i][2]);
-      __m128d inverseLow = _mm_loadu_pd(&inverseDirection[i][0]);
-      __m128d inverseHigh = _mm_loadu_pd(&inverseDirection[i][2]);
-      __m128d nearLow = _mm_mul_pd(_mm_sub_pd(nearBoth, originLow), inverseLow);
-      __m128d nearHigh = _mm_mul_pd(_mm_sub_pd(nearBoth, originHigh), inverseHigh);
-      __m128d farLow =
-          _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(farBoth, originLow), inverseLow), widenBoth);
-      __m128d farHigh =
-          _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(farBoth, originHigh), inverseHigh), widenBoth);
-      // _mm_max_pd(x, m) is x > m ? x : m, _mm_min_pd(x, m) is x < m ? x : m:
-      // a NaN distance leaves m as it was, as in hitsNode.
-      tMinLow = _mm_max_pd(nearLow, tMinLow);
-      tMinHigh = _mm_max_pd(nearHigh, tMinHigh);
-      tMaxLow = _mm_min_pd(farLow, tMaxLow);
-      tMaxHigh = _mm_min_pd(farHigh, tMaxHigh);
+#if defined(SCENEFILE_PACKET_VECTORS)
+    int mask = 0;
+    for (int first = 0; first < kLanes; first += 4) {
+      Doubles4 tMin = {0.0, 0.0, 0.0, 0.0};
+      Doubles4 tFarthest;
+      __builtin_memcpy(&tFarthest, tMax + first, sizeof tFarthest);
+      for (int i = 0; i < 3; ++i) {
+        double nearOne = node.planes[nearPlane[i]];
+        double farOne = node.planes[farPlane[i]];
+        const Doubles4& o = *reinterpret_cast<const Doubles4*>(&origin[i][first]);
+        const Doubles4& inverse = *reinterpret_cast<const Doubles4*>(&inverseDirection[i][first]);
+        Doubles4 tNear = (nearOne - o) * inverse;
+        Doubles4 tFar = (farOne - o) * inverse;
+        tFar *= widen;
+        tMin = tNear > tMin ? tNear : tMin;
+        tFarthest = tFar < tFarthest ? tFar : tFarthest;
+      }
+      __builtin_memcpy(tEntry + first, &tMin, sizeof tMin);
+      // Each lane's compare is all ones or all zeros: its bit, or'd up.
+      Longs4 bits = (tMin <= tFarthest) & Longs4{1, 2, 4, 8};
+      mask |= static_cast<int>((bits[0] | bits[1]) | (bits[2] | bits[3])) << first;
     }
-    _mm_storeu_pd(tEntry, tMinLow);
-    _mm_storeu_pd(tEntry + 2, tMinHigh);
-    return _mm_movemask_pd(_mm_cmple_pd(tMinLow, tMaxLow)) |
-           (_mm_movemask_pd(_mm_cmple_pd(tMinHigh, tMaxHigh)) << 2);
+    return mask;
 #else
     int mask = 0;
     for (int lane = 0; lane < kLanes; ++lane) {
@@ -139,40 +148,46 @@ struct PacketNodeRays {
     return mask & kept;
   }
 
-  alignas(32) double origin[3][kLanes];
-  alignas(32) double inverseDirection[3][kLanes];
+  alignas(64) double origin[3][kLanes];
+  alignas(64) double inverseDirection[3][kLanes];
   bool negative[3];
   int nearPlane[3];
   int farPlane[3];
 };
 
+// Whether this processor runs AVX2 code, asked once.
+inline bool hasAvx2() {
+#if defined(SCENEFILE_PACKET_AVX2)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
+#else
+  return false;
+#endif
+}
+
 }  // namespace detail
 
+// The walk itself, inlined into traversePacket's two versions.
 template <typename Visit>
-void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visit&& visit) const {
-  if (nodes_.empty() || count <= 0) return;
-  if (count > kPacketSize) count = kPacketSize;
-  if (count == 1 || !detail::PacketNodeRays::sameSigns(rays, count)) {
-    for (int lane = 0; lane < count; ++lane) {
-      traverse(rays[lane], tMax[lane], [&](std::uint32_t item) { return visit(lane, item); });
-    }
-    return;
-  }
+[[gnu::always_inline]] inline void Bvh::walkPacket(const BoxRay* rays, int count,
+                                                   const double* tMax, Visit& visit) const {
   detail::PacketNodeRays r(rays, count);
   constexpr double kOut = -std::numeric_limits<double>::infinity();
   // Each ray's current tMax; -infinity for a lane without a ray, or whose
   // ray has stopped (visit returned a negative value), which then meets no
   // box.
-  double tMaxes[kPacketSize] = {kOut, kOut, kOut, kOut};
-  for (int lane = 0; lane < count; ++lane) tMaxes[lane] = tMax[lane];
+  alignas(64) double tMaxes[kPacketSize];
+  for (int lane = 0; lane < kPacketSize; ++lane) tMaxes[lane] = lane < count ? tMax[lane] : kOut;
   struct Pending {
-    double tEntry[kPacketSize];
+    alignas(64) double tEntry[kPacketSize];
     std::uint32_t node;
     int mask;
   };
-  Pending stack[kStackSize];
+  // One more than the deepest walk pushes: the far child's entries are
+  // written in place, at the top, before it is known to be pushed.
+  Pending stack[kStackSize + 1];
   int top = 0;
-  double tEntries[kPacketSize];
+  alignas(64) double tEntries[kPacketSize];
   int mask = r.hits(nodes_[0], tMaxes, tEntries);
   int stopped = 0;
   std::uint32_t current = 0;
@@ -181,8 +196,8 @@ void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visi
     if (node.count > 0) {
       for (std::uint32_t i = 0; i < node.count && mask != 0; ++i) {
         std::uint32_t item = items_[node.offset + i];
-        for (int lane = 0; lane < kPacketSize; ++lane) {
-          if (!(mask & (1 << lane))) continue;
+        for (int lanes = mask; lanes != 0; lanes &= lanes - 1) {
+          int lane = __builtin_ctz(static_cast<unsigned>(lanes));
           double t = visit(lane, item);
           if (t < 0.0) {
             stopped |= 1 << lane;
@@ -197,15 +212,15 @@ void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visi
       std::uint32_t nearChild = current + 1;
       std::uint32_t farChild = node.offset;
       if (r.negative[node.axis]) std::swap(nearChild, farChild);
-      double nearEntries[kPacketSize];
-      Pending far;
+      alignas(64) double nearEntries[kPacketSize];
+      Pending& far = stack[top];
       int hitNear = r.hits(nodes_[nearChild], tMaxes, nearEntries) & mask;
       int hitFar = r.hits(nodes_[farChild], tMaxes, far.tEntry) & mask;
       if (hitNear != 0) {
         if (hitFar != 0) {
           far.node = farChild;
           far.mask = hitFar;
-          stack[top++] = far;
+          ++top;
         }
         current = nearChild;
         mask = hitNear;
@@ -224,6 +239,35 @@ void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visi
       current = next.node;
     }
   }
+}
+
+#if defined(SCENEFILE_PACKET_AVX2)
+// The walk built for AVX2: the same code, inlined here, where its vector
+// operations take four lanes at once.
+template <typename Visit>
+[[gnu::target("avx2")]] void Bvh::walkPacketAvx2(const BoxRay* rays, int count, const double* tMax,
+                                                 Visit& visit) const {
+  walkPacket(rays, count, tMax, visit);
+}
+#endif
+
+template <typename Visit>
+void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visit&& visit) const {
+  if (nodes_.empty() || count <= 0) return;
+  if (count > kPacketSize) count = kPacketSize;
+  if (count == 1 || !detail::PacketNodeRays::sameSigns(rays, count)) {
+    for (int lane = 0; lane < count; ++lane) {
+      traverse(rays[lane], tMax[lane], [&](std::uint32_t item) { return visit(lane, item); });
+    }
+    return;
+  }
+#if defined(SCENEFILE_PACKET_AVX2)
+  if (detail::hasAvx2()) {
+    walkPacketAvx2(rays, count, tMax, visit);
+    return;
+  }
+#endif
+  walkPacket(rays, count, tMax, visit);
 }
 
 }  // namespace render
