@@ -148,6 +148,7 @@ RenderSceneMemory RenderScene::memory() const {
 
 RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids) {
   RenderSceneBuilder builder(threads);
+  builder.reserve(scene.objects.size());
   builder.add(scene.objects);
   *this = std::move(builder).finish(scene, lightGrids);
 }

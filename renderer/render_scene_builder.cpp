@@ -147,6 +147,7 @@ RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGri
   scene.colours_ = std::move(colours_);
   scene.materials_ = std::move(materials_);
   if (scene.materials_.empty()) scene.materials_.emplace_back();
+  scene.materials_.shrink_to_fit();
   materialNumbers_.clear();
   scene.sceneObjects_ = std::move(order);
   scene.bounded_ = ObjectRange{planeCount, boundedCount};

@@ -76,6 +76,38 @@ TEST(RenderSceneBuilder, BatchesRenderTheSameImage) {
   }
 }
 
+// memory() counts each array as the layout says: per object its record,
+// colour and file index; per plane its normal and place in the plane list;
+// the table of distinct materials; the lights; the nodes as reserved (two
+// a box) and an item a box; each item's leaf and the lights' grids.
+TEST(RenderSceneBuilder, MemoryIsTheLayoutsSizes) {
+  Random random(3);
+  scene::Scene s = randomScene(random, 1000);
+  scene::Material shiny;
+  shiny.specular = 0.25;
+  for (int i = 0; i < 10; ++i) s.objects[i * 7].material = shiny;
+  RenderScene built(s, 2);
+  std::uint64_t objects = s.objects.size();
+  std::uint64_t planes = built.planeObjects().size();
+  std::uint64_t bounded = objects - planes;
+  ASSERT_GT(planes, 0u);
+  // randomScene's materials differ in reflectivity and transparency alone;
+  // and the shiny one.
+  std::uint64_t materials = 5;
+  RenderSceneMemory memory = built.memory();
+  EXPECT_EQ(memory.records,
+            objects * (sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(std::uint32_t)) +
+                planes * (sizeof(glm::dvec3) + sizeof(std::uint32_t)) +
+                materials * sizeof(scene::Material) + s.lights.size() * sizeof(RenderLight));
+  EXPECT_EQ(memory.bvh, bounded * (2 * sizeof(BvhNode) + sizeof(std::uint32_t)));
+  std::uint64_t grids = bounded * sizeof(std::uint32_t);
+  for (std::size_t l = 0; l < s.lights.size(); ++l) grids += built.lightGrid(l)->bytes();
+  EXPECT_EQ(memory.grids, grids);
+  RenderScene::Bytes most = RenderScene::bytesFor(objects, s.lights.size());
+  EXPECT_LE(memory.records, most.scene);
+  EXPECT_LE(memory.bvh + memory.grids, most.bvh);
+}
+
 TEST(RenderSceneBuilder, NothingAddedIsAnEmptyScene) {
   scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
   s.lights.push_back(light({1, 1, 1}));
