@@ -4,10 +4,12 @@
 #
 # 1. embree: bench/embree_trace (built when CMake finds Embree 3) traces the
 #    primary rays of 1920x1080 pixel centres on floor scenes of 1,000,
-#    100,000 and 1,000,000 objects with Embree's user geometry (the renderer's
-#    own object test in its callbacks) one ray at a time and in packets of 4
-#    and 8, and render::renderObjectIds over the same rays, on 1 and 2
-#    threads; section "Against Embree" of docs/perf/RESULTS.md.
+#    100,000 and 1,000,000 objects, and the shadow rays from their hits toward
+#    each light, with Embree's user geometry (the renderer's own object test
+#    in its callbacks) one ray at a time and in packets of 4 and 8, and with
+#    sfrender's own camera path (render::traceCameraRays: eye grid, packets)
+#    and render::Tracer::shadowed (light grids), on 1 and 2 threads; section
+#    "Against Embree" of docs/perf/RESULTS.md.
 # 2. float: bench/float_trace, a single-precision tracer of primary and
 #    shadow rays against the double renderer: time per ray on floor-1000,
 #    exact ids, self-intersection, acne and RMSE there and on the hard scenes
@@ -87,52 +89,72 @@ if has_part embree; then
         "Embree $embree_version from Debian. Load average $load_start at the start, $load_end at the end."
       echo
       echo "\`bench/embree_trace floor-N.sf\` traces the primary rays of a ${width}x${height} image" \
-        "(render::PinholeCamera through the pixel centres) of \`sfgen --layout floor -n N -s 1\`" \
-        "in one process, four ways: sfrender's own pass (\`render::renderObjectIds\`: its BVH," \
-        "its object tests), and Embree 3 one ray at a time (\`rtcIntersect1\`) and in packets of" \
-        "4 (2x2 pixels, \`rtcIntersect4\`) and 8 (4x2, \`rtcIntersect8\`). Embree gets one user" \
-        "geometry (\`RTC_GEOMETRY_TYPE_USER\`) whose boxes are the objects' world bounds" \
-        "(\`render::worldBounds\`, widened by 4 float steps since Embree's boxes and rays are" \
-        "float) and whose intersect callback runs the renderer's exact double-precision test of" \
-        "the object (\`render::unitShapeDistances\` on the double ray in object space); the floor" \
-        "plane, which has no bounds, is tested before Embree is called, as sfrender tests its" \
-        "planes before its BVH. So the hits are sfrender's and only the search differs: Embree's" \
-        "BVH and traversal against sfrender's. Mrays/s = rays over the wall time of the pass," \
-        "median of $runs; threads take rows in turn. *ids differing*: pixels whose object id" \
-        "differs from \`renderObjectIds\` (a difference could only be a tie or a float box" \
-        "missed)."
+        "(render::PinholeCamera through the pixel centres) of \`sfgen --layout floor -n N -s 1\`," \
+        "and the shadow rays from their hits toward each light, in one process: sfrender's own" \
+        "camera path (\`render::traceCameraRays\`: the camera's rays, the eye's direction grid" \
+        "where it pays, packets of 8 down its BVH, tiles in turn; each hit made in full, point," \
+        "error bound and normal) and shadow rays (\`render::Tracer::shadowed\`: the lights' grids," \
+        "\`shadowCell\`, the occluder hint), against Embree 3 one ray at a time (\`rtcIntersect1\`," \
+        "\`rtcOccluded1\`) and in packets of 4 and 8 (2x2 and 4x2 pixels; shadow rays of" \
+        "consecutive hits of a tile's row). Embree gets one user geometry whose boxes are the" \
+        "objects' world bounds (widened by 4 float steps, as its boxes and rays are float) and" \
+        "whose callbacks run the renderer's exact double-precision test of the object (with the" \
+        "shadow ray's source, as sfrender's); planes are tested before Embree is called, as" \
+        "sfrender tests its planes first. Embree's callbacks find distances and ids only, not" \
+        "the hit's point and normal. Mrays/s = rays over the wall time of the pass, median of" \
+        "$runs, the variants taking turns in each run; *1 thread, CPU*: over the thread's CPU" \
+        "time instead, which other work on the machine moves less. *differing*: pixels whose" \
+        "object id differs from \`render::renderObjectIds\` (one ray at a time), and shadow rays" \
+        "whose answer differs from sfrender's."
       echo
-      echo "| objects | sfrender, 1 thread | 2 threads | Embree rtcIntersect1, 1 thread | 2 threads | rtcIntersect4, 1 thread | 2 threads | rtcIntersect8, 1 thread | 2 threads | best Embree / sfrender, 1 thread | ids differing (1 / 4 / 8) | BVH build, sfrender / Embree |"
-      echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+      echo "| objects | eye grid | primary: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | shadow: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | differing |"
+      echo "|---|---|---|---|---|---|---|---|---|---|---|"
+      total_diffs=0
       for n in $sizes; do
         t=$work/embree-$n.txt
-        best=$(maximum "$(value embree1_1t_mrays "$t")" "$(value embree4_1t_mrays "$t")" "$(value embree8_1t_mrays "$t")")
-        row="| $(thousands "$n") |"
-        for v in sfrender embree1 embree4 embree8; do
-          row+=" $(fmt 2 "$(value ${v}_1t_mrays "$t")") | $(fmt 2 "$(value ${v}_2t_mrays "$t")") |"
+        ratio() { fmt 2 "$(awk -v a="$(value "$1" "$t")" -v b="$(value "$2" "$t")" 'BEGIN { print a / b }')"; }
+        row="| $(thousands "$n") | $([[ $(value sfrender_eye_grid "$t") = 1 ]] && echo yes || echo no) |"
+        for kind in "" _shadow; do
+          row+=" $(fmt 2 "$(value sfrender${kind}_2t_mrays "$t")") |"
+          row+=" $(fmt 2 "$(value embree1${kind}_2t_mrays "$t")") / $(fmt 2 "$(value embree4${kind}_2t_mrays "$t")") / $(fmt 2 "$(value embree8${kind}_2t_mrays "$t")") |"
+          row+=" **$(ratio sfrender${kind}_2t_mrays embree8${kind}_2t_mrays)x** |"
+          row+=" $(ratio sfrender${kind}_1t_cpu_mrays embree8${kind}_1t_cpu_mrays)x |"
         done
-        row+=" **$(fmt 2 "$(awk -v a="$best" -v b="$(value sfrender_1t_mrays "$t")" 'BEGIN { print a / b }')")×** |"
-        row+=" $(value embree1_differences "$t") / $(value embree4_differences "$t") / $(value embree8_differences "$t") |"
-        row+=" $(fmt 3 "$(value sfrender_build_s "$t")") s / $(fmt 3 "$(value embree_build_s "$t")") s |"
-        echo "$row"
+        diffs=0
+        for v in sfrender embree1 embree4 embree8 sfrender_shadow embree1_shadow embree4_shadow embree8_shadow; do
+          diffs=$((diffs + $(value ${v}_differences "$t")))
+        done
+        echo "$row $diffs |"
+        total_diffs=$((total_diffs + diffs))
       done
       echo
-      echo "Figures in Mrays/s (10^6 primary rays a second). The BVH build column is sfrender's" \
-        "whole \`render::RenderScene\` construction against Embree's scene build (user geometry" \
-        "bounds callbacks and \`rtcCommitScene\`, on Embree's own 2 threads), both after parsing." \
-        "The machine is shared: 2 threads may gain less than 2x for either."
+      if ((total_diffs == 0)); then
+        echo "Every primary ray found the same object, and every shadow ray the same answer, in every tracer."
+      else
+        echo "**$total_diffs rays differ** between the tracers (column *differing*)."
+      fi
+      echo
+      echo "Mrays/s on 2 threads (10^6 rays a second); the ratios are sfrender's over Embree's" \
+        "8-wide packets'. BVH build, after parsing, not in the figures: sfrender's whole" \
+        "\`render::RenderScene\` against Embree's scene build, $(for n in $sizes; do
+          t=$work/embree-$n.txt
+          printf '%s s / %s s at %s; ' "$(fmt 3 "$(value sfrender_build_s "$t")")" \
+            "$(fmt 3 "$(value embree_build_s "$t")")" "$(thousands "$n")"
+        done)the eye's grid is built inside sfrender's timed pass. The machine is shared: 2" \
+        "threads may gain less than 2x for either."
       echo
       echo "Raw output:"
       echo
       echo '```'
       for n in $sizes; do
         echo "floor-$n:"
-        sed -n '/^variant/,$p' "$work/embree-$n.txt"
+        sed -n '/^primary/,$p' "$work/embree-$n.txt"
       done
       echo '```'
       echo '<!-- END tracers-embree -->'
     } >"$section"
     replace_section tracers-embree "$section"
+    grep -q '^Every primary ray' "$section" || log "warning: the tracers differ on some rays (see the section)"
     log "wrote the section Against Embree"
   fi
 fi
