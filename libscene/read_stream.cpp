@@ -70,10 +70,11 @@ class WindowBuffer {
  public:
   WindowBuffer(int fd, std::size_t window) : fd_(fd), window_(window) {}
 
-  // Fills the buffer up to the window's size past what it holds; false
-  // where the read failed.
+  // Fills the buffer up to the window's size, the start of the next window
+  // that it holds included (so that its room is made once); false where the
+  // read failed.
   bool fill() {
-    if (bytes_.size() < held_ + window_) bytes_.resize(held_ + window_);
+    if (bytes_.size() < window_) bytes_.resize(window_);
     while (!atEnd_ && held_ < bytes_.size()) {
       ssize_t n = ::read(fd_, bytes_.data() + held_, bytes_.size() - held_);
       if (n < 0 && errno == EINTR) continue;

@@ -204,7 +204,7 @@ TEST(ReadStream, MemoryStaysWithinTheWindow) {
     EXPECT_FALSE(streamed.result.readWhole);
     const StreamReadMemory& memory = streamed.result.memory;
     EXPECT_GT(memory.textBytes, 0u);
-    EXPECT_LE(memory.textBytes, 2 * kWindow * threads);
+    EXPECT_LE(memory.textBytes, kWindow * threads);
     // An object per some 60 bytes of text at most.
     EXPECT_GT(memory.modelBytes, 0u);
     EXPECT_LE(memory.modelBytes, 2 * kWindow * threads / 60 * sizeof(Object));

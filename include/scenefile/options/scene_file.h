@@ -12,10 +12,10 @@ struct SceneFileReadOptions {
   /// (Setting::TransposedMatrices).
   bool transposedMatrices = false;
   /// A file streamed (scenefile/read_stream.h) is read this many bytes a
-  /// thread at a time: 4 MiB, some 34,000 records, whose objects take twice
+  /// thread at a time: 2 MiB, some 17,000 records, whose objects take twice
   /// that while they are handed over. A window grows where one record is
   /// longer.
-  std::size_t windowBytes = std::size_t{4} << 20;
+  std::size_t windowBytes = std::size_t{2} << 20;
 
   friend bool operator==(const SceneFileReadOptions&, const SceneFileReadOptions&) = default;
 };
