@@ -128,20 +128,23 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
 
 namespace {
 
+// The bytes of the elements a vector holds: room reserved past them (an
+// estimate of the count a little over) is never touched, so never
+// resident.
 template <typename T>
-std::uint64_t capacityBytes(const std::vector<T>& v) {
-  return static_cast<std::uint64_t>(v.capacity()) * sizeof(T);
+std::uint64_t heldBytes(const std::vector<T>& v) {
+  return static_cast<std::uint64_t>(v.size()) * sizeof(T);
 }
 
 }  // namespace
 
 RenderSceneMemory RenderScene::memory() const {
   RenderSceneMemory memory;
-  memory.records = capacityBytes(objects_) + capacityBytes(colours_) + capacityBytes(materials_) +
-                   capacityBytes(sceneObjects_) + capacityBytes(planes_) +
-                   capacityBytes(planeNormals_) + capacityBytes(lights_);
-  memory.bvh = capacityBytes(bvh_.nodes()) + capacityBytes(bvh_.items());
-  memory.grids = capacityBytes(leafOf_);
+  memory.records = heldBytes(objects_) + heldBytes(colours_) + heldBytes(materials_) +
+                   heldBytes(sceneObjects_) + heldBytes(planes_) + heldBytes(planeNormals_) +
+                   heldBytes(lights_);
+  memory.bvh = heldBytes(bvh_.nodes()) + heldBytes(bvh_.items());
+  memory.grids = heldBytes(leafOf_);
   for (const DirectionGrid& grid : lightGrids_) memory.grids += grid.bytes();
   return memory;
 }

@@ -108,8 +108,8 @@ struct EyeGrid {
   }
 };
 
-/// What a RenderScene holds after its build, by part, in bytes (the
-/// capacities of its arrays): for a memory report.
+/// What a RenderScene holds after its build, by part, in bytes (its arrays'
+/// elements): for a memory report.
 struct RenderSceneMemory {
   std::uint64_t records = 0;  ///< the objects' and lights' records
   std::uint64_t bvh = 0;      ///< the hierarchy

@@ -78,8 +78,9 @@ TEST(RenderSceneBuilder, BatchesRenderTheSameImage) {
 
 // memory() counts each array as the layout says: per object its record,
 // colour and file index; per plane its normal and place in the plane list;
-// the table of distinct materials; the lights; the nodes as reserved (two
-// a box) and an item a box; each item's leaf and the lights' grids.
+// the table of distinct materials; the lights; the nodes (2n - 1 over n
+// boxes, one a leaf) and an item a box; each item's leaf and the lights'
+// grids.
 TEST(RenderSceneBuilder, MemoryIsTheLayoutsSizes) {
   Random random(3);
   scene::Scene s = randomScene(random, 1000);
@@ -99,7 +100,7 @@ TEST(RenderSceneBuilder, MemoryIsTheLayoutsSizes) {
             objects * (sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(std::uint32_t)) +
                 planes * (sizeof(glm::dvec3) + sizeof(std::uint32_t)) +
                 materials * sizeof(scene::Material) + s.lights.size() * sizeof(RenderLight));
-  EXPECT_EQ(memory.bvh, bounded * (2 * sizeof(BvhNode) + sizeof(std::uint32_t)));
+  EXPECT_EQ(memory.bvh, (2 * bounded - 1) * sizeof(BvhNode) + bounded * sizeof(std::uint32_t));
   std::uint64_t grids = bounded * sizeof(std::uint32_t);
   for (std::size_t l = 0; l < s.lights.size(); ++l) grids += built.lightGrid(l)->bytes();
   EXPECT_EQ(memory.grids, grids);
