@@ -9,7 +9,6 @@
 #include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
 #include "renderer/parallel_parts.h"
-#include "renderer/render_scene_builder.h"
 #include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
 
@@ -147,13 +146,6 @@ RenderSceneMemory RenderScene::memory() const {
   memory.grids = heldBytes(leafOf_);
   for (const DirectionGrid& grid : lightGrids_) memory.grids += grid.bytes();
   return memory;
-}
-
-RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids) {
-  RenderSceneBuilder builder(threads);
-  builder.reserve(scene.objects.size());
-  builder.add(scene.objects);
-  *this = std::move(builder).finish(scene, lightGrids);
 }
 
 void RenderScene::buildLightGrids(const std::vector<Bounds>& boxes, int threads) {

@@ -118,7 +118,8 @@ struct RenderSceneMemory {
 
 class RenderScene {
  public:
-  /// Compiles the scene, its BVH built on `threads` threads (0: every
+  /// Compiles the scene as RenderSceneBuilder does, in one batch (defined
+  /// in render_scene_builder.cpp), its BVH built on `threads` threads (0: every
   /// core), which changes how long that takes, never what it builds.
   /// `lightGrids` false leaves out the lights' direction grids (lightGrid),
   /// for the tests and benchmarks that compare: the answers are the same.

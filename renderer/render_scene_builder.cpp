@@ -25,6 +25,15 @@ std::array<std::uint64_t, 7> propertyBits(const scene::Material& m) {
 
 }  // namespace
 
+// Here rather than in render_scene.cpp, which the builder's header would
+// otherwise include back: a whole scene is one batch.
+RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids) {
+  RenderSceneBuilder builder(threads);
+  builder.reserve(scene.objects.size());
+  builder.add(scene.objects);
+  *this = std::move(builder).finish(scene, lightGrids);
+}
+
 RenderSceneBuilder::RenderSceneBuilder(int threads)
     : threads_(std::min(resolveThreads(threads), Bvh::kMaxBuildThreads)) {}
 
