@@ -622,6 +622,16 @@ std::vector<Row> primaryRays(const render::RenderScene& compiled,
   variants.push_back({"sfrender", [&](int threads, std::vector<std::int32_t>& ids) {
                         sfrenderIds(compiled, settings, threads, ids);
                       }});
+  // The same without the eye's grid (RenderSettings::eyeGrid), where it
+  // has one: what the grid gains.
+  if (render::CameraTrace(compiled, settings).hasEyeGrid()) {
+    render::RenderSettings packetsOnly = settings;
+    packetsOnly.eyeGrid = false;
+    variants.push_back(
+        {"sfrender_packets", [&compiled, packetsOnly](int threads, std::vector<std::int32_t>& ids) {
+           sfrenderIds(compiled, packetsOnly, threads, ids);
+         }});
+  }
   for (int width : {1, 4, 8}) {
     variants.push_back({"embree" + std::to_string(width),
                         [&tracers, width](int threads, std::vector<std::int32_t>& ids) {
