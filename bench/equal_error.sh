@@ -76,6 +76,9 @@ warn_unless_release "$build"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 start=$(date +%s)
+# The commit as the run starts, the one nearest the binaries measured:
+# commits made during the run are not in them.
+commit=$(short_commit "$root")
 load_start=$(cut -d ' ' -f 1-3 /proc/loadavg 2>/dev/null || echo unknown)
 
 has_adaptive=no
@@ -251,7 +254,7 @@ gnuplot "$work/plot.gp" || die "gnuplot failed"
 
 # --- The section ------------------------------------------------------------------
 machine="$(nproc) logical CPUs, CPU \"$(cpu_model)\", $(memory_total) of memory, Linux $(uname -r),
-$(compiler_of "$build"), ${build_type:-unknown} build of commit $(short_commit "$root");
+$(compiler_of "$build"), ${build_type:-unknown} build of commit $commit;
 $(povray_version) from Debian"
 section=$work/equal-error.md
 {
