@@ -70,11 +70,11 @@ std::uint64_t DirectionGrid::FaceCells::bound(std::uint64_t boxes) const {
 }
 
 DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
-                             const std::vector<Bounds>& boxes, const Limits& limits)
+                             const GridBoxes& boxes, const Limits& limits)
     : DirectionGrid(apex, std::move(windows), boxes, limits, nullptr, {}) {}
 
 DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
-                             const std::vector<Bounds>& boxes, const Limits& limits,
+                             const GridBoxes& boxes, const Limits& limits,
                              const FaceCells* cubeCells, std::span<const std::uint32_t> labels)
     : apex_(apex), windows_(std::move(windows)), cube_(cubeCells != nullptr) {
   windows_.resize(std::min<std::size_t>(windows_.size(), kMaxWindows));
@@ -82,7 +82,8 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   // Step 1: the scale of the scene as seen from the apex, which sets how
   // near a box must be to be listed everywhere, and how far a lookup may go.
   double reach = 0.0;
-  for (const Bounds& box : boxes) {
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Bounds box = boxes[i];
     if (!finite(box)) continue;
     reach = std::max({reach, largestMagnitude(box.lo - apex_), largestMagnitude(box.hi - apex_)});
   }
@@ -149,7 +150,7 @@ DirectionGrid::DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> win
   farLookup_ = farLookup;
 }
 
-bool DirectionGrid::binBoxes(const std::vector<Bounds>& boxes, const Limits& limits,
+bool DirectionGrid::binBoxes(const GridBoxes& boxes, const Limits& limits,
                              const FaceCells* cubeCells, BoxCells& binned) {
   // A cube's faces are fitted to what their boxes reach first, and where
   // the boxes cover too many cells, cut a quarter as fine, then again,
@@ -200,7 +201,7 @@ void DirectionGrid::setLookups() {
   }
 }
 
-bool DirectionGrid::coverBoxes(const std::vector<Bounds>& boxes, const Limits& limits,
+bool DirectionGrid::coverBoxes(const GridBoxes& boxes, const Limits& limits,
                                BoxCells& binned) const {
   std::uint64_t windowCells = 0;
   for (const GridWindow& w : windows_) {
@@ -233,7 +234,7 @@ bool DirectionGrid::coverBoxes(const std::vector<Bounds>& boxes, const Limits& l
   return true;
 }
 
-DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
+DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const GridBoxes& boxes,
                                         const FaceCells& cells, const Limits& limits,
                                         std::span<const std::uint32_t> labels) {
   std::vector<GridWindow> faces;
@@ -253,14 +254,14 @@ DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vecto
   return DirectionGrid(apex, std::move(faces), boxes, limits, &cells, labels);
 }
 
-DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
+DirectionGrid DirectionGrid::cubeAround(const glm::dvec3& apex, const GridBoxes& boxes,
                                         int resolution, const Limits& limits) {
   std::uint64_t side = static_cast<std::uint64_t>(std::max(resolution, 1));
   return cubeAround(apex, boxes, FaceCells{0.0, 0.0, side * side, side * side}, limits);
 }
 
 std::array<DirectionGrid::FaceReach, DirectionGrid::kMaxWindows> DirectionGrid::fitCubeFaces(
-    const std::vector<Bounds>& boxes) {
+    const GridBoxes& boxes) {
   // Per face, the rectangle its boxes reach, widened by the margin as
   // their cells will be, how many reach it, and their areas within it.
   std::array<TangentRange, kMaxWindows> fitted;
@@ -269,8 +270,8 @@ std::array<DirectionGrid::FaceReach, DirectionGrid::kMaxWindows> DirectionGrid::
   auto within = [](double from, double to) {
     return std::max(0.0, std::min(to, 1.0) - std::max(from, -1.0));
   };
-  for (const Bounds& box : boxes) {
-    forEachReach(box, [&](int w, const TangentRange& r) {
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    forEachReach(boxes[i], [&](int w, const TangentRange& r) {
       TangentRange& f = fitted[w];
       f = TangentRange{std::min(f.uFrom, r.uFrom), std::max(f.uTo, r.uTo),
                        std::min(f.vFrom, r.vFrom), std::max(f.vTo, r.vTo)};

@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -39,6 +40,27 @@ struct GridWindow {
   glm::dvec3 vAxis{0.0, 1.0, 0.0};
   double uLow = -1.0, uHigh = 1.0, vLow = -1.0, vHigh = 1.0;
   int columns = 1, rows = 1;
+};
+
+// The boxes a grid is built over: a list, or `count` boxes made one by one
+// (box i is boxOf(i), asked for once in each of the build's few passes),
+// for a caller that need not hold them all.
+class GridBoxes {
+ public:
+  // Implicit: a list is the usual case.
+  GridBoxes(const std::vector<Bounds>& boxes) : list_(&boxes) {}
+  GridBoxes(std::uint32_t count, std::function<Bounds(std::uint32_t)> boxOf)
+      : count_(count), boxOf_(std::move(boxOf)) {}
+  std::size_t size() const { return list_ ? list_->size() : count_; }
+  bool empty() const { return size() == 0; }
+  Bounds operator[](std::size_t i) const {
+    return list_ ? (*list_)[i] : boxOf_(static_cast<std::uint32_t>(i));
+  }
+
+ private:
+  const std::vector<Bounds>* list_ = nullptr;
+  std::uint32_t count_ = 0;
+  std::function<Bounds(std::uint32_t)> boxOf_;
 };
 
 class DirectionGrid {
@@ -99,21 +121,21 @@ class DirectionGrid {
 
   DirectionGrid() = default;
   /// Bins `boxes` (item i is boxes[i]) as seen from `apex` in `windows`.
-  DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
-                const std::vector<Bounds>& boxes, const Limits& limits);
+  DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows, const GridBoxes& boxes,
+                const Limits& limits);
   /// Six windows on the faces of a cube around `apex`, in the order
   /// cubeWindowOf numbers them, each the rectangle of its face that the
   /// boxes reach, cut as `cells` says. Box k is listed as item labels[k]
   /// (as item k where `labels` is empty or of another size): boxes in a
   /// BVH's order, labelled by its items, cover cells near those of the
   /// box before, which makes the build quicker than boxes at random.
-  static DirectionGrid cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
+  static DirectionGrid cubeAround(const glm::dvec3& apex, const GridBoxes& boxes,
                                   const FaceCells& cells, const Limits& limits,
                                   std::span<const std::uint32_t> labels = {});
   /// cubeAround with about resolution x resolution cells on each face
   /// that a box reaches.
-  static DirectionGrid cubeAround(const glm::dvec3& apex, const std::vector<Bounds>& boxes,
-                                  int resolution, const Limits& limits);
+  static DirectionGrid cubeAround(const glm::dvec3& apex, const GridBoxes& boxes, int resolution,
+                                  const Limits& limits);
 
   /// False when the boxes would cover more cells than the limits allow:
   /// then every lookup answers kNoCell.
@@ -188,8 +210,8 @@ class DirectionGrid {
   };
   // With `cubeCells`: the windows are the faces of cubeAround, each fitted
   // to what its boxes reach.
-  DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows,
-                const std::vector<Bounds>& boxes, const Limits& limits, const FaceCells* cubeCells,
+  DirectionGrid(const glm::dvec3& apex, std::vector<GridWindow> windows, const GridBoxes& boxes,
+                const Limits& limits, const FaceCells* cubeCells,
                 std::span<const std::uint32_t> labels);
   // The cell of tangent point (u, v) on window `window`: kNoCell outside
   // the window (a cube's face: outside the face), the empty cell on a
@@ -222,15 +244,15 @@ class DirectionGrid {
     double area = 0.0;
   };
   // Fits each cube face to the rectangle its boxes reach.
-  std::array<FaceReach, kMaxWindows> fitCubeFaces(const std::vector<Bounds>& boxes);
+  std::array<FaceReach, kMaxWindows> fitCubeFaces(const GridBoxes& boxes);
   // Cuts each fitted face as `cells` says for the boxes that reach it.
   void cutCubeFaces(const std::array<FaceReach, kMaxWindows>& reaching, const FaceCells& cells);
   // Bins the boxes into `binned` with the windows as they are, or false
   // where they cover more cells than `limits` allows.
-  bool coverBoxes(const std::vector<Bounds>& boxes, const Limits& limits, BoxCells& binned) const;
+  bool coverBoxes(const GridBoxes& boxes, const Limits& limits, BoxCells& binned) const;
   // Cuts a cube's faces (fitted, then coarser while the boxes cover too
   // much) and bins the boxes; false where they cannot be binned.
-  bool binBoxes(const std::vector<Bounds>& boxes, const Limits& limits, const FaceCells* cubeCells,
+  bool binBoxes(const GridBoxes& boxes, const Limits& limits, const FaceCells* cubeCells,
                 BoxCells& binned);
   // Fills lookups_ from the windows, once their cells are numbered.
   void setLookups();

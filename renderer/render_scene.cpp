@@ -98,11 +98,10 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
   bytes.scene = saturatingSum(saturatingProduct(objects, perObject),
                               saturatingProduct(lights, sizeof(RenderLight)));
   // While it builds: the BVH (Bvh::bytesFor), its old item numbers and the
-  // records' moves' marks (a byte an object is counted), and for the grids
-  // one box an object and each item's leaf.
-  bytes.bvh =
-      saturatingSum(saturatingProduct(objects, sizeof(Bounds) + 2 * sizeof(std::uint32_t) + 1),
-                    Bvh::bytesFor(objects));
+  // records' moves' marks (a byte an object is counted), and each item's
+  // leaf.
+  bytes.bvh = saturatingSum(saturatingProduct(objects, 2 * sizeof(std::uint32_t) + 1),
+                            Bvh::bytesFor(objects));
   // The lights' grids (DirectionGrid::bytes, bounded by its limits), and
   // while they are built (kGridsBuiltAtOnce at a time), each one's cell
   // ranges of each box (at most one a window, in a vector that may double).
@@ -148,30 +147,32 @@ RenderSceneMemory RenderScene::memory() const {
   return memory;
 }
 
-void RenderScene::buildLightGrids(const std::vector<Bounds>& boxes, int threads) {
+void RenderScene::buildLightGrids(int threads) {
+  // Each item's leaf first. The grids are built over the leaves' boxes, in
+  // float, rounded outward from the items' (so holding them), read from the
+  // nodes rather than copied into a list of their own; a shadow ray through
+  // a cell tests the same box before the object (meetsItemBox).
+  const std::vector<BvhNode>& nodes = bvh_.nodes();
+  leafOf_.resize(bounded_.size());
+  for (std::uint32_t node = 0; node < nodes.size(); ++node) {
+    for (std::uint32_t k = 0; k < nodes[node].count; ++k) {
+      leafOf_[bvh_.items()[nodes[node].offset + k]] = node;
+    }
+  }
+  const GridBoxes leafBoxes(bounded_.count, [this](std::uint32_t item) { return leafBox(item); });
   // The grids are independent: up to kGridsBuiltAtOnce at a time (what
-  // bytesFor counts), each built by one thread as it would be alone. Their
-  // boxes are in the items' order, so box k is item k. The last part,
-  // taken by the first thread to finish a grid, is each item's leaf, whose
-  // box the grids' shadow rays test first (meetsItemBox): nothing else
-  // reads it, and the grids take unequal times.
+  // bytesFor counts), each built by one thread as it would be alone.
   lightGrids_.resize(std::min(lights_.size(), kMaxLightGrids));
-  allocateHere(leafOf_, boxes.size());
-  const std::size_t grids = lightGrids_.size();
-  runParts(grids + 1, std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
-    if (i < grids) {
-      lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, boxes, kLightGridCells,
-                                                 DirectionGrid::Limits{});
-      return;
-    }
-    leafOf_.resize(boxes.size());
-    const std::vector<BvhNode>& nodes = bvh_.nodes();
-    for (std::uint32_t node = 0; node < nodes.size(); ++node) {
-      for (std::uint32_t k = 0; k < nodes[node].count; ++k) {
-        leafOf_[bvh_.items()[nodes[node].offset + k]] = node;
-      }
-    }
+  runParts(lightGrids_.size(), std::min(threads, kGridsBuiltAtOnce), [&](std::size_t i) {
+    lightGrids_[i] = DirectionGrid::cubeAround(lights_[i].position, leafBoxes, kLightGridCells,
+                                               DirectionGrid::Limits{});
   });
+}
+
+Bounds RenderScene::leafBox(std::uint32_t item) const {
+  const float* planes = bvh_.nodes()[leafOf_[item]].planes;
+  return Bounds{glm::dvec3(planes[0], planes[1], planes[2]),
+                glm::dvec3(planes[3], planes[4], planes[5])};
 }
 
 Bounds RenderScene::itemBounds(std::uint32_t item) const {
@@ -428,10 +429,7 @@ bool RenderScene::blockedByPlane(const Ray& ray, const RaySource& source, double
 
 [[gnu::always_inline]] inline bool RenderScene::meetsItemBox(std::uint32_t item, const BoxRay& ray,
                                                              double tMax) const {
-  const float* planes = bvh_.nodes()[leafOf_[item]].planes;
-  Bounds box{glm::dvec3(planes[0], planes[1], planes[2]),
-             glm::dvec3(planes[3], planes[4], planes[5])};
-  return hitsBox(box, ray, 0.0, tMax);
+  return hitsBox(leafBox(item), ray, 0.0, tMax);
 }
 
 std::uint32_t RenderScene::shadowCell(std::size_t light, const glm::dvec3& point,

@@ -292,9 +292,12 @@ class RenderScene {
   }
   friend class RenderSceneBuilder;
   RenderScene() = default;
-  // The build's last step (RenderSceneBuilder::finish): the lights' grids
-  // over `boxes` (item k's box at k), with each item's leaf.
-  void buildLightGrids(const std::vector<Bounds>& boxes, int threads);
+  // The build's last step (RenderSceneBuilder::finish): each item's leaf,
+  // and the lights' grids over the leaves' boxes.
+  void buildLightGrids(int threads);
+  // The box of the leaf that holds BVH item `item`, which contains the
+  // item's (itemBounds).
+  Bounds leafBox(std::uint32_t item) const;
   // Whether the ray meets the box of the leaf holding BVH item `item`
   // within (0, tMax): hitsBox on the leaf's float box, which contains the
   // object's box.

@@ -174,20 +174,10 @@ RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGri
     scene.lights_.push_back(RenderLight{light.position(), light.colour});
   }
   // Step 3: a grid per light, for its shadow rays (docs/TRACING.md,
-  // "Direction grids"), over the items' boxes, made for it and freed after;
-  // not for a scene of planes alone, which has nothing to list.
+  // "Direction grids"); not for a scene of planes alone, which has nothing
+  // to list.
   if (lightGrids && boundedCount >= RenderScene::kMinLightGridObjects) {
-    std::vector<Bounds> boxes;
-    allocateHere(boxes, boundedCount);
-    boxes.resize(boundedCount);
-    const std::size_t parts = static_cast<std::size_t>(threads_);
-    runParts(parts, threads_, [&](std::size_t part) {
-      const std::uint32_t end = static_cast<std::uint32_t>(boundedCount * (part + 1) / parts);
-      for (auto k = static_cast<std::uint32_t>(boundedCount * part / parts); k < end; ++k) {
-        boxes[k] = scene.itemBounds(k);
-      }
-    });
-    scene.buildLightGrids(boxes, threads_);
+    scene.buildLightGrids(threads_);
   }
   return scene;
 }
