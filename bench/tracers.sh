@@ -121,8 +121,9 @@ if has_part embree; then
           row+=" $(ratio sfrender${kind}_1t_cpu_mrays embree8${kind}_1t_cpu_mrays)x |"
         done
         diffs=0
-        for v in sfrender embree1 embree4 embree8 sfrender_shadow embree1_shadow embree4_shadow embree8_shadow; do
-          diffs=$((diffs + $(value ${v}_differences "$t")))
+        for v in sfrender sfrender_packets embree1 embree4 embree8 sfrender_shadow embree1_shadow embree4_shadow embree8_shadow; do
+          d=$(value ${v}_differences "$t")
+          diffs=$((diffs + ${d:-0}))
         done
         echo "$row $diffs |"
         total_diffs=$((total_diffs + diffs))

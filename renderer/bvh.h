@@ -166,7 +166,7 @@ class Bvh {
  private:
   // traversePacket's walk of rays of the same signs (renderer/bvh_packet.h),
   // and the same built for AVX2.
-  template <typename Visit>
+  template <bool kWide, typename Visit>
   void walkPacket(const BoxRay* rays, int count, const double* tMax, Visit& visit) const;
   template <typename Visit>
   void walkPacketAvx2(const BoxRay* rays, int count, const double* tMax, Visit& visit) const;

@@ -39,7 +39,7 @@
 #include "renderer/bvh.h"
 
 #if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
-#define SCENEFILE_PACKET_VECTORS 1
+#include <emmintrin.h>
 #define SCENEFILE_PACKET_AVX2 1
 #endif
 
@@ -51,8 +51,8 @@ namespace detail {
 // indices that their shared direction signs pick (Bvh::NodeRay per ray).
 struct PacketNodeRays {
   static constexpr int kLanes = Bvh::kPacketSize;
-  static_assert(kLanes % 4 == 0, "the box test takes lanes four at a time");
-#if defined(SCENEFILE_PACKET_VECTORS)
+  static_assert(kLanes == 4, "the wide box test holds the lanes in one vector");
+#if defined(SCENEFILE_PACKET_AVX2)
   using Doubles4 = double __attribute__((vector_size(32)));
   using Longs4 = long long __attribute__((vector_size(32)));
 #endif
@@ -86,40 +86,58 @@ struct PacketNodeRays {
   }
 
   // hitsNode on every lane for the box `node`: bit `lane` set where that
-  // ray meets it within tMax[lane], its entry distance in tEntry[lane].
-  // Four lanes a vector (GCC's vector extensions: two SSE2 operations each,
-  // one AVX2 operation where traversePacket's AVX2 version inlines this),
+  // ray meets it within tMax[lane], its entry distance in tEntry[lane],
   // with hitsNode's operations in its order on each lane: the float planes
-  // convert to double exactly, `x > m ? x : m` and `x < m ? x : m` leave m
-  // as it was for a NaN distance, as in hitsNode, and nothing is fused
-  // (neither target has FMA), so every version gives the same bits.
+  // convert to double exactly, `x > m ? x : m` and `x < m ? x : m` (SSE2's
+  // max and min) leave m as it was for a NaN distance, as in hitsNode, and
+  // nothing is fused (neither target has FMA), so every version gives the
+  // same bits. kWide: four lanes a vector in GCC's vector extensions, for
+  // the walk built for AVX2, where each is one instruction (at x86-64's
+  // baseline they cost a fifth more than the SSE2 code below).
+  template <bool kWide>
   int hits(const BvhNode& node, const double* tMax, double* tEntry) const {
     const double widen = 1.0 + 2.0 * gamma(3);
-#if defined(SCENEFILE_PACKET_VECTORS)
     int mask = 0;
-    for (int first = 0; first < kLanes; first += 4) {
+#if defined(SCENEFILE_PACKET_AVX2)
+    if constexpr (kWide) {
       Doubles4 tMin = {0.0, 0.0, 0.0, 0.0};
       Doubles4 tFarthest;
-      __builtin_memcpy(&tFarthest, tMax + first, sizeof tFarthest);
+      __builtin_memcpy(&tFarthest, tMax, sizeof tFarthest);
       for (int i = 0; i < 3; ++i) {
         double nearOne = node.planes[nearPlane[i]];
         double farOne = node.planes[farPlane[i]];
-        const Doubles4& o = *reinterpret_cast<const Doubles4*>(&origin[i][first]);
-        const Doubles4& inverse = *reinterpret_cast<const Doubles4*>(&inverseDirection[i][first]);
+        const Doubles4& o = *reinterpret_cast<const Doubles4*>(&origin[i][0]);
+        const Doubles4& inverse = *reinterpret_cast<const Doubles4*>(&inverseDirection[i][0]);
         Doubles4 tNear = (nearOne - o) * inverse;
         Doubles4 tFar = (farOne - o) * inverse;
         tFar *= widen;
         tMin = tNear > tMin ? tNear : tMin;
         tFarthest = tFar < tFarthest ? tFar : tFarthest;
       }
-      __builtin_memcpy(tEntry + first, &tMin, sizeof tMin);
+      __builtin_memcpy(tEntry, &tMin, sizeof tMin);
       // Each lane's compare is all ones or all zeros: its bit, or'd up.
       Longs4 bits = (tMin <= tFarthest) & Longs4{1, 2, 4, 8};
-      mask |= static_cast<int>((bits[0] | bits[1]) | (bits[2] | bits[3])) << first;
+      return static_cast<int>((bits[0] | bits[1]) | (bits[2] | bits[3]));
     }
-    return mask;
+#endif
+#if defined(__SSE2__)
+    for (int first = 0; first < kLanes; first += 2) {
+      __m128d tMin = _mm_setzero_pd();
+      __m128d tFarthest = _mm_loadu_pd(tMax + first);
+      for (int i = 0; i < 3; ++i) {
+        __m128d nearBoth = _mm_set1_pd(static_cast<double>(node.planes[nearPlane[i]]));
+        __m128d farBoth = _mm_set1_pd(static_cast<double>(node.planes[farPlane[i]]));
+        __m128d o = _mm_load_pd(&origin[i][first]);
+        __m128d inverse = _mm_load_pd(&inverseDirection[i][first]);
+        __m128d tNear = _mm_mul_pd(_mm_sub_pd(nearBoth, o), inverse);
+        __m128d tFar = _mm_mul_pd(_mm_mul_pd(_mm_sub_pd(farBoth, o), inverse), _mm_set1_pd(widen));
+        tMin = _mm_max_pd(tNear, tMin);
+        tFarthest = _mm_min_pd(tFar, tFarthest);
+      }
+      _mm_storeu_pd(tEntry + first, tMin);
+      mask |= _mm_movemask_pd(_mm_cmple_pd(tMin, tFarthest)) << first;
+    }
 #else
-    int mask = 0;
     for (int lane = 0; lane < kLanes; ++lane) {
       double tMin = 0.0;
       double tFarthest = tMax[lane];
@@ -135,8 +153,8 @@ struct PacketNodeRays {
       tEntry[lane] = tMin;
       if (tMin <= tFarthest) mask |= 1 << lane;
     }
-    return mask;
 #endif
+    return mask;
   }
 
   // The lanes of `mask` whose entry distance lies within their tMax.
@@ -167,8 +185,9 @@ inline bool hasAvx2() {
 
 }  // namespace detail
 
-// The walk itself, inlined into traversePacket's two versions.
-template <typename Visit>
+// The walk itself, inlined into traversePacket's two versions; kWide picks
+// the box test.
+template <bool kWide, typename Visit>
 [[gnu::always_inline]] inline void Bvh::walkPacket(const BoxRay* rays, int count,
                                                    const double* tMax, Visit& visit) const {
   detail::PacketNodeRays r(rays, count);
@@ -188,7 +207,7 @@ template <typename Visit>
   Pending stack[kStackSize + 1];
   int top = 0;
   alignas(64) double tEntries[kPacketSize];
-  int mask = r.hits(nodes_[0], tMaxes, tEntries);
+  int mask = r.template hits<kWide>(nodes_[0], tMaxes, tEntries);
   int stopped = 0;
   std::uint32_t current = 0;
   while (mask != 0) {
@@ -214,8 +233,8 @@ template <typename Visit>
       if (r.negative[node.axis]) std::swap(nearChild, farChild);
       alignas(64) double nearEntries[kPacketSize];
       Pending& far = stack[top];
-      int hitNear = r.hits(nodes_[nearChild], tMaxes, nearEntries) & mask;
-      int hitFar = r.hits(nodes_[farChild], tMaxes, far.tEntry) & mask;
+      int hitNear = r.template hits<kWide>(nodes_[nearChild], tMaxes, nearEntries) & mask;
+      int hitFar = r.template hits<kWide>(nodes_[farChild], tMaxes, far.tEntry) & mask;
       if (hitNear != 0) {
         if (hitFar != 0) {
           far.node = farChild;
@@ -247,7 +266,7 @@ template <typename Visit>
 template <typename Visit>
 [[gnu::target("avx2")]] void Bvh::walkPacketAvx2(const BoxRay* rays, int count, const double* tMax,
                                                  Visit& visit) const {
-  walkPacket(rays, count, tMax, visit);
+  walkPacket<true>(rays, count, tMax, visit);
 }
 #endif
 
@@ -267,7 +286,7 @@ void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visi
     return;
   }
 #endif
-  walkPacket(rays, count, tMax, visit);
+  walkPacket<false>(rays, count, tMax, visit);
 }
 
 }  // namespace render
