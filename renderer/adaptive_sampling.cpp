@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "renderer/anchor_blocks.h"
 #include "renderer/saturating.h"
 
 namespace render {
@@ -194,10 +195,10 @@ int CornerInterpolation::anchorsOf(int x, int y, int anchors[4][2]) const {
   return count;
 }
 
-bool CornerInterpolation::agree(const SampleLook* looks, int count) const {
+bool CornerInterpolation::agree(int x, int y, const SampleLook* looks, int count) const {
   SampleSpread spread;
   for (int k = 0; k < count; ++k) spread.add(looks[k]);
-  return !spread.exceeds(tolerance);
+  return !spread.exceeds(tolerance) && (!blocks || blocks->onlyShows(x, y, looks[0].object));
 }
 
 SampleColour meanOf(const SampleColour* const* samples, int count) {

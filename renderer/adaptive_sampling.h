@@ -16,6 +16,8 @@
 
 namespace render {
 
+class AnchorBlocks;
+
 // A camera sample's colour, the bound on what adaptive depth control left
 // out of it (TraceContext::slack), and the object its ray met (or
 // RaySource::kNone).
@@ -192,20 +194,23 @@ class SharedSides {
 // of tracing (docs/RENDERING.md, "Adaptive sampling"). A corner (x, y) of
 // the full image with x and y even is an anchor, always traced; any other
 // lies between two anchors (x or y odd) or four (both odd), and is their
-// mean where they show one object and colours within `tolerance`, else
-// traced. A corner's sample is thus a function of its position alone,
+// mean where they show one object and colours within `tolerance`, and no
+// other bounded object reaches the square or side between them (`blocks`),
+// else traced. A corner's sample is thus a function of its position alone,
 // whichever tile or region asks for it.
 struct CornerInterpolation {
   double tolerance = -1.0;  // below 0: every corner is traced
   int fullWidth = 0, fullHeight = 0;
+  const AnchorBlocks* blocks = nullptr;  // nullptr: no object is looked for
 
   bool on() const { return tolerance >= 0.0; }
   // The anchors of corner (x, y) into `anchors`, and how many: 0 for an
   // anchor, a corner whose anchors leave the image, or with interpolation
   // off; each of those is traced.
   int anchorsOf(int x, int y, int anchors[4][2]) const;
-  // Whether a corner between anchors that look as `looks` is their mean.
-  bool agree(const SampleLook* looks, int count) const;
+  // Whether corner (x, y), between anchors that look as `looks`, is their
+  // mean.
+  bool agree(int x, int y, const SampleLook* looks, int count) const;
 };
 
 // The mean of `count` anchors' samples: a corner between them.

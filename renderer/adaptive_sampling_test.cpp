@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "renderer/camera.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/test_scenes.h"
@@ -405,11 +406,11 @@ TEST(AdaptiveSampling, ACornerBetweenAnchorsIsTheirMeanWhereTheyAgree) {
   EXPECT_EQ(CornerInterpolation{}.anchorsOf(3, 2, anchors), 0);  // off
 
   SampleLook near[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.55, 0.5, 0.5}, 1)};
-  EXPECT_TRUE(rule.agree(near, 2));
+  EXPECT_TRUE(rule.agree(3, 2, near, 2));
   SampleLook far[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.65, 0.5, 0.5}, 1)};
-  EXPECT_FALSE(rule.agree(far, 2));
+  EXPECT_FALSE(rule.agree(3, 2, far, 2));
   SampleLook objects[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.5, 0.5, 0.5}, 2)};
-  EXPECT_FALSE(rule.agree(objects, 2));
+  EXPECT_FALSE(rule.agree(3, 2, objects, 2));
 
   SampleColour a{{0.25, 0.5, 0.75}, 0.125, 3}, b{{0.75, 0.5, 0.25}, 0.375, 3};
   const SampleColour* pair[2] = {&a, &b};
@@ -417,6 +418,41 @@ TEST(AdaptiveSampling, ACornerBetweenAnchorsIsTheirMeanWhereTheyAgree) {
   EXPECT_EQ(mean.colour, glm::dvec3(0.5));
   EXPECT_EQ(mean.slack, 0.25);
   EXPECT_EQ(mean.object, 3u);
+}
+
+// Thin red posts before a grey wall, each 1.2 pixels wide, at various
+// offsets from the anchors (even pixel corners): a post between two anchors
+// that see the wall is missed by both.
+scene::Scene thinPostsBeforeAWall(const RenderSettings& settings) {
+  scene::Scene s = sceneLookingAt({0, 0, 5}, {0, 0, 0});
+  s.objects.push_back(
+      object(ObjectKind::Cube, {scale(20, 20, 1), translate(0, 0, -3)}, flat({0.5, 0.5, 0.5})));
+  PinholeCamera camera(s.camera, settings);
+  // The width of a pixel at the posts' distance (5).
+  double pixel = 2.0 * camera.tanHalfWidth() * 5.0 / settings.width;
+  for (double x : {8.3, 15.6, 23.0, 30.9, 38.5, 46.2, 53.7}) {
+    double centre = (x - 0.5 * settings.width) * pixel;
+    s.objects.push_back(object(ObjectKind::Cylinder,
+                               {scale(0.6 * pixel, 10.0, 0.6 * pixel), translate(centre, 0, 0)},
+                               flat({1.0, 0.0, 0.0})));
+  }
+  s.lights.push_back(light({0, 0, 5}));
+  return s;
+}
+
+TEST(AdaptiveSampling, AnObjectBetweenAgreeingAnchorsIsTracedNotLost) {
+  for (int spp : {4, 16}) {
+    RenderSettings settings = adaptiveSettings(spp, 0.1);
+    RenderScene compiled(thinPostsBeforeAWall(settings));
+    Image interpolated = renderImage(compiled, settings);
+    settings.interpolatesCorners = false;
+    Image traced = renderImage(compiled, settings);
+    float worst = 0.0f;
+    for (std::size_t k = 0; k < traced.rgb.size(); ++k) {
+      worst = std::max(worst, std::abs(interpolated.rgb[k] - traced.rgb[k]));
+    }
+    EXPECT_LE(worst, settings.adaptiveThreshold) << spp << " spp";
+  }
 }
 
 // Corners taken from agreeing anchors spare so many samples that half the

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "renderer/adaptive_sampling.h"
+#include "renderer/anchor_blocks.h"
 #include "renderer/camera.h"
 #include "renderer/camera_trace.h"
 #include "renderer/parallel_parts.h"
@@ -116,6 +117,8 @@ class PixelTracer {
   // it can matter (a scene without transparency never reads or changes it),
   // as the copy costs as much as a tenth of a primary ray.
   const MediumStack& eyeMedia() const { return eyeMedia_; }
+  const RenderScene& scene() const { return scene_; }
+  const PinholeCamera& camera() const { return camera_.camera(); }
   // The error adaptive depth control may make in a sample.
   double tolerance() const { return tolerance_; }
 
@@ -359,7 +362,7 @@ void sampleCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
       samples[a] = lookup(glm::ivec2(anchors[a][0], anchors[a][1]), extraSamples);
       looks[a] = lookOf(samples[a]->colour, samples[a]->object);
     }
-    if (rule.agree(looks, count)) {
+    if (rule.agree(corners[k].x, corners[k].y, looks, count)) {
       out[k] = meanOf(samples, count);
     } else {
       now.push_back(corners[k]);
@@ -602,8 +605,14 @@ void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
   // From one cut on (--spp 4), corners between anchors that agree to a tenth
   // of the threshold are their mean: on the default scene and glass-mirror
   // a third of the samples for the same error (docs/RENDERING.md).
-  if (depth > 0 && settings.interpolatesCorners)
+  // Where no other object's box reaches between them, so that an object
+  // narrower than the anchors' spacing is traced, not lost.
+  std::optional<AnchorBlocks> blocks;
+  if (depth > 0 && settings.interpolatesCorners) {
     rule.tolerance = kAnchorsAgreement * settings.adaptiveThreshold;
+    blocks.emplace(tracer.scene(), tracer.camera(), settings.width, settings.height);
+    rule.blocks = &*blocks;
+  }
   rule.fullWidth = settings.width;
   rule.fullHeight = settings.height;
   traceTileEdges(tracer, rule, edges, workers, firstProgress, cancel);
