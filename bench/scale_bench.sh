@@ -11,7 +11,11 @@
 # object. The limits are raised to the file's size and object count, one
 # flag each.
 #
-# Environment: SCALE_BENCH_OBJECTS ("1000000 10000000"), SCALE_BENCH_100M
+# A render that fails (one that does not fit in memory is refused, exit 4)
+# gets a row with its exit status and its last message.
+#
+# Environment: SCALE_BENCH_OBJECTS ("1000000 10000000"; empty for none),
+# SCALE_BENCH_100M
 # (0), SCALE_BENCH_RUNS (3), SCALE_BENCH_THREADS (2), SCALE_BENCH_SCENES
 # (where floor-N.sf are taken from if there, else made:
 # /tmp/scenefile-scale-bench), SCALE_BENCH_KEEP (0: a 100,000,000-object
@@ -22,7 +26,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-build}
 [[ $build = /* ]] || build=$PWD/$build
 bin=$build/bin
-sizes=${SCALE_BENCH_OBJECTS:-1000000 10000000}
+sizes=${SCALE_BENCH_OBJECTS-1000000 10000000}
 [[ ${SCALE_BENCH_100M:-0} == 1 ]] && sizes="$sizes 100000000"
 runs=${SCALE_BENCH_RUNS:-3}
 threads=${SCALE_BENCH_THREADS:-2}
@@ -76,15 +80,22 @@ for n in $sizes; do
   if [[ $n -ge 100000000 ]]; then
     count=1
   else
-    "${render[@]}" 2>/dev/null
+    "${render[@]}" 2>/dev/null || true
   fi
   walls=() users=() syss=() peaks=()
+  failed=0
   for ((r = 1; r <= count; ++r)); do
-    /usr/bin/time -f "%e %U %S %M" -o "$work/time" "${render[@]}" 2>"$work/log.$r"
+    /usr/bin/time -f "%e %U %S %M" -o "$work/time" "${render[@]}" 2>"$work/log.$r" || failed=$?
+    if ((failed != 0)); then
+      echo "| $(thousands "$n") | $(fmt 2 "$(calc "$bytes / 1e9")") GB | exit $failed:" \
+        "$(grep -v '^Command exited' "$work/log.$r" | tail -n 1) |"
+      break
+    fi
     read -r wall user sys peak <"$work/time"
     walls+=("$wall") users+=("$user") syss+=("$sys") peaks+=("$peak")
     log "$n objects, run $r: $wall s wall, $user s user, $sys s sys, $((peak / 1024)) MB"
   done
+  ((failed == 0)) || continue
   # The stages of the run of the median wall time.
   mid=$(median "${walls[@]}")
   pick=1
