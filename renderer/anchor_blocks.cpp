@@ -32,7 +32,7 @@ AnchorBlocks::AnchorBlocks(const RenderScene& scene, const PinholeCamera& camera
     if (!box) continue;
     double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     bool whole = false;
-    for (int c = 0; c < 8 && !whole; ++c) {
+    for (int c = 0; c < 8; ++c) {
       glm::dvec3 p((c & 1) ? box->hi.x : box->lo.x, (c & 2) ? box->hi.y : box->lo.y,
                    (c & 4) ? box->hi.z : box->lo.z);
       glm::dvec3 d = p - eye;
