@@ -42,6 +42,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <functional>
 #include <iostream>
@@ -64,6 +65,7 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
@@ -191,7 +193,10 @@ struct Pixel {
   render::Ray ray;
   double nearest = std::numeric_limits<double>::infinity();
   std::int32_t id = -1;
+  std::uint32_t object = render::RaySource::kNone;  // as RenderScene numbers it
 };
+
+using Hits = std::vector<std::optional<render::Hit>>;
 
 class Tracers {
  public:
@@ -208,8 +213,11 @@ class Tracers {
   }
 
   // The ids of one packet of `count` pixels starting at (x, y), `columns`
-  // wide, traced with rtcIntersect<count> (count 1, 4 or 8).
-  void tracePacket(int count, int columns, int x, int y, std::int32_t* ids) const {
+  // wide, traced with rtcIntersect<count> (count 1, 4 or 8); with `hits`,
+  // each pixel's hit too, made by the renderer's code (hitOnObject) on the
+  // closest object Embree found, as a renderer built on Embree would.
+  void tracePacket(int count, int columns, int x, int y, std::int32_t* ids,
+                   std::optional<render::Hit>* hits) const {
     Pixel pixels[8];
     double nearest[8];
     render::Ray rays[8];
@@ -221,6 +229,7 @@ class Tracers {
         if (t >= 0.0) {
           p.nearest = t;
           p.id = static_cast<std::int32_t>(scene_.sceneObject(plane));
+          p.object = plane;
         }
       }
       nearest[k] = p.nearest;
@@ -248,23 +257,37 @@ class Tracers {
       rtcIntersect8(valid, embree_, &context.embree, &rh);
       collectN(rh, 8, pixels, ids, columns);
     }
+    if (!hits) return;
+    for (int k = 0; k < count; ++k) {
+      if (pixels[k].object == render::RaySource::kNone) {
+        hits[k].reset();
+      } else {
+        // Nearer than just past its distance: the same end of the same span.
+        hits[k] = scene_.hitOnObject(pixels[k].object, rays[k], {},
+                                     std::nextafter(nearest[k], kInfinity));
+      }
+    }
   }
 
   // Every pixel, `threads` threads taking rows (packets of two or one rows)
-  // in turn; the ids into `ids`, row by row.
-  void traceAll(int count, int threads, std::vector<std::int32_t>& ids) const {
+  // in turn; the ids into `ids`, row by row, and with `hits` the hits.
+  void traceAll(int count, int threads, std::vector<std::int32_t>& ids,
+                Hits* hits = nullptr) const {
     int columns = count == 1 ? 1 : count / 2;
     int rows = count == 1 ? 1 : 2;
     std::atomic<int> nextRow{0};
     auto work = [&] {
       std::int32_t packet[8];
+      std::optional<render::Hit> packetHits[8];
       for (int y; (y = nextRow.fetch_add(rows)) < settings_.height;) {
         for (int x = 0; x < settings_.width; x += columns) {
-          tracePacket(count, columns, x, y, packet);
+          tracePacket(count, columns, x, y, packet, hits ? packetHits : nullptr);
           for (int k = 0; k < count; ++k) {
             int px = x + k % columns, py = y + k / columns;
             if (px < settings_.width && py < settings_.height) {
-              ids[static_cast<std::size_t>(py) * settings_.width + px] = packet[k];
+              std::size_t at = static_cast<std::size_t>(py) * settings_.width + px;
+              ids[at] = packet[k];
+              if (hits) (*hits)[at] = packetHits[k];
             }
           }
         }
@@ -294,10 +317,11 @@ class Tracers {
     h.geomID = RTC_INVALID_GEOMETRY_ID;
     h.instID[0] = RTC_INVALID_GEOMETRY_ID;
   }
-  void collect(unsigned geomID, unsigned primID, const Pixel& p, std::int32_t& id) const {
-    id = geomID == RTC_INVALID_GEOMETRY_ID
-             ? p.id
-             : static_cast<std::int32_t>(scene_.sceneObject(geometry_.bounded[primID]));
+  void collect(unsigned geomID, unsigned primID, Pixel& p, std::int32_t& id) const {
+    if (geomID != RTC_INVALID_GEOMETRY_ID) p.object = geometry_.bounded[primID];
+    id = p.object == render::RaySource::kNone
+             ? -1
+             : static_cast<std::int32_t>(scene_.sceneObject(p.object));
   }
   // Packets: lanes past the image's edge are left out (valid 0).
   template <typename RayHitN>
@@ -317,7 +341,7 @@ class Tracers {
     }
   }
   template <typename RayHitN>
-  void collectN(const RayHitN& rh, int n, const Pixel* pixels, std::int32_t* ids, int) const {
+  void collectN(const RayHitN& rh, int n, Pixel* pixels, std::int32_t* ids, int) const {
     for (int k = 0; k < n; ++k) collect(rh.hit.geomID[k], rh.hit.primID[k], pixels[k], ids[k]);
   }
 
@@ -521,6 +545,23 @@ std::size_t differences(const std::vector<T>& a, const std::vector<T>& b) {
   return count;
 }
 
+// Hits differ unless every field has the same bits.
+bool sameHit(const std::optional<render::Hit>& a, const std::optional<render::Hit>& b) {
+  if (!a || !b) return !a == !b;
+  auto same = [](const glm::dvec3& u, const glm::dvec3& v) {
+    return std::memcmp(&u, &v, sizeof u) == 0;
+  };
+  return std::memcmp(&a->t, &b->t, sizeof a->t) == 0 && a->object == b->object &&
+         same(a->point, b->point) && same(a->pointError, b->pointError) &&
+         same(a->normal, b->normal) && a->fromInside == b->fromInside;
+}
+
+std::size_t differences(const Hits& a, const Hits& b) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) count += !sameHit(a[i], b[i]);
+  return count;
+}
+
 struct Row {
   std::string name;
   std::vector<double> mrays;
@@ -641,6 +682,35 @@ std::vector<Row> primaryRays(const render::RenderScene& compiled,
   return timed(variants, pixels, timing, reference);
 }
 
+// Like for like: every tracer makes each pixel's hit in full (point, error
+// bound, normal) by the renderer's code, timed inside its pass, and every
+// hit is compared bit for bit with sfrender's (one thread).
+std::vector<Row> primaryHits(const render::RenderScene& compiled,
+                             const render::RenderSettings& settings, const Tracers& tracers,
+                             const Timing& timing) {
+  std::size_t pixels = static_cast<std::size_t>(settings.width) * settings.height;
+  std::vector<std::int32_t> ids(pixels);
+  Hits reference(pixels);
+  sfrenderIds(compiled, settings, 1, ids, &reference);
+  std::vector<Variant<std::optional<render::Hit>>> variants;
+  variants.push_back({"sfrender_hits", [&](int threads, Hits& hits) {
+                        sfrenderIds(compiled, settings, threads, ids, &hits);
+                      }});
+  if (render::CameraTrace(compiled, settings).hasEyeGrid()) {
+    render::RenderSettings packetsOnly = settings;
+    packetsOnly.eyeGrid = false;
+    variants.push_back({"sfrender_packets_hits", [&, packetsOnly](int threads, Hits& hits) {
+                          sfrenderIds(compiled, packetsOnly, threads, ids, &hits);
+                        }});
+  }
+  for (int width : {1, 4, 8}) {
+    variants.push_back(
+        {"embree" + std::to_string(width) + "_hits",
+         [&, width](int threads, Hits& hits) { tracers.traceAll(width, threads, ids, &hits); }});
+  }
+  return timed(variants, static_cast<double>(pixels), timing, reference);
+}
+
 std::vector<Row> shadowRays(const render::RenderScene& compiled,
                             const render::RenderSettings& settings, RTCScene embree,
                             const Timing& timing) {
@@ -719,8 +789,10 @@ int run(const std::string& path, render::RenderSettings settings, const Timing& 
   std::printf("sfrender_eye_grid: %d\n",
               render::CameraTrace(compiled, settings).hasEyeGrid() ? 1 : 0);
   std::vector<Row> primary = primaryRays(compiled, settings, tracers, timing);
+  std::vector<Row> hits = primaryHits(compiled, settings, tracers, timing);
   std::vector<Row> shadow = shadowRays(compiled, settings, embree.scene, timing);
-  printTable("primary", primary, timing.threadCounts);
+  printTable("primary, ids", primary, timing.threadCounts);
+  printTable("primary, hits", hits, timing.threadCounts);
   printTable("shadow", shadow, timing.threadCounts);
   return 0;
 }

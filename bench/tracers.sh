@@ -7,7 +7,8 @@
 #    100,000 and 1,000,000 objects, and the shadow rays from their hits toward
 #    each light, with Embree's user geometry (the renderer's own object test
 #    in its callbacks) one ray at a time and in packets of 4 and 8, and with
-#    sfrender's own camera path (render::traceCameraRays: eye grid, packets)
+#    sfrender's own camera path (render::traceCameraRays: eye grid, packets),
+#    primary rays both as ids only and with each hit made in full,
 #    and render::Tracer::shadowed (light grids), on 1 and 2 threads; section
 #    "Against Embree" of docs/perf/RESULTS.md.
 # 2. float: bench/float_trace, a single-precision tracer of primary and
@@ -100,14 +101,36 @@ if has_part embree; then
         "objects' world bounds (widened by 4 float steps, as its boxes and rays are float) and" \
         "whose callbacks run the renderer's exact double-precision test of the object (with the" \
         "shadow ray's source, as sfrender's); planes are tested before Embree is called, as" \
-        "sfrender tests its planes first. Embree's callbacks find distances and ids only, not" \
-        "the hit's point and normal. Mrays/s = rays over the wall time of the pass, median of" \
+        "sfrender tests its planes first. *Hits*: each tracer makes every pixel's hit in full" \
+        "inside its pass, Embree's by the renderer's own code (\`RenderScene::hitOnObject\`) on" \
+        "the closest object it found, as a renderer built on Embree would; *ids*: Embree's" \
+        "callbacks find distances and ids only, sfrender's camera path still makes its hits." \
+        "Mrays/s = rays over the wall time of the pass, median of" \
         "$runs, the variants taking turns in each run; *1 thread, CPU*: over the thread's CPU" \
         "time instead, which other work on the machine moves less. *differing*: pixels whose" \
-        "object id differs from \`render::renderObjectIds\` (one ray at a time), and shadow rays" \
-        "whose answer differs from sfrender's."
+        "object id differs from \`render::renderObjectIds\` (one ray at a time), hits not" \
+        "bit for bit sfrender's, and shadow rays whose answer differs from sfrender's."
       echo
-      echo "| objects | eye grid | primary: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | shadow: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | differing |"
+      echo "| objects | eye grid | primary hits: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | differing |"
+      echo "|---|---|---|---|---|---|---|"
+      for n in $sizes; do
+        t=$work/embree-$n.txt
+        ratio() { fmt 2 "$(awk -v a="$(value "$1" "$t")" -v b="$(value "$2" "$t")" 'BEGIN { print a / b }')"; }
+        row="| $(thousands "$n") | $([[ $(value sfrender_eye_grid "$t") = 1 ]] && echo yes || echo no) |"
+        row+=" $(fmt 2 "$(value sfrender_hits_2t_mrays "$t")") |"
+        row+=" $(fmt 2 "$(value embree1_hits_2t_mrays "$t")") / $(fmt 2 "$(value embree4_hits_2t_mrays "$t")") / $(fmt 2 "$(value embree8_hits_2t_mrays "$t")") |"
+        row+=" **$(ratio sfrender_hits_2t_mrays embree8_hits_2t_mrays)x** |"
+        row+=" $(ratio sfrender_hits_1t_cpu_mrays embree8_hits_1t_cpu_mrays)x |"
+        diffs=0
+        for v in sfrender_hits sfrender_packets_hits embree1_hits embree4_hits embree8_hits; do
+          d=$(value ${v}_differences "$t")
+          diffs=$((diffs + ${d:-0}))
+        done
+        echo "$row $diffs |"
+      done
+      echo
+      echo
+      echo "| objects | eye grid | primary ids: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | shadow: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | differing |"
       echo "|---|---|---|---|---|---|---|---|---|---|---|"
       total_diffs=0
       for n in $sizes; do
@@ -121,7 +144,7 @@ if has_part embree; then
           row+=" $(ratio sfrender${kind}_1t_cpu_mrays embree8${kind}_1t_cpu_mrays)x |"
         done
         diffs=0
-        for v in sfrender sfrender_packets embree1 embree4 embree8 sfrender_shadow embree1_shadow embree4_shadow embree8_shadow; do
+        for v in sfrender sfrender_packets embree1 embree4 embree8 sfrender_hits sfrender_packets_hits embree1_hits embree4_hits embree8_hits sfrender_shadow embree1_shadow embree4_shadow embree8_shadow; do
           d=$(value ${v}_differences "$t")
           diffs=$((diffs + ${d:-0}))
         done
@@ -130,7 +153,7 @@ if has_part embree; then
       done
       echo
       if ((total_diffs == 0)); then
-        echo "Every primary ray found the same object, and every shadow ray the same answer, in every tracer."
+        echo "Every primary ray found the same object and the same hit to the bit, and every shadow ray the same answer, in every tracer."
       else
         echo "**$total_diffs rays differ** between the tracers (column *differing*)."
       fi

@@ -402,6 +402,13 @@ void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int cou
   }
 }
 
+std::optional<Hit> RenderScene::hitOnObject(std::uint32_t object, const Ray& ray,
+                                            const RaySource& source, double tMax) const {
+  std::optional<Candidate> c = intersectObject(object, ray, source, tMax);
+  if (!c) return std::nullopt;
+  return hitOn(object, ray, *c);
+}
+
 std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySource& source,
                                                      double tMax) const {
   std::uint32_t best = RaySource::kNone;

@@ -252,6 +252,12 @@ class RenderScene {
   void closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int count,
                           std::optional<Hit>* out) const;
 
+  // The hit that closestHit makes where `ray` meets object `object` nearer
+  // than tMax, or none: for a search made by other means (another tracer's
+  // hierarchy) to finish with the renderer's own hit, bit for bit.
+  std::optional<Hit> hitOnObject(std::uint32_t object, const Ray& ray, const RaySource& source,
+                                 double tMax) const;
+
   // The same queries without the hierarchy: every object is tested. The
   // reference that the BVH must agree with.
   std::optional<Hit> closestHitBruteForce(const Ray& ray, const RaySource& source,

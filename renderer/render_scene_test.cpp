@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <glm/matrix.hpp>
 #include <random>
 
@@ -176,6 +177,51 @@ TEST(Bvh, HitsAreIdenticalToBruteForce) {
     }
   }
   EXPECT_EQ(total, scene::testing::randomCases(1000000));
+}
+
+// A tracer that finds the closest object by its own search finishes with
+// hitOnObject: the very hit closestHit makes, entering or leaving.
+TEST(RenderScene, HitOnObjectIsClosestHitsHitBitForBit) {
+  RandomTransforms random(7);
+  scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
+  for (int i = 0; i < 300; ++i) {
+    s.objects.push_back(object(
+        static_cast<ObjectKind>(i % 4),
+        {scale(random.uniform(0.5, 3), random.uniform(0.5, 3), 1.0), rotateY(random.uniform(0, 3)),
+         translate(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20))}));
+  }
+  RenderScene compiled(s);
+  auto bits = [](const Hit& h) {
+    return std::vector<double>{h.t,
+                               h.point.x,
+                               h.point.y,
+                               h.point.z,
+                               h.pointError.x,
+                               h.pointError.y,
+                               h.pointError.z,
+                               h.normal.x,
+                               h.normal.y,
+                               h.normal.z};
+  };
+  int hits = 0, fromInside = 0;
+  for (int r = 0; r < 20000; ++r) {
+    Ray ray{{random.uniform(-25, 25), random.uniform(-25, 25), random.uniform(-25, 25)},
+            random.direction()};
+    std::optional<Hit> expected = compiled.closestHit(ray, RaySource{});
+    if (!expected) continue;
+    std::optional<Hit> found =
+        compiled.hitOnObject(expected->object, ray, RaySource{},
+                             std::nextafter(expected->t, std::numeric_limits<double>::infinity()));
+    ASSERT_TRUE(found) << "ray " << r;
+    std::vector<double> a = bits(*expected), b = bits(*found);
+    ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0) << "ray " << r;
+    ASSERT_EQ(found->object, expected->object);
+    ASSERT_EQ(found->fromInside, expected->fromInside);
+    ++hits;
+    fromInside += expected->fromInside;
+  }
+  EXPECT_GT(hits, 1000);
+  EXPECT_GT(fromInside, 0);
 }
 
 // The compiled scene numbers its objects the planes first, in the scene's
