@@ -214,7 +214,7 @@ class Tracers {
 
   // The ids of one packet of `count` pixels starting at (x, y), `columns`
   // wide, traced with rtcIntersect<count> (count 1, 4 or 8); with `hits`,
-  // each pixel's hit too, made by the renderer's code (hitOnObject) on the
+  // each pixel's hit too, made by the renderer's code (hitsOnObjects) on the
   // closest object Embree found, as a renderer built on Embree would.
   void tracePacket(int count, int columns, int x, int y, std::int32_t* ids,
                    std::optional<render::Hit>* hits) const {
@@ -258,15 +258,13 @@ class Tracers {
       collectN(rh, 8, pixels, ids, columns);
     }
     if (!hits) return;
+    // Nearer than just past its distance: the same end of the same span.
+    std::uint32_t objects[8];
     for (int k = 0; k < count; ++k) {
-      if (pixels[k].object == render::RaySource::kNone) {
-        hits[k].reset();
-      } else {
-        // Nearer than just past its distance: the same end of the same span.
-        hits[k] = scene_.hitOnObject(pixels[k].object, rays[k], {},
-                                     std::nextafter(nearest[k], kInfinity));
-      }
+      objects[k] = pixels[k].object;
+      nearest[k] = std::nextafter(nearest[k], kInfinity);
     }
+    scene_.hitsOnObjects(objects, rays, nearest, count, hits);
   }
 
   // Every pixel, `threads` threads taking rows (packets of two or one rows)

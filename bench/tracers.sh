@@ -102,7 +102,7 @@ if has_part embree; then
         "whose callbacks run the renderer's exact double-precision test of the object (with the" \
         "shadow ray's source, as sfrender's); planes are tested before Embree is called, as" \
         "sfrender tests its planes first. *Hits*: each tracer makes every pixel's hit in full" \
-        "inside its pass, Embree's by the renderer's own code (\`RenderScene::hitOnObject\`) on" \
+        "inside its pass, Embree's by the renderer's own code (\`RenderScene::hitsOnObjects\`) on" \
         "the closest object it found, as a renderer built on Embree would; *ids*: Embree's" \
         "callbacks find distances and ids only, sfrender's camera path still makes its hits." \
         "Mrays/s = rays over the wall time of the pass, median of" \

@@ -51,6 +51,24 @@ std::optional<glm::dvec3> shapeExtent(scene::ObjectKind kind, const glm::dmat4& 
   return extent;
 }
 
+// The 3x3 block of the object the last hit was on (toWorldLinear, an
+// inverse): neighbouring rays of a packet or a row mostly meet one object,
+// whose inverse is then worked out once for the run of them.
+class LastHitLinear {
+ public:
+  const glm::dmat3& of(std::uint32_t index, const RenderObject& object) {
+    if (index != index_) {
+      index_ = index;
+      linear_ = object.toWorldLinear();
+    }
+    return linear_;
+  }
+
+ private:
+  std::uint32_t index_ = RaySource::kNone;
+  glm::dmat3 linear_{1.0};
+};
+
 }  // namespace
 
 std::optional<Bounds> shapeBounds(scene::ObjectKind kind, const glm::dmat4& m) {
@@ -214,6 +232,7 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
   const RaySource fromEye[kPacket] = {};
   Ray left[kPacket];
   int leftAt[kPacket];
+  LastHitLinear linear;
   for (int first = 0; first < count; first += kPacket) {
     int n = std::min(kPacket, count - first);
     int leftCount = 0;
@@ -241,7 +260,7 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
       if (best == RaySource::kNone) {
         out[k].reset();
       } else {
-        hitOn(best, ray, bestCandidate, out[k].emplace());
+        hitOn(best, ray, bestCandidate, linear.of(best, objects_[best]), out[k].emplace());
       }
     }
     if (leftCount == 0) continue;
@@ -306,6 +325,11 @@ void RenderScene::closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int co
 }
 
 void RenderScene::hitOn(std::uint32_t index, const Ray& ray, const Candidate& c, Hit& hit) const {
+  hitOn(index, ray, c, objects_[index].toWorldLinear(), hit);
+}
+
+void RenderScene::hitOn(std::uint32_t index, const Ray& ray, const Candidate& c,
+                        const glm::dmat3& m, Hit& hit) const {
   const RenderObject& object = objects_[index];
   glm::dvec3 o = object.toLocalPoint(ray.origin);
   glm::dvec3 d = object.toLocal * ray.direction;
@@ -320,7 +344,6 @@ void RenderScene::hitOn(std::uint32_t index, const Ray& ray, const Candidate& c,
   hit.object = index;
   // m * (point, 1) as glm's dmat4 product adds it up: the first two
   // columns' products, then the third's with the translation (times 1).
-  const glm::dmat3 m = object.toWorldLinear();
   const glm::dvec3& translation = object.translation;
   hit.point = (m[0] * s.point.x + m[1] * s.point.y) + (m[2] * s.point.z + translation);
   for (int r = 0; r < 3; ++r) {
@@ -366,6 +389,7 @@ std::optional<Hit> RenderScene::closestHit(const Ray& ray, const RaySource& sour
 void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int count,
                               std::optional<Hit>* out, double tMax) const {
   constexpr int kPacket = Bvh::kPacketSize;
+  LastHitLinear linear;
   for (int first = 0; first < count; first += kPacket) {
     int n = std::min(kPacket, count - first);
     const Ray* ray = rays + first;
@@ -396,17 +420,26 @@ void RenderScene::closestHits(const Ray* rays, const RaySource* sources, int cou
       if (best[lane] == RaySource::kNone) {
         out[first + lane].reset();
       } else {
-        hitOn(best[lane], ray[lane], bestCandidate[lane], out[first + lane].emplace());
+        hitOn(best[lane], ray[lane], bestCandidate[lane],
+              linear.of(best[lane], objects_[best[lane]]), out[first + lane].emplace());
       }
     }
   }
 }
 
-std::optional<Hit> RenderScene::hitOnObject(std::uint32_t object, const Ray& ray,
-                                            const RaySource& source, double tMax) const {
-  std::optional<Candidate> c = intersectObject(object, ray, source, tMax);
-  if (!c) return std::nullopt;
-  return hitOn(object, ray, *c);
+void RenderScene::hitsOnObjects(const std::uint32_t* objects, const Ray* rays, const double* tMaxes,
+                                int count, std::optional<Hit>* out) const {
+  LastHitLinear linear;
+  for (int k = 0; k < count; ++k) {
+    std::uint32_t object = objects[k];
+    std::optional<Candidate> c;
+    if (object != RaySource::kNone) c = intersectObject(object, rays[k], RaySource{}, tMaxes[k]);
+    if (!c) {
+      out[k].reset();
+    } else {
+      hitOn(object, rays[k], *c, linear.of(object, objects_[object]), out[k].emplace());
+    }
+  }
 }
 
 std::optional<Hit> RenderScene::closestHitBruteForce(const Ray& ray, const RaySource& source,

@@ -252,11 +252,13 @@ class RenderScene {
   void closestHitsFromEye(const EyeGrid& eye, const Ray* rays, int count,
                           std::optional<Hit>* out) const;
 
-  // The hit that closestHit makes where `ray` meets object `object` nearer
-  // than tMax, or none: for a search made by other means (another tracer's
-  // hierarchy) to finish with the renderer's own hit, bit for bit.
-  std::optional<Hit> hitOnObject(std::uint32_t object, const Ray& ray, const RaySource& source,
-                                 double tMax) const;
+  // For `count` rays that leave no surface, the hit that closestHit makes
+  // where rays[k] meets object objects[k] nearer than tMaxes[k], or none
+  // (also for RaySource::kNone): for a search made by other means (another
+  // tracer's hierarchy) to finish with the renderer's own hits, bit for bit,
+  // as the packet searches make them.
+  void hitsOnObjects(const std::uint32_t* objects, const Ray* rays, const double* tMaxes, int count,
+                     std::optional<Hit>* out) const;
 
   // The same queries without the hierarchy: every object is tested. The
   // reference that the BVH must agree with.
@@ -290,6 +292,10 @@ class RenderScene {
   // into `hit` in place: returned by value, it was copied into an optional
   // with wide loads that waited on the narrow stores that made it.
   void hitOn(std::uint32_t index, const Ray& ray, const Candidate& candidate, Hit& hit) const;
+  // The same with the object's toWorldLinear() given: the searches of many
+  // rays work it out once for consecutive hits on one object.
+  void hitOn(std::uint32_t index, const Ray& ray, const Candidate& candidate,
+             const glm::dmat3& toWorldLinear, Hit& hit) const;
   // The same hit in a new optional.
   std::optional<Hit> hitOn(std::uint32_t index, const Ray& ray, const Candidate& candidate) const {
     std::optional<Hit> hit;

@@ -180,8 +180,9 @@ TEST(Bvh, HitsAreIdenticalToBruteForce) {
 }
 
 // A tracer that finds the closest object by its own search finishes with
-// hitOnObject: the very hit closestHit makes, entering or leaving.
-TEST(RenderScene, HitOnObjectIsClosestHitsHitBitForBit) {
+// hitsOnObjects: the very hits closestHit makes, entering or leaving, each
+// twice in a row (the second from the first's toWorldLinear).
+TEST(RenderScene, HitsOnObjectsAreClosestHitsHitsBitForBit) {
   RandomTransforms random(7);
   scene::Scene s = sceneLookingAt({0, 0, 1}, {0, 0, 0});
   for (int i = 0; i < 300; ++i) {
@@ -191,34 +192,56 @@ TEST(RenderScene, HitOnObjectIsClosestHitsHitBitForBit) {
          translate(random.uniform(-20, 20), random.uniform(-20, 20), random.uniform(-20, 20))}));
   }
   RenderScene compiled(s);
-  auto bits = [](const Hit& h) {
-    return std::vector<double>{h.t,
-                               h.point.x,
-                               h.point.y,
-                               h.point.z,
-                               h.pointError.x,
-                               h.pointError.y,
-                               h.pointError.z,
-                               h.normal.x,
-                               h.normal.y,
-                               h.normal.z};
+  auto sameBits = [](const Hit& a, const Hit& b) {
+    const double x[] = {a.t,
+                        a.point.x,
+                        a.point.y,
+                        a.point.z,
+                        a.pointError.x,
+                        a.pointError.y,
+                        a.pointError.z,
+                        a.normal.x,
+                        a.normal.y,
+                        a.normal.z};
+    const double y[] = {b.t,
+                        b.point.x,
+                        b.point.y,
+                        b.point.z,
+                        b.pointError.x,
+                        b.pointError.y,
+                        b.pointError.z,
+                        b.normal.x,
+                        b.normal.y,
+                        b.normal.z};
+    return std::memcmp(x, y, sizeof x) == 0 && a.object == b.object && a.fromInside == b.fromInside;
   };
-  int hits = 0, fromInside = 0;
+  // Every ray twice in a row, in one batch, and a ray with no object.
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<std::optional<Hit>> expected;
+  std::vector<std::uint32_t> objects;
+  std::vector<Ray> rays;
+  std::vector<double> tMaxes;
   for (int r = 0; r < 20000; ++r) {
     Ray ray{{random.uniform(-25, 25), random.uniform(-25, 25), random.uniform(-25, 25)},
             random.direction()};
-    std::optional<Hit> expected = compiled.closestHit(ray, RaySource{});
-    if (!expected) continue;
-    std::optional<Hit> found =
-        compiled.hitOnObject(expected->object, ray, RaySource{},
-                             std::nextafter(expected->t, std::numeric_limits<double>::infinity()));
-    ASSERT_TRUE(found) << "ray " << r;
-    std::vector<double> a = bits(*expected), b = bits(*found);
-    ASSERT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0) << "ray " << r;
-    ASSERT_EQ(found->object, expected->object);
-    ASSERT_EQ(found->fromInside, expected->fromInside);
+    std::optional<Hit> hit = compiled.closestHit(ray, RaySource{});
+    for (int k = 0; k < 2; ++k) {
+      expected.push_back(hit);
+      objects.push_back(hit ? hit->object : RaySource::kNone);
+      rays.push_back(ray);
+      tMaxes.push_back(hit ? std::nextafter(hit->t, infinity) : infinity);
+    }
+  }
+  std::vector<std::optional<Hit>> found(rays.size());
+  compiled.hitsOnObjects(objects.data(), rays.data(), tMaxes.data(), static_cast<int>(rays.size()),
+                         found.data());
+  int hits = 0, fromInside = 0;
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    ASSERT_EQ(found[k].has_value(), expected[k].has_value()) << "ray " << k;
+    if (!expected[k]) continue;
+    ASSERT_TRUE(sameBits(*found[k], *expected[k])) << "ray " << k;
     ++hits;
-    fromInside += expected->fromInside;
+    fromInside += expected[k]->fromInside;
   }
   EXPECT_GT(hits, 1000);
   EXPECT_GT(fromInside, 0);
