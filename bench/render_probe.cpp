@@ -10,7 +10,8 @@
 //       the objects added in batches of 65,536 as a streaming reader hands
 //       them over, then finish), and
 //       rendering (render::renderImage). Prints "key: value" lines:
-//       file_bytes, objects, parse_s, build_s (add_s + finish_s),
+//       file_bytes, objects, parse_s, build_s (add_s + finish_s; finish_s's
+//       stages finish_bvh_s, finish_order_s, finish_grids_s),
 //       records_bytes_per_object, bvh_bytes_per_object,
 //       grids_bytes_per_object (RenderScene::memory), build_peak_bytes_per_object
 //       (the most the build held beyond what was held before it, from
@@ -108,6 +109,9 @@ render::RenderScene buildInBatches(const scene::Scene& scene, int threads) {
   render::RenderSceneMemory memory = compiled.memory();
   std::printf("add_s: %.6f\n", add);
   std::printf("finish_s: %.6f\n", finish);
+  std::printf("finish_bvh_s: %.6f\n", builder.stageSeconds().bvh);
+  std::printf("finish_order_s: %.6f\n", builder.stageSeconds().order);
+  std::printf("finish_grids_s: %.6f\n", builder.stageSeconds().grids);
   std::printf("build_s: %.6f\n", add + finish);
   std::printf("records_bytes_per_object: %.1f\n", memory.records / objects);
   std::printf("bvh_bytes_per_object: %.1f\n", memory.bvh / objects);

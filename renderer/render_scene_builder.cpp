@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -11,6 +12,10 @@
 namespace render {
 
 namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // A material's properties but its colour, bit for bit.
 std::array<std::uint64_t, 7> propertyBits(const scene::Material& m) {
@@ -133,6 +138,7 @@ RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGri
   // in memory (in a file's order, which may be random, the render of
   // 1,000,000 objects took a third longer). The BVH is built over their
   // boxes as it reads them, item k the k-th bounded object added.
+  auto start = std::chrono::steady_clock::now();
   std::vector<std::uint32_t> order;
   allocateHere(order, count);
   order.resize(count);
@@ -150,8 +156,11 @@ RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGri
     for (std::uint32_t& item : byPlace) item = order[planeCount + item];
     std::copy(byPlace.begin(), byPlace.end(), order.begin() + planeCount);
   }
+  stageSeconds_.bvh = secondsSince(start);
+  start = std::chrono::steady_clock::now();
   // Step 2: the records laid out so, in place.
   permute(order);
+  stageSeconds_.order = secondsSince(start);
   scene.objects_ = std::move(objects_);
   scene.colours_ = std::move(colours_);
   scene.materials_ = std::move(materials_);
@@ -177,7 +186,9 @@ RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGri
   // "Direction grids"); not for a scene of planes alone, which has nothing
   // to list.
   if (lightGrids && boundedCount >= RenderScene::kMinLightGridObjects) {
+    start = std::chrono::steady_clock::now();
     scene.buildLightGrids(threads_);
+    stageSeconds_.grids = secondsSince(start);
   }
   return scene;
 }
