@@ -141,6 +141,72 @@ Bins manyItemsBinsInParts(BuildItem* items, std::uint32_t begin, std::uint32_t e
   return bins;
 }
 
+// From this many items a split partitions them in blocks of
+// kPartitionBlock, side by side on the threads it has, then swaps the items
+// left on the wrong side, also side by side. The blocks' bounds do not
+// depend on the threads, so neither does the order the items are left in,
+// nor the tree.
+constexpr std::uint32_t kPartitionBlock = std::uint32_t{1} << 16;
+constexpr std::uint32_t kMinItemsPartitionedInBlocks = std::uint32_t{1} << 18;
+
+// A stretch of items on the wrong side of a split, one block's.
+struct Stretch {
+  std::uint32_t at;
+  std::uint32_t length;
+};
+
+// What partitionInBlocks holds a block: its left count, its two stretches
+// and its swaps (at most two a block), and runParts' exception slots.
+constexpr std::uint64_t kPartitionBytesPerBlock = sizeof(std::uint32_t) + 2 * sizeof(Stretch) +
+                                                  2 * 2 * sizeof(Stretch) +
+                                                  2 * sizeof(std::exception_ptr);
+
+// Items [begin, end) with those of bins up to `last` first, on `threads`
+// threads; returns where the others begin.
+std::uint32_t partitionInBlocks(BuildItem* items, std::uint32_t begin, std::uint32_t end,
+                                std::uint32_t last, int threads) {
+  auto isLeft = [last](const BuildItem& item) { return item.bin <= last; };
+  const std::uint32_t blocks = (end - begin + kPartitionBlock - 1) / kPartitionBlock;
+  auto blockBegin = [&](std::uint32_t b) { return begin + b * kPartitionBlock; };
+  auto blockEnd = [&](std::uint32_t b) { return std::min(end, blockBegin(b) + kPartitionBlock); };
+  std::vector<std::uint32_t> lefts(blocks);
+  runParts(blocks, threads, [&](std::size_t b) {
+    BuildItem* first = items + blockBegin(static_cast<std::uint32_t>(b));
+    lefts[b] = static_cast<std::uint32_t>(
+        std::partition(first, items + blockEnd(static_cast<std::uint32_t>(b)), isLeft) - first);
+  });
+  const std::uint32_t mid = begin + std::accumulate(lefts.begin(), lefts.end(), std::uint32_t{0});
+  // The items of the right before `mid` and those of the left after it, in
+  // place order: the k-th of one list swaps with the k-th of the other.
+  std::vector<Stretch> misplacedRight, misplacedLeft;
+  for (std::uint32_t b = 0; b < blocks; ++b) {
+    const std::uint32_t split = blockBegin(b) + lefts[b];
+    if (split < mid) misplacedRight.push_back({split, std::min(blockEnd(b), mid) - split});
+    const std::uint32_t from = std::max(blockBegin(b), mid);
+    if (from < split) misplacedLeft.push_back({from, split - from});
+  }
+  // Each swap a pair of stretches of one length, cut where either list's
+  // stretch ends.
+  std::vector<std::array<Stretch, 2>> swaps;
+  std::size_t r = 0, l = 0;
+  std::uint32_t doneR = 0, doneL = 0;
+  while (r < misplacedRight.size() && l < misplacedLeft.size()) {
+    const std::uint32_t length =
+        std::min(misplacedRight[r].length - doneR, misplacedLeft[l].length - doneL);
+    swaps.push_back({Stretch{misplacedRight[r].at + doneR, length},
+                     Stretch{misplacedLeft[l].at + doneL, length}});
+    doneR += length;
+    doneL += length;
+    if (doneR == misplacedRight[r].length) ++r, doneR = 0;
+    if (doneL == misplacedLeft[l].length) ++l, doneL = 0;
+  }
+  runParts(swaps.size(), threads, [&](std::size_t k) {
+    BuildItem* a = items + swaps[k][0].at;
+    std::swap_ranges(a, a + swaps[k][0].length, items + swaps[k][1].at);
+  });
+  return mid;
+}
+
 // Below this many items a split sets up only the bins its items fall in:
 // setting up and sweeping all kBins was most of the time of the small
 // splits, and most splits are small.
@@ -267,8 +333,12 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
       // Step 3: the split, and the children's extents, the unions of their
       // bins'.
       std::uint32_t last = static_cast<std::uint32_t>(bins.number[cheapest]);
-      std::partition(items + begin, items + end,
-                     [&](const BuildItem& item) { return item.bin <= last; });
+      if (count >= kMinItemsPartitionedInBlocks) {
+        partitionInBlocks(items, begin, end, last, threads);
+      } else {
+        std::partition(items + begin, items + end,
+                       [&](const BuildItem& item) { return item.bin <= last; });
+      }
       children = {NodeExtent{}, NodeExtent{}};
       for (int j = 0; j < bins.size; ++j) children[j <= cheapest ? 0 : 1].extend(bins.extent[j]);
       return begin + leftCount;
@@ -450,7 +520,12 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
   constexpr std::uint64_t kParallelBytes = kMaxSubtrees * kSubtreeBytes + kLevelBytes +
                                            kRootBinBytes + kMaxBuildThreads * sizeof(std::thread);
   std::uint64_t perBox = kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(BuildItem);
-  return saturatingSum(saturatingProduct(boxes, perBox),
+  // A split partitioning in blocks (one at a time on a thread).
+  std::uint64_t partitionBytes =
+      boxes >= kMinItemsPartitionedInBlocks
+          ? kMaxBuildThreads * (boxes / kPartitionBlock + 1) * kPartitionBytesPerBlock
+          : 0;
+  return saturatingSum(saturatingSum(saturatingProduct(boxes, perBox), partitionBytes),
                        boxes >= kMinParallelBoxes ? kParallelBytes : 0);
 }
 

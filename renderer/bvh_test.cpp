@@ -89,9 +89,11 @@ TEST(BvhBuild, TheTreeIsTheSameWhateverTheThreadCount) {
     // list may hold: the top stops at the budget, the tree stays the same.
     for (int threads : {2, 4, 64}) expectSameTree(one, Bvh(boxes, threads), threads);
   }
-  // Enough boxes that the root bins them on several threads.
+  // Enough boxes that the root bins them on several threads and partitions
+  // them in blocks, side by side.
   std::vector<Bounds> boxes = randomBoxes(300000, 300000);
   Bvh one(boxes, 1);
+  expectWellFormed(one, boxes.size());
   for (int threads : {2, 3}) expectSameTree(one, Bvh(boxes, threads), threads);
 }
 
