@@ -22,7 +22,12 @@
 // every pixel is compared with render::renderObjectIds (one ray at a time):
 // a difference can only be a tie (two objects met at the same distance) or
 // a ray whose float box test misses where the double one meets, and their
-// count is printed.
+// count is printed. The primary rays are timed twice: ids only (Embree's
+// callbacks find distances; sfrender's camera path makes its hits all the
+// same), and like for like, every tracer making each pixel's hit in full
+// (point, error bound, normal) inside its pass, Embree's by the renderer's
+// RenderScene::hitsOnObjects on the closest object it found, every hit
+// compared bit for bit with sfrender's.
 //
 // Shadow rays: from every primary hit toward every light, sfrender's
 // render::Tracer::shadowed (its light grids, shadowCell, the occluder hint)

@@ -93,7 +93,7 @@ if has_part embree; then
         "(render::PinholeCamera through the pixel centres) of \`sfgen --layout floor -n N -s 1\`," \
         "and the shadow rays from their hits toward each light, in one process: sfrender's own" \
         "camera path (\`render::traceCameraRays\`: the camera's rays, the eye's direction grid" \
-        "where it pays, packets of 8 down its BVH, tiles in turn; each hit made in full, point," \
+        "where it pays, packets of 4 down its BVH, tiles in turn; each hit made in full, point," \
         "error bound and normal) and shadow rays (\`render::Tracer::shadowed\`: the lights' grids," \
         "\`shadowCell\`, the occluder hint), against Embree 3 one ray at a time (\`rtcIntersect1\`," \
         "\`rtcOccluded1\`) and in packets of 4 and 8 (2x2 and 4x2 pixels; shadow rays of" \
@@ -128,7 +128,6 @@ if has_part embree; then
         done
         echo "$row $diffs |"
       done
-      echo
       echo
       echo "| objects | eye grid | primary ids: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | shadow: sfrender | Embree 1 / 4 / 8 | sfrender / Embree 8 | 1 thread, CPU | differing |"
       echo "|---|---|---|---|---|---|---|---|---|---|---|"
