@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <memory>
 #include <optional>
+#include <stop_token>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -202,6 +203,9 @@ class RenderJob {
   void chooseTarget();
   MaybeFailure targetRefusal();
   MaybeFailure resourceRefusal();
+  std::optional<std::string> memoryRefusal(std::uint64_t objects, std::uint64_t lights,
+                                           bool recordsMade) const;
+  void reserveObjects(std::uint64_t objects);
   MaybeFailure chooseRegion();
   MaybeFailure writeImage(const render::Image& image, const render::RenderStatistics& statistics);
 
@@ -217,7 +221,19 @@ class RenderJob {
   std::optional<render::RenderSceneBuilder> builder_;
   std::uint64_t objectCount_ = 0;
   scene::StreamReadMemory readMemory_;
+  // Stops the read once its first window shows that the records cannot fit:
+  // refused then, not killed half-way through a file of millions of objects.
+  std::stop_source readStop_;
+  std::optional<std::string> readRefusal_;
 };
+
+void RenderJob::reserveObjects(std::uint64_t objects) {
+  if ((readRefusal_ = memoryRefusal(objects, 0, false))) {
+    readStop_.request_stop();
+    return;
+  }
+  builder_->reserve(objects);
+}
 
 void RenderJob::addObjects(std::span<const scene::Object> objects) {
   builder_->add(objects);
@@ -243,9 +259,11 @@ MaybeFailure RenderJob::readScene() {
   read.threads = static_cast<unsigned>(renderThreadCount(o_.settings.threads));
   if (isStandardStream(o_.input)) return readStandardInput(shown, read);
   SourceExcerpts sources;
+  read.stop = readStop_.get_token();
   scene::StreamReadResult streamed = scene::streamSceneFile(
       o_.input, read, [this](std::span<const scene::Object> batch) { addObjects(batch); }, &sources,
-      [this](std::uint64_t objects) { builder_->reserve(objects); });
+      [this](std::uint64_t objects) { reserveObjects(objects); });
+  if (readRefusal_) return toolFailure(ExitCode::OutOfResources, *readRefusal_);
   readMemory_ = streamed.memory;
   // The text and model the read freed go back to the system before the
   // BVH and the image take their room.
@@ -389,21 +407,26 @@ MaybeFailure RenderJob::targetRefusal() {
 
 // Whether the render fits in memory and its threads start: refused before
 // it starts rather than killed, or aborted, half-way.
-MaybeFailure RenderJob::resourceRefusal() {
-  render::RenderMemoryEstimate estimate =
-      render::estimateRenderMemory(objectCount_, job_.scene.lights.size(), imageWidth(settings_),
-                                   imageHeight(settings_), settings_.coverage);
-  // The records were made as the objects were read: the free memory has
-  // counted them already.
-  estimate.scene = 0;
+// Why a render of `objects` objects and `lights` lights does not fit in the
+// free memory, if it does not; `recordsMade` where the records are made
+// already, so that the free memory has counted them.
+std::optional<std::string> RenderJob::memoryRefusal(std::uint64_t objects, std::uint64_t lights,
+                                                    bool recordsMade) const {
+  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
+      objects, lights, imageWidth(settings_), imageHeight(settings_), settings_.coverage);
+  if (recordsMade) estimate.scene = 0;
   if (settings_.adaptiveThreshold > 0) {
     estimate.image = render::saturatingSum(
         estimate.image, render::adaptiveSamplingBytes(imageWidth(settings_), imageHeight(settings_),
                                                       renderThreadCount(settings_.threads),
                                                       render::kRenderTileSize));
   }
+  return render::renderMemoryRefusal(estimate, memory_ ? memory_() : std::nullopt);
+}
+
+MaybeFailure RenderJob::resourceRefusal() {
   if (std::optional<std::string> refusal =
-          render::renderMemoryRefusal(estimate, memory_ ? memory_() : std::nullopt)) {
+          memoryRefusal(objectCount_, job_.scene.lights.size(), true)) {
     return toolFailure(ExitCode::OutOfResources, *refusal);
   }
   int threads = renderThreadCount(settings_.threads);

@@ -226,6 +226,32 @@ TEST_F(ToolTest, SfrenderRefusesARenderThatDoesNotFitInMemory) {
             0);
 }
 
+// A scene file of many windows whose records cannot fit is refused once its
+// first window has told how many objects it holds, not after it is read.
+TEST_F(ToolTest, SfrenderRefusesAStreamedSceneThatCannotFitBeforeReadingItAll) {
+  std::string text = kValidScene;
+  for (int i = 0; i < 80000; ++i) {
+    text += "SPHERE\n1 0 0\n1 0 0 " + std::to_string(i % 100) + "\n0 1 0 0\n0 0 1 " +
+            std::to_string(i / 100) + "\n0 0 0 1\n";
+  }
+  std::string scene = write("many.sf", text);
+  std::string out = path("many.ppm");
+  std::vector<std::string> args = {"sfrender", scene, "-o", out,         "--width", "4",
+                                   "--height", "4",   "-v", "--threads", "1"};
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  auto eightMebibytes = [] { return std::optional<std::uint64_t>(std::uint64_t{8} << 20); };
+  std::istringstream none;
+  EXPECT_EQ(runSfrender(static_cast<int>(argv.size()), argv.data(), ToolStreams(none, out_, err_),
+                        eightMebibytes),
+            toInt(ExitCode::OutOfResources));
+  EXPECT_NE(err_.str().find("but only 8 MiB of memory is available"), std::string::npos)
+      << err_.str();
+  // The read stopped at its first window: it never said what it read.
+  EXPECT_EQ(err_.str().find("sfrender: read "), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(ToolTest, AnOutputFileWithNoImageExtensionIsReportedWhereItStands) {
   for (std::string name : {"picture", "picture.xyz", "picture.txt"}) {
     std::string file = write("n.txt", "OUTPUT_FILE " + name + kInstructions.substr(19));
