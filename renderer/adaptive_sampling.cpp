@@ -264,8 +264,10 @@ std::uint64_t adaptiveSamplingBytes(int width, int height, int threads, int tile
   // samples while they are traced or interpolated.
   std::uint64_t perThread =
       tileCorners * (2 * sizeof(SampleColour) + sizeof(SampleLook) + 2 * sizeof(int));
+  // And the anchors' blocks, which decide where corners are interpolated.
   return saturatingSum(
-      TileEdgeCorners::bytesFor(width, height, tileSize),
+      saturatingSum(TileEdgeCorners::bytesFor(width, height, tileSize),
+                    AnchorBlocks::bytesFor(width, height)),
       saturatingProduct(static_cast<std::uint64_t>(std::max(1, threads)), perThread));
 }
 

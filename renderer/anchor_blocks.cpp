@@ -19,6 +19,11 @@ constexpr double kNearEyePlane = 1e-9;
 
 }  // namespace
 
+std::uint64_t AnchorBlocks::bytesFor(int fullWidth, int fullHeight) {
+  return static_cast<std::uint64_t>(std::max(1, (fullWidth + 1) / 2)) *
+         static_cast<std::uint64_t>(std::max(1, (fullHeight + 1) / 2)) * sizeof(Block);
+}
+
 AnchorBlocks::AnchorBlocks(const RenderScene& scene, const PinholeCamera& camera, int fullWidth,
                            int fullHeight)
     : columns_(std::max(1, (fullWidth + 1) / 2)), rows_(std::max(1, (fullHeight + 1) / 2)) {

@@ -23,6 +23,9 @@ class AnchorBlocks {
   // Whether no bounded object but `object` (RaySource::kNone: none at all)
   // reaches the square or side between the anchors of corner (x, y), a
   // corner with an odd coordinate inside the image.
+  // What the blocks of a fullWidth x fullHeight image take, in bytes.
+  static std::uint64_t bytesFor(int fullWidth, int fullHeight);
+
   bool onlyShows(int x, int y, std::uint32_t object) const {
     int i = (x - (x & 1)) / 2, j = (y - (y & 1)) / 2;
     // A corner on a block's side: the block below or right of that side

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/adaptive_sampling.h"
 #include "renderer/test_scenes.h"
 
 namespace render {
@@ -46,6 +47,19 @@ TEST(AnchorBlocks, ABoxAcrossTheEyePlaneReachesEveryBlock) {
   EXPECT_FALSE(blocks.onlyShows(63, 46, RaySource::kNone));
   // Two objects at the centre: neither alone.
   for (std::uint32_t object : {0u, 1u}) EXPECT_FALSE(blocks.onlyShows(33, 24, object));
+}
+
+// A render's memory estimate counts the blocks: one for every 2 x 2 pixels,
+// the odd row and column included.
+TEST(AnchorBlocks, TheirBytesAreInTheAdaptiveSamplingEstimate) {
+  EXPECT_EQ(AnchorBlocks::bytesFor(1920, 1080), std::uint64_t{960} * 540 * 8);
+  EXPECT_EQ(AnchorBlocks::bytesFor(5, 3), std::uint64_t{3} * 2 * 8);
+  // The estimate less a thread's share (what a second thread adds) and the
+  // tiles' edge corners is the blocks'.
+  std::uint64_t oneThread = adaptiveSamplingBytes(1920, 1080, 1, 32);
+  std::uint64_t perThread = adaptiveSamplingBytes(1920, 1080, 2, 32) - oneThread;
+  EXPECT_EQ(oneThread - perThread - TileEdgeCorners::bytesFor(1920, 1080, 32),
+            AnchorBlocks::bytesFor(1920, 1080));
 }
 
 }  // namespace
