@@ -38,14 +38,17 @@ void expectSameRecords(const RenderScene& a, const RenderScene& b) {
     ASSERT_EQ(a.linearToWorld(r), b.linearToWorld(r)) << "object " << r;
   }
   ASSERT_EQ(a.bvh().nodes().size(), b.bvh().nodes().size());
-  ASSERT_EQ(0, std::memcmp(a.bvh().nodes().data(), b.bvh().nodes().data(),
-                           a.bvh().nodes().size() * sizeof(BvhNode)));
+  // Node by node: an empty scene's nodes have no storage to compare.
+  for (std::size_t n = 0; n < a.bvh().nodes().size(); ++n) {
+    ASSERT_EQ(0, std::memcmp(&a.bvh().nodes()[n], &b.bvh().nodes()[n], sizeof(BvhNode)))
+        << "node " << n;
+  }
   ASSERT_EQ(a.bvh().items(), b.bvh().items());
   EXPECT_EQ(a.hasTransparency(), b.hasTransparency());
 }
 
 TEST(RenderSceneBuilder, BatchesMakeTheSceneBuiltWhole) {
-  Random random(45);
+  Random random(11);
   // Past the sizes at which records and the BVH are built in parts.
   for (int count : {0, 1, 7, 300, 20000}) {
     scene::Scene s = randomScene(random, count);
