@@ -290,6 +290,17 @@ TEST(AdaptiveSampling, EveryPixelCornerIsTracedOnce) {
   }
 }
 
+// The RMSE of `image` against `reference`, each value clamped to [0, 1] as
+// a picture shows it.
+double clampedRmse(const Image& image, const Image& reference) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < image.rgb.size(); ++k) {
+    double d = std::clamp(image.rgb[k], 0.0f, 1.0f) - std::clamp(reference.rgb[k], 0.0f, 1.0f);
+    sum += d * d;
+  }
+  return std::sqrt(sum / static_cast<double>(image.rgb.size()));
+}
+
 // Against a 256-spp reference, adaptive sampling at 16 is closer than
 // uniform 4 with fewer samples, and at 64 closer than uniform 16 (and than
 // adaptive at 16) with fewer samples. On the default scene at 160x120 the
@@ -302,14 +313,7 @@ TEST(AdaptiveSampling, ErrorFallsWithDepthAtAFractionOfTheSamples) {
   settings.height = 120;
   settings.seed = 11;
   Image reference = renderImage(compiled, settings);
-  auto rmse = [&](const Image& image) {
-    double sum = 0.0;
-    for (std::size_t k = 0; k < image.rgb.size(); ++k) {
-      double d = std::clamp(image.rgb[k], 0.0f, 1.0f) - std::clamp(reference.rgb[k], 0.0f, 1.0f);
-      sum += d * d;
-    }
-    return std::sqrt(sum / static_cast<double>(image.rgb.size()));
-  };
+  auto rmse = [&](const Image& image) { return clampedRmse(image, reference); };
   auto render = [&](int spp, double threshold, RenderStatistics* statistics) {
     RenderSettings s = settings;
     s.samplesPerPixel = spp;
@@ -466,14 +470,7 @@ TEST(AdaptiveSampling, InterpolatedCornersGiveLessErrorForFewerSamples) {
   settings.width = 160;
   settings.height = 120;
   Image reference = renderImage(compiled, settings);
-  auto rmse = [&](const Image& image) {
-    double sum = 0.0;
-    for (std::size_t k = 0; k < image.rgb.size(); ++k) {
-      double d = std::clamp(image.rgb[k], 0.0f, 1.0f) - std::clamp(reference.rgb[k], 0.0f, 1.0f);
-      sum += d * d;
-    }
-    return std::sqrt(sum / static_cast<double>(image.rgb.size()));
-  };
+  auto rmse = [&](const Image& image) { return clampedRmse(image, reference); };
   settings.samplesPerPixel = 16;
   settings.adaptiveThreshold = 0.1;
   RenderStatistics traced, interpolated;
