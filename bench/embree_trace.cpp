@@ -85,6 +85,23 @@ double threadSeconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// The float ray Embree steers by, from the renderer's double one, its
+// segment ending at `tfar`.
+void fillFloatRay(RTCRay& r, const render::Ray& ray, float tfar, unsigned id) {
+  r.org_x = static_cast<float>(ray.origin.x);
+  r.org_y = static_cast<float>(ray.origin.y);
+  r.org_z = static_cast<float>(ray.origin.z);
+  r.dir_x = static_cast<float>(ray.direction.x);
+  r.dir_y = static_cast<float>(ray.direction.y);
+  r.dir_z = static_cast<float>(ray.direction.z);
+  r.tnear = 0.0f;
+  r.tfar = tfar;
+  r.time = 0.0f;
+  r.mask = 0xFFFFFFFF;
+  r.id = id;
+  r.flags = 0;
+}
+
 // One pixel's ray, its nearest plane hit first: Embree then searches only
 // nearer than that.
 struct Pixel {
@@ -197,19 +214,10 @@ class Tracers {
 
  private:
   static void fill(RTCRay& r, RTCHit& h, const Pixel& p, unsigned id) {
-    r.org_x = static_cast<float>(p.ray.origin.x);
-    r.org_y = static_cast<float>(p.ray.origin.y);
-    r.org_z = static_cast<float>(p.ray.origin.z);
-    r.dir_x = static_cast<float>(p.ray.direction.x);
-    r.dir_y = static_cast<float>(p.ray.direction.y);
-    r.dir_z = static_cast<float>(p.ray.direction.z);
-    r.tnear = 0.0f;
-    r.tfar = std::isinf(p.nearest) ? std::numeric_limits<float>::infinity()
-                                   : render::floatAtOrAbove(p.nearest);
-    r.time = 0.0f;
-    r.mask = 0xFFFFFFFF;
-    r.id = id;
-    r.flags = 0;
+    fillFloatRay(r, p.ray,
+                 std::isinf(p.nearest) ? std::numeric_limits<float>::infinity()
+                                       : render::floatAtOrAbove(p.nearest),
+                 id);
     h.geomID = RTC_INVALID_GEOMETRY_ID;
     h.instID[0] = RTC_INVALID_GEOMETRY_ID;
   }
@@ -395,18 +403,7 @@ class ShadowTracers {
 
   // The float ray Embree steers by; its segment ends at tMax rounded up.
   static void fill(RTCRay& r, const ShadowQuery& q, unsigned id) {
-    r.org_x = static_cast<float>(q.ray.origin.x);
-    r.org_y = static_cast<float>(q.ray.origin.y);
-    r.org_z = static_cast<float>(q.ray.origin.z);
-    r.dir_x = static_cast<float>(q.ray.direction.x);
-    r.dir_y = static_cast<float>(q.ray.direction.y);
-    r.dir_z = static_cast<float>(q.ray.direction.z);
-    r.tnear = 0.0f;
-    r.tfar = render::floatAtOrAbove(q.tMax);
-    r.time = 0.0f;
-    r.mask = 0xFFFFFFFF;
-    r.id = id;
-    r.flags = 0;
+    fillFloatRay(r, q.ray, render::floatAtOrAbove(q.tMax), id);
   }
   template <typename RayN>
   static void fillN(RayN& rays, int* valid, int width, const ShadowQuery* batch, int n) {
