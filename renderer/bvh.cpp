@@ -19,11 +19,10 @@ namespace render {
 namespace {
 
 constexpr int kBins = 16;
-// One object a leaf: a leaf's box then bounds its object alone, so the box
-// test, in two lanes of SSE2 with its sibling, culls before the exact object
-// test (several times its cost) runs; leaves of up to 4 objects made 8% more
-// instructions on floor-1000 (docs/PERFORMANCE.md, "Where the time goes").
-constexpr std::uint32_t kMaxLeafItems = 1;
+constexpr std::uint32_t kMaxLeafItems = Bvh::kMaxLeafItems;
+// A split's cost beside its objects' tests (each 1), per unit of area: the
+// two children's box tests at their parent.
+constexpr double kNodeCost = 0.5;
 // Past this depth only balanced median splits are made, which keeps the
 // tree within the traversal stack (Bvh::kStackSize) for any item count.
 constexpr int kMaxDepth = 64;
@@ -31,16 +30,27 @@ constexpr int kMaxDepth = 64;
 // An item as the build moves it: its box beside its index, so that each
 // pass over a node's items reads memory in order. With the indices alone,
 // every pass gathered boxes from all over the list, and at 1,000,000 boxes
-// the cache misses of the top levels made most of the build's time.
+// the cache misses of the top levels made most of the build's time. The box
+// is in float, rounded outward as the nodes' are (every node's box, a union
+// of its items', comes out the same): 32 bytes, not 56.
 struct BuildItem {
-  Bounds box;
+  float planes[6];
   std::uint32_t index;
   // The item's bin in its node's split, set by the binning pass for the
-  // partition after it, which would work it out again: in the padding, so
-  // the same 56 bytes.
+  // partition after it, which would work it out again.
   std::uint32_t bin;
-  // Bounds::centre's value, bit for bit.
-  double centre(int axis) const { return 0.5 * (box.lo[axis] + box.hi[axis]); }
+  Bounds box() const {
+    return Bounds{glm::dvec3(planes[0], planes[1], planes[2]),
+                  glm::dvec3(planes[3], planes[4], planes[5])};
+  }
+  // Bounds::centre's value of box(), bit for bit, but 0 where that is NaN
+  // (a box from -infinity to infinity, of planes past the float range),
+  // so that the centres order.
+  double centre(int axis) const {
+    double c = 0.5 * (static_cast<double>(planes[axis]) + static_cast<double>(planes[3 + axis]));
+    return c == c ? c : 0.0;
+  }
+  glm::dvec3 centre() const { return glm::dvec3(centre(0), centre(1), centre(2)); }
 };
 
 // What a node's split works with: the items and the nodes being written,
@@ -59,8 +69,8 @@ struct NodeExtent {
   Bounds bounds;
   Bounds centres;
   void extend(const BuildItem& item) {
-    bounds.extend(item.box);
-    centres.extend(item.box.centre());
+    bounds.extend(item.box());
+    centres.extend(item.centre());
   }
   void extend(const NodeExtent& other) {
     bounds.extend(other.bounds);
@@ -103,11 +113,11 @@ Bins manyItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, con
   bins.extent.fill(NodeExtent{});
   bins.count.fill(0);
   for (std::uint32_t i = begin; i < end; ++i) {
-    glm::dvec3 centre = items[i].box.centre();
+    glm::dvec3 centre = items[i].centre();
     int b = rule(centre);
     items[i].bin = static_cast<std::uint32_t>(b);
     ++bins.count[b];
-    bins.extent[b].bounds.extend(items[i].box);
+    bins.extent[b].bounds.extend(items[i].box());
     bins.extent[b].centres.extend(centre);
   }
   return bins;
@@ -217,7 +227,7 @@ constexpr std::uint32_t kFewItems = 16;
 Bins fewItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, const BinRule& rule) {
   std::uint32_t held = 0;
   for (std::uint32_t i = begin; i < end; ++i) {
-    int b = rule(items[i].box.centre());
+    int b = rule(items[i].centre());
     items[i].bin = static_cast<std::uint32_t>(b);
     held |= 1u << b;
   }
@@ -246,7 +256,8 @@ Bins fewItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, cons
 // item prices the same as the split after the bin before it, so leaving
 // the bin out changes neither the price of any split nor which is first of
 // the cheapest. Bin 0, which holds the lowest centre, is never left out.
-int cheapestSplit(const Bins& bins) {
+// Returns the bin and the price.
+std::pair<int, double> cheapestSplit(const Bins& bins) {
   // Right to left: what the bins after each one cost.
   std::array<double, kBins> rightCost;
   Bounds right;
@@ -269,7 +280,14 @@ int cheapestSplit(const Bins& bins) {
       least = cost;
     }
   }
-  return cheapest;
+  return {cheapest, least};
+}
+
+// Whether `count` items of a node of surface area `area` cost less as a
+// leaf than split at `splitCost` (the children's counts times their areas):
+// the surface area heuristic with a leaf cost. Equal costs make the leaf.
+bool leafIsCheaper(std::uint32_t count, double area, double splitCost) {
+  return count <= kMaxLeafItems && count * area <= kNodeCost * area + splitCost;
 }
 
 // A node's box: its bounds rounded outward to floats.
@@ -281,6 +299,7 @@ void writeLeaf(BvhNode& node, std::uint32_t begin, std::uint32_t count, const Bo
   writeBox(node, bounds);
   node.offset = begin;
   node.count = static_cast<std::uint16_t>(count);
+  node.axis = 0;
 }
 
 // Fills in the node over items [begin, end), of the given extent: its box,
@@ -293,7 +312,7 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
   BuildItem* items = in.items;
   const Bounds& centreBounds = extentIn.centres;
   std::uint32_t count = end - begin;
-  if ((count <= kMaxLeafItems || depth >= kMaxDepth) && count <= 0xFFFF) {
+  if (depth >= kMaxDepth && count <= 0xFFFF) {
     writeLeaf(node, begin, count, extentIn.bounds);
     return std::nullopt;
   }
@@ -309,9 +328,14 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
   if (count == 2) {
     // What the bins below give two items, without them (two in five of
     // the splits, where the bins' set-up was most of the work): whatever the
-    // split, the cost is the same, so the item with the lower centre goes
-    // first, and equal centres keep their order, as the median's sort of
-    // two does.
+    // split, the cost is the same (the two apart), so unless a leaf is
+    // cheaper, the item with the lower centre goes first, and equal centres
+    // keep their order, as the median's sort of two does.
+    double splitCost = items[begin].box().surfaceArea() + items[begin + 1].box().surfaceArea();
+    if (leafIsCheaper(count, extentIn.bounds.surfaceArea(), splitCost)) {
+      writeLeaf(node, begin, count, extentIn.bounds);
+      return std::nullopt;
+    }
     if (items[begin + 1].centre(axis) < items[begin].centre(axis)) {
       std::swap(items[begin], items[begin + 1]);
     }
@@ -326,10 +350,11 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     BinRule rule{axis, centreBounds.lo[axis], kBins / extent[axis]};
     Bins bins = count <= kFewItems ? fewItemsBins(items, begin, end, rule)
                                    : manyItemsBinsInParts(items, begin, end, rule, threads);
-    int cheapest = cheapestSplit(bins);
+    auto [cheapest, splitCost] = cheapestSplit(bins);
     std::uint32_t leftCount = 0;
     for (int j = 0; j <= cheapest; ++j) leftCount += bins.count[j];
-    if (leftCount != 0 && leftCount != count) {
+    if (leftCount != 0 && leftCount != count &&
+        !leafIsCheaper(count, extentIn.bounds.surfaceArea(), splitCost)) {
       // Step 3: the split, and the children's extents, the unions of their
       // bins'.
       std::uint32_t last = static_cast<std::uint32_t>(bins.number[cheapest]);
@@ -343,6 +368,12 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
       for (int j = 0; j < bins.size; ++j) children[j <= cheapest ? 0 : 1].extend(bins.extent[j]);
       return begin + leftCount;
     }
+  }
+  if (count <= kMaxLeafItems) {
+    // No split of these few (all centres in one bin, or one place) beats
+    // them together.
+    writeLeaf(node, begin, count, extentIn.bounds);
+    return std::nullopt;
   }
   std::nth_element(
       items + begin, items + mid, items + end,
@@ -387,6 +418,8 @@ constexpr std::size_t kMaxSubtrees = Bvh::kTasksPerThread * Bvh::kMaxBuildThread
 // Below this many boxes one thread builds it all: starting threads would
 // cost more than they save.
 constexpr std::uint32_t kMinParallelBoxes = 16384;
+// planTop's ranges hold more than a leaf's items, so each is split.
+static_assert(kMinParallelBoxes / (Bvh::kTasksPerThread * Bvh::kMaxBuildThreads) > kMaxLeafItems);
 
 // A range of items at the top of the tree, waiting for its node at `at`.
 struct TopRange {
@@ -420,7 +453,8 @@ void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& 
         splitting.push_back(r);
       }
     }
-    // More than one item below kMaxDepth: splitNode splits, never a leaf.
+    // More than a leaf's items below kMaxDepth: splitNode splits, never a
+    // leaf.
     mids.assign(splitting.size(), 0);
     children.resize(splitting.size());
     // A split alone on its level (the root's) bins on every thread.
@@ -463,7 +497,7 @@ void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int thr
 }
 
 // Closes the gaps that subtrees taking fewer nodes than kept for them left
-// (only leaves of several items, past kMaxDepth, make them): moves each
+// (leaves of several items make them): moves each
 // stretch of nodes down and renumbers the second children. Returns the
 // node count.
 std::uint32_t closeGaps(std::vector<BvhNode>& nodes, const std::vector<Subtree>& subtrees,
@@ -519,6 +553,9 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
       kMaxBuildThreads * (sizeof(Bins) + sizeof(std::exception_ptr));
   constexpr std::uint64_t kParallelBytes = kMaxSubtrees * kSubtreeBytes + kLevelBytes +
                                            kRootBinBytes + kMaxBuildThreads * sizeof(std::thread);
+  // The nodes' copy when they give back what they did not use (at most one
+  // a box) is made once the list is freed, in no more than its room.
+  static_assert(sizeof(BvhNode) <= sizeof(BuildItem));
   std::uint64_t perBox = kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(BuildItem);
   // A split partitioning in blocks (one at a time on a thread).
   std::uint64_t partitionBytes =
@@ -554,22 +591,32 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
     }
     const std::uint32_t end = static_cast<std::uint32_t>(n * (part + 1) / parts);
     for (std::uint32_t i = static_cast<std::uint32_t>(n * part / parts); i < end; ++i) {
-      items[i] = BuildItem{boxOf(i), i, 0};
-      extents[part].extend(items[i]);
+      BuildItem& item = items[i];
+      floatPlanesAround(boxOf(i), item.planes);
+      item.index = i;
+      item.bin = 0;
+      extents[part].extend(item);
     }
   });
   NodeExtent extent;
   for (const NodeExtent& part : extents) extent.extend(part);
   BuildInput in{items.data(), nodes_.data()};
-  // The items in the order the build left them, which the leaves index.
+  itemCount_ = n;
+  // The boxes' numbers in the order the build left them, which the leaves'
+  // items follow; then the build's list goes, and the nodes give back what
+  // the build kept past those it made.
   auto keepOrder = [&] {
-    items_.resize(n);
+    order_.resize(n);
     runParts(parts, threads, [&](std::size_t part) {
       const std::uint32_t end = static_cast<std::uint32_t>(n * (part + 1) / parts);
       for (std::uint32_t i = static_cast<std::uint32_t>(n * part / parts); i < end; ++i) {
-        items_[i] = items[i].index;
+        order_[i] = items[i].index;
       }
     });
+    std::vector<BuildItem>().swap(items);
+    // The nodes' copy, at most one a box, is never more than the list just
+    // freed (Bvh::bytesFor).
+    if (nodes_.size() <= n) nodes_.shrink_to_fit();
   };
   if (threads == 1) {
     nodes_.resize(buildSubtree(in, 0, 0, n, 0, extent));
@@ -589,15 +636,14 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   keepOrder();
 }
 
-std::vector<std::uint32_t> Bvh::numberItemsByPlace() {
-  std::vector<std::uint32_t> old(items_.size());
-  old.swap(items_);
-  std::iota(items_.begin(), items_.end(), 0u);
-  return old;
+std::vector<std::uint32_t> Bvh::takeOrder() {
+  std::vector<std::uint32_t> order;
+  order.swap(order_);
+  return order;
 }
 
 std::vector<std::uint32_t> Bvh::visitRanks(std::uint8_t signs) const {
-  std::vector<std::uint32_t> rank(items_.size(), 0);
+  std::vector<std::uint32_t> rank(itemCount_, 0);
   if (nodes_.empty()) return rank;
   std::vector<std::uint32_t> stack{0};
   std::uint32_t next = 0;
@@ -606,7 +652,7 @@ std::vector<std::uint32_t> Bvh::visitRanks(std::uint8_t signs) const {
     stack.pop_back();
     const BvhNode& node = nodes_[current];
     if (node.count > 0) {
-      for (std::uint32_t i = 0; i < node.count; ++i) rank[items_[node.offset + i]] = next++;
+      for (std::uint32_t i = 0; i < node.count; ++i) rank[node.offset + i] = next++;
       continue;
     }
     std::uint32_t nearChild = current + 1;

@@ -32,7 +32,7 @@ struct BvhNode {
   // worked out once from its direction's signs (Bvh::NodeRay).
   float planes[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
   // Interior: index of the second child (the first follows this node).
-  // Leaf: index of the first item in `Bvh::items`.
+  // Leaf: its first item (its items are numbered in a row).
   std::uint32_t offset = 0;
   std::uint16_t count = 0;  // items in a leaf; 0 for an interior node
   std::uint8_t axis = 0;    // split axis of an interior node
@@ -45,6 +45,10 @@ class Bvh {
   /// doubles. Packets of 8 pixels of a row were no quicker (floor-1000000,
   /// camera rays).
   static constexpr int kPacketSize = 4;
+  /// The most items a leaf holds where the surface area heuristic (with a
+  /// cost for each node) finds them cheaper together than split: fewer
+  /// nodes than leaves of one, and no list of items.
+  static constexpr std::uint32_t kMaxLeafItems = 4;
   /// Nodes the build reserves for each box, so that the node array never
   /// grows (and never holds twice its size while it moves): a binary tree
   /// whose leaves hold at least one box each has at most 2n - 1 nodes.
@@ -59,31 +63,35 @@ class Bvh {
 
   Bvh() = default;
   /// Builds over `count` boxes, box i being boxOf(i) (called once for each,
-  /// from any of the threads, so that the caller need not hold them all);
-  /// items are the boxes' indices. `threads` threads share the build (0:
-  /// the hardware's count); the tree is the same, node for node and item for
-  /// item, whatever their number.
+  /// from any of the threads, so that the caller need not hold them all).
+  /// Items are numbered by their place in the tree's order: a leaf holds
+  /// items offset to offset + count - 1, and item k stands for box
+  /// order()[k]. `threads` threads share the build (0: the hardware's
+  /// count); the tree is the same, node for node and item for item,
+  /// whatever their number.
   Bvh(std::uint32_t count, const std::function<Bounds(std::uint32_t)>& boxOf, int threads);
   /// The same over boxes held in a list.
   explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
 
   /// The most bytes the build over `boxes` boxes holds at once: the nodes
-  /// as reserved (kNodesPerBox), the items, a copy of each box beside its
-  /// index that it splits (freed when done), and its list of subtrees for
-  /// the threads. The
-  /// boxes themselves are the caller's. Saturates: a hostile count gives
-  /// UINT64_MAX, never a wrapped figure.
+  /// as reserved (kNodesPerBox), a copy of each box beside its index that
+  /// it splits, the boxes' order (the list is freed before the nodes give
+  /// back what they do not use), and its list of subtrees for the threads.
+  /// The boxes themselves are the caller's. Saturates: a hostile count
+  /// gives UINT64_MAX, never a wrapped figure.
   static std::uint64_t bytesFor(std::uint64_t boxes);
 
   bool empty() const { return nodes_.empty(); }
   const std::vector<BvhNode>& nodes() const { return nodes_; }
-  const std::vector<std::uint32_t>& items() const { return items_; }
+  /// The items: one a box.
+  std::uint32_t itemCount() const { return itemCount_; }
+  /// Per item, the box it stands for, until taken.
+  const std::vector<std::uint32_t>& order() const { return order_; }
 
-  /// Numbers the items by their place in items(), so that items()[k] is k
-  /// and each leaf lists the same boxes as before under their new numbers,
-  /// and returns the old numbers in that order (what items() was): for a
-  /// caller that lays out its own records in the BVH's order.
-  std::vector<std::uint32_t> numberItemsByPlace();
+  /// Hands over order(), leaving it empty: for a caller that lays out its
+  /// own records in the BVH's order, so that its records' numbers are the
+  /// items'.
+  std::vector<std::uint32_t> takeOrder();
 
   // Calls visit(item) for every item whose leaf box the ray meets within
   // [0, tMax]; visit returns the new tMax (smaller after a hit, to prune) or
@@ -112,7 +120,7 @@ class Bvh {
       const BvhNode& node = nodes_[current];
       if (node.count > 0) {
         for (std::uint32_t i = 0; i < node.count; ++i) {
-          tMax = visit(items_[node.offset + i]);
+          tMax = visit(node.offset + i);
           if (tMax < 0.0) return;
         }
       } else {
@@ -259,7 +267,8 @@ class Bvh {
   }
 
   std::vector<BvhNode> nodes_;
-  std::vector<std::uint32_t> items_;
+  std::uint32_t itemCount_ = 0;
+  std::vector<std::uint32_t> order_;
 };
 
 }  // namespace render

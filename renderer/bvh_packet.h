@@ -214,7 +214,7 @@ template <bool kWide, typename Visit>
     const BvhNode& node = nodes_[current];
     if (node.count > 0) {
       for (std::uint32_t i = 0; i < node.count && mask != 0; ++i) {
-        std::uint32_t item = items_[node.offset + i];
+        std::uint32_t item = node.offset + i;
         for (int lanes = mask; lanes != 0; lanes &= lanes - 1) {
           int lane = __builtin_ctz(static_cast<unsigned>(lanes));
           double t = visit(lane, item);

@@ -34,22 +34,32 @@ std::vector<Bounds> randomBoxes(std::uint64_t seed, int count) {
   return boxes;
 }
 
-// Boxes farther and farther out along x from the origin, each 20 times as
-// far as the last, all tiny: wherever they end up, the surface area
-// heuristic finds the farthest alone in its last bin and the others in the
-// first, so it peels them off one by one, and the tree reaches the depth
-// past which the build makes leaves of many boxes. Being tiny, they share a
-// subtree with the few boxes about the origin, below the top of the tree.
+// A box rounded outward to floats, as the build keeps it.
+Bounds floatBox(const Bounds& box) {
+  float planes[6];
+  floatPlanesAround(box, planes);
+  return Bounds{glm::dvec3(planes[0], planes[1], planes[2]),
+                glm::dvec3(planes[3], planes[4], planes[5])};
+}
+
+// Boxes farther and farther out along x from the origin, each 17 times as
+// far as the last (more than the bins, so the next falls in the first bin),
+// all tiny, from the smallest floats to the largest: wherever they end up,
+// the surface area heuristic finds the farthest alone in its last bin and
+// the others in the first, so it peels them off one by one, and the tree
+// reaches the depth past which the build makes leaves of many boxes. Being
+// tiny, they share a subtree with the few boxes about the origin, below the
+// top of the tree.
 void addOutliers(std::vector<Bounds>& boxes, int count) {
   for (int i = 0; i < count; ++i) {
-    double x = 1e-200 * std::pow(20.0, i);
+    double x = 1e-44 * std::pow(17.0, i);
     glm::dvec3 half(0.1 * x);
     boxes.push_back(Bounds{glm::dvec3(x, 0, 0) - half, glm::dvec3(x, 0, 0) + half});
   }
 }
 
 void expectSameTree(const Bvh& a, const Bvh& b, int threads) {
-  ASSERT_EQ(a.items(), b.items()) << threads << " threads";
+  ASSERT_EQ(a.order(), b.order()) << threads << " threads";
   ASSERT_EQ(a.nodes().size(), b.nodes().size()) << threads << " threads";
   for (std::size_t i = 0; i < a.nodes().size(); ++i) {
     const BvhNode& x = a.nodes()[i];
@@ -63,14 +73,20 @@ void expectSameTree(const Bvh& a, const Bvh& b, int threads) {
   }
 }
 
-// Every item in exactly one leaf, every second child after its sibling.
+// Every item in exactly one leaf of at most Bvh::kMaxLeafItems (but past
+// the greatest depth), every box one item's, every second child after its
+// sibling.
 void expectWellFormed(const Bvh& bvh, std::size_t boxes) {
   std::vector<int> seen(boxes, 0);
   const std::vector<BvhNode>& nodes = bvh.nodes();
+  ASSERT_EQ(bvh.itemCount(), boxes);
+  std::vector<std::uint32_t> order = bvh.order();
+  std::sort(order.begin(), order.end());
+  for (std::size_t item = 0; item < boxes; ++item) ASSERT_EQ(order[item], item);
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const BvhNode& node = nodes[i];
     if (node.count > 0) {
-      for (std::uint32_t k = 0; k < node.count; ++k) ++seen[bvh.items()[node.offset + k]];
+      for (std::uint32_t k = 0; k < node.count; ++k) ++seen[node.offset + k];
     } else {
       ASSERT_GT(node.offset, i + 1);
       ASSERT_LT(node.offset, nodes.size());
@@ -102,11 +118,11 @@ TEST(BvhBuild, TheTreeIsTheSameWhateverTheThreadCount) {
 // and the second children renumbered, to the one-thread tree exactly.
 TEST(BvhBuild, DeepTreesWithLeavesOfManyBoxesAreTheSameWhateverTheThreadCount) {
   std::vector<Bounds> boxes = randomBoxes(7, 30000);
-  addOutliers(boxes, 90);
+  addOutliers(boxes, 67);
   Bvh one(boxes, 1);
   expectWellFormed(one, boxes.size());
   bool manyInALeaf = false;
-  for (const BvhNode& node : one.nodes()) manyInALeaf |= node.count > 1;
+  for (const BvhNode& node : one.nodes()) manyInALeaf |= node.count > Bvh::kMaxLeafItems;
   ASSERT_TRUE(manyInALeaf) << "the scene no longer reaches the greatest depth";
   EXPECT_LT(one.nodes().size(), 2 * boxes.size() - 1);
   for (int threads : {2, 3, 4}) expectSameTree(one, Bvh(boxes, threads), threads);
@@ -131,22 +147,22 @@ TEST(BvhBuild, BoxesMadeOnTheFlyBuildTheSameTree) {
   }
 }
 
-// A node over two items splits them on the widest axis of their centres
-// (the lowest on a tie), the lower centre first and equal centres in
-// their order, as the surface area heuristic's bins and the median's sort
-// order them.
+// A node over two items that is split (these are, being far apart for
+// their size) splits them on the widest axis of their centres (the lowest
+// on a tie), the lower centre first and equal centres in their order, as
+// the surface area heuristic's bins and the median's sort order them.
 TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
   auto box = [](glm::dvec3 centre, double half) {
     return Bounds{centre - glm::dvec3(half), centre + glm::dvec3(half)};
   };
   Bvh swapped(std::vector<Bounds>{box({0, 5, 1}, 1), box({0, 2, 1}, 3)}, 1);
-  EXPECT_EQ(swapped.items(), (std::vector<std::uint32_t>{1, 0}));
+  EXPECT_EQ(swapped.order(), (std::vector<std::uint32_t>{1, 0}));
   EXPECT_EQ(swapped.nodes()[0].axis, 1);
   Bvh kept(std::vector<Bounds>{box({-3, 0, 0}, 1), box({4, 0, 1}, 1)}, 1);
-  EXPECT_EQ(kept.items(), (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(kept.order(), (std::vector<std::uint32_t>{0, 1}));
   EXPECT_EQ(kept.nodes()[0].axis, 0);
   Bvh equal(std::vector<Bounds>{box({1, 1, 1}, 2), box({1, 1, 1}, 1)}, 1);
-  EXPECT_EQ(equal.items(), (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(equal.order(), (std::vector<std::uint32_t>{0, 1}));
 
   // The same in every pair of leaves of a larger tree.
   std::vector<Bounds> boxes = randomBoxes(5, 5000);
@@ -157,8 +173,8 @@ TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
     const BvhNode& node = nodes[i];
     if (node.count > 0 || node.offset != i + 2) continue;
     if (nodes[i + 1].count != 1 || nodes[i + 2].count != 1) continue;
-    glm::dvec3 a = boxes[bvh.items()[nodes[i + 1].offset]].centre();
-    glm::dvec3 b = boxes[bvh.items()[nodes[i + 2].offset]].centre();
+    glm::dvec3 a = floatBox(boxes[bvh.order()[nodes[i + 1].offset]]).centre();
+    glm::dvec3 b = floatBox(boxes[bvh.order()[nodes[i + 2].offset]]).centre();
     glm::dvec3 extent = glm::max(a, b) - glm::min(a, b);
     int widest =
         extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
@@ -169,15 +185,30 @@ TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
   EXPECT_GT(pairs, 500);
 }
 
-// The build's rule written the plain way, as a reference: every split
-// bins the centres of its items in 16 bins along the widest axis of their
-// centres, prices the split after each of bins 0 to 14 by the surface area
-// heuristic, takes the first of the cheapest (std::min_element) when it
-// leaves items on both sides, and else halves the list at the median.
+// The build's rule written the plain way, as a reference, over the boxes
+// rounded outward to floats: every split bins the centres of its items in
+// 16 bins along the widest axis of their centres, prices the split after
+// each of bins 0 to 14 by the surface area heuristic, takes the first of
+// the cheapest (std::min_element) when it leaves items on both sides and
+// costs less than a leaf would (at most 4 items: their count times the
+// node's area, against half the area plus the split's price), makes a leaf
+// of at most 4 items otherwise, and else halves the list at the median. Two
+// items are priced as split apart.
 struct ReferenceBuild {
   std::vector<Bounds> boxes;
   std::vector<std::uint32_t> items;
   std::vector<BvhNode> nodes;
+
+  static bool leafIsCheaper(std::uint32_t count, double area, double splitCost) {
+    return count <= 4 && count * area <= 0.5 * area + splitCost;
+  }
+
+  std::uint32_t leaf(std::uint32_t at, std::uint32_t begin, std::uint32_t end) {
+    nodes.resize(std::max<std::size_t>(nodes.size(), at + 1));
+    nodes[at].offset = begin;
+    nodes[at].count = static_cast<std::uint16_t>(end - begin);
+    return at + 1;
+  }
 
   std::uint32_t build(std::uint32_t at, std::uint32_t begin, std::uint32_t end) {
     Bounds bounds, centres;
@@ -185,22 +216,26 @@ struct ReferenceBuild {
       bounds.extend(boxes[items[i]]);
       centres.extend(boxes[items[i]].centre());
     }
-    BvhNode& node = nodes[at];
+    nodes.resize(std::max<std::size_t>(nodes.size(), at + 1));
     for (int i = 0; i < 3; ++i) {
-      node.planes[i] = floatAtOrBelow(bounds.lo[i]);
-      node.planes[3 + i] = floatAtOrAbove(bounds.hi[i]);
+      nodes[at].planes[i] = floatAtOrBelow(bounds.lo[i]);
+      nodes[at].planes[3 + i] = floatAtOrAbove(bounds.hi[i]);
     }
-    if (end - begin == 1) {
-      node.offset = begin;
-      node.count = 1;
-      return at + 1;
-    }
+    std::uint32_t count = end - begin;
+    if (count == 1) return leaf(at, begin, end);
     glm::dvec3 e = centres.hi - centres.lo;
     int axis = e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
     auto centre = [&](std::uint32_t item) { return boxes[item].centre()[axis]; };
-    std::uint32_t mid = begin + (end - begin) / 2;
+    std::uint32_t mid = begin + count / 2;
     bool split = false;
-    if (e[axis] > 0.0) {
+    if (count == 2) {
+      double cost = boxes[items[begin]].surfaceArea() + boxes[items[begin + 1]].surfaceArea();
+      if (leafIsCheaper(count, bounds.surfaceArea(), cost)) return leaf(at, begin, end);
+      if (centre(items[begin + 1]) < centre(items[begin])) {
+        std::swap(items[begin], items[begin + 1]);
+      }
+      split = true;
+    } else if (e[axis] > 0.0) {
       double scale = 16 / e[axis];
       auto binOf = [&](std::uint32_t item) {
         return std::clamp(static_cast<int>((centre(item) - centres.lo[axis]) * scale), 0, 15);
@@ -212,6 +247,7 @@ struct ReferenceBuild {
         ++counts[binOf(items[i])];
       }
       std::array<double, 15> cost;
+      std::array<std::uint32_t, 15> lefts;
       for (int b = 0; b < 15; ++b) {
         Bounds left, right;
         std::uint32_t l = 0, r = 0;
@@ -220,27 +256,25 @@ struct ReferenceBuild {
           (k <= b ? l : r) += counts[k];
         }
         cost[b] = (l ? l * left.surfaceArea() : 0.0) + (r ? r * right.surfaceArea() : 0.0);
+        lefts[b] = l;
       }
       int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
-      auto at = std::partition(items.begin() + begin, items.begin() + end,
-                               [&](std::uint32_t item) { return binOf(item) <= best; });
-      std::uint32_t cut = static_cast<std::uint32_t>(at - items.begin());
-      if (cut != begin && cut != end) {
-        mid = cut;
+      if (lefts[best] != 0 && lefts[best] != count &&
+          !leafIsCheaper(count, bounds.surfaceArea(), cost[best])) {
+        std::partition(items.begin() + begin, items.begin() + end,
+                       [&](std::uint32_t item) { return binOf(item) <= best; });
+        mid = begin + lefts[best];
         split = true;
       }
     }
-    if (!split && end - begin == 2) {
-      if (centre(items[begin + 1]) < centre(items[begin])) {
-        std::swap(items[begin], items[begin + 1]);
-      }
-    } else if (!split) {
+    if (!split && count <= 4) return leaf(at, begin, end);
+    if (!split) {
       std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
                        [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
     }
-    node.axis = static_cast<std::uint8_t>(axis);
+    nodes[at].axis = static_cast<std::uint8_t>(axis);
     std::uint32_t second = build(at + 1, begin, mid);
-    node.offset = second;
+    nodes[at].offset = second;
     return build(second, mid, end);
   }
 };
@@ -268,15 +302,15 @@ TEST(BvhBuild, SplitsAsThePlainBinnedSurfaceAreaRuleDoes) {
     int count = 2 + static_cast<int>(seed % 90);
     std::vector<Bounds> boxes = seed % 2 ? gridBoxes(seed, count) : randomBoxes(seed, count);
     if (seed % 6 == 0) {
-      // Areas past the double range: every split prices infinity, and the
-      // first, after bin 0, is taken.
-      for (Bounds& box : boxes) box = Bounds{box.lo * 1e305, box.hi * 1e305};
+      // Near the end of the float range.
+      for (Bounds& box : boxes) box = Bounds{box.lo * 1e36, box.hi * 1e36};
     }
-    ReferenceBuild reference{boxes, {}, std::vector<BvhNode>(2 * boxes.size() - 1)};
+    ReferenceBuild reference{{}, {}, {}};
+    for (const Bounds& box : boxes) reference.boxes.push_back(floatBox(box));
     for (std::uint32_t i = 0; i < boxes.size(); ++i) reference.items.push_back(i);
     reference.build(0, 0, static_cast<std::uint32_t>(boxes.size()));
     Bvh bvh(boxes, 1);
-    ASSERT_EQ(bvh.items(), reference.items) << "seed " << seed;
+    ASSERT_EQ(bvh.order(), reference.items) << "seed " << seed;
     ASSERT_EQ(bvh.nodes().size(), reference.nodes.size()) << "seed " << seed;
     ASSERT_EQ(std::memcmp(bvh.nodes().data(), reference.nodes.data(),
                           reference.nodes.size() * sizeof(BvhNode)),

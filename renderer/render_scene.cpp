@@ -159,7 +159,7 @@ RenderSceneMemory RenderScene::memory() const {
   memory.records = heldBytes(objects_) + heldBytes(colours_) + heldBytes(materials_) +
                    heldBytes(sceneObjects_) + heldBytes(planes_) + heldBytes(planeNormals_) +
                    heldBytes(lights_);
-  memory.bvh = heldBytes(bvh_.nodes()) + heldBytes(bvh_.items());
+  memory.bvh = heldBytes(bvh_.nodes()) + heldBytes(bvh_.order());
   memory.grids = heldBytes(leafOf_);
   for (const DirectionGrid& grid : lightGrids_) memory.grids += grid.bytes();
   return memory;
@@ -174,7 +174,7 @@ void RenderScene::buildLightGrids(int threads) {
   leafOf_.resize(bounded_.size());
   for (std::uint32_t node = 0; node < nodes.size(); ++node) {
     for (std::uint32_t k = 0; k < nodes[node].count; ++k) {
-      leafOf_[bvh_.items()[nodes[node].offset + k]] = node;
+      leafOf_[nodes[node].offset + k] = node;
     }
   }
   const GridBoxes leafBoxes(bounded_.count, [this](std::uint32_t item) { return leafBox(item); });

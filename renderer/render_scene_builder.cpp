@@ -152,7 +152,7 @@ RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGri
       [&](std::uint32_t item) { return *worldBounds(objects_[order[planeCount + item]]); },
       threads_);
   {
-    std::vector<std::uint32_t> byPlace = scene.bvh_.numberItemsByPlace();
+    std::vector<std::uint32_t> byPlace = scene.bvh_.takeOrder();
     for (std::uint32_t& item : byPlace) item = order[planeCount + item];
     std::copy(byPlace.begin(), byPlace.end(), order.begin() + planeCount);
   }

@@ -19,7 +19,7 @@ namespace render::gpu {
 
 namespace {
 
-constexpr int kBindings = 8;
+constexpr int kBindings = 7;
 constexpr std::uint32_t kGroupSize = 8;  // render.comp's local_size_x and _y
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -287,8 +287,7 @@ KernelOutput runKernel(const RenderScene& scene, const RenderSettings& settings,
     readback = context.createBuffer(2 * outputBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, host,
                                     VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
     pipeline.bind({params.buffer, gpuScene.objects.buffer, gpuScene.nodes.buffer,
-                   gpuScene.items.buffer, gpuScene.planes.buffer, gpuScene.lights.buffer,
-                   colours.buffer, counts.buffer});
+                   gpuScene.planes.buffer, gpuScene.lights.buffer, colours.buffer, counts.buffer});
     bool timed = context.timestampPeriod() > 0.0;
     if (timed) {
       VkQueryPoolCreateInfo queryInfo{};

@@ -76,11 +76,6 @@ void packScene(const RenderScene& scene, const GpuSceneLayout& layout, char* out
   auto* nodes = reinterpret_cast<std::uint32_t*>(out + layout.nodes.offset);
   const std::vector<BvhNode>& bvhNodes = scene.bvh().nodes();
   for (std::size_t i = 0; i < bvhNodes.size(); ++i) packNode(bvhNodes[i], nodes + i * 8);
-  auto* items = reinterpret_cast<std::uint32_t*>(out + layout.items.offset);
-  const std::vector<std::uint32_t>& bvhItems = scene.bvh().items();
-  for (std::size_t k = 0; k < bvhItems.size(); ++k) {
-    items[k] = scene.boundedObjects()[bvhItems[k]];
-  }
   const std::vector<std::uint32_t>& planes = scene.planeObjects();
   if (!planes.empty()) {
     std::memcpy(out + layout.planes.offset, planes.data(), planes.size() * sizeof planes[0]);
@@ -106,7 +101,6 @@ GpuSceneLayout layoutOf(const RenderScene& scene) {
   place(layout.objects, scene.objects().size() * kObjectDoubles * sizeof(double));
   place(layout.lights, scene.lights().size() * 6 * sizeof(double));
   place(layout.nodes, scene.bvh().nodes().size() * 8 * sizeof(std::uint32_t));
-  place(layout.items, scene.bvh().items().size() * sizeof(std::uint32_t));
   place(layout.planes, scene.planeObjects().size() * sizeof(std::uint32_t));
   layout.bytes = at;
   return layout;
@@ -124,7 +118,6 @@ GpuScene uploadScene(const VulkanContext& context, const RenderScene& source, in
   };
   Part parts[] = {{&scene.objects, layout.objects},
                   {&scene.nodes, layout.nodes},
-                  {&scene.items, layout.items},
                   {&scene.planes, layout.planes},
                   {&scene.lights, layout.lights}};
   Buffer staging;
@@ -159,7 +152,7 @@ GpuScene uploadScene(const VulkanContext& context, const RenderScene& source, in
 }
 
 void destroyScene(const VulkanContext& context, GpuScene& scene) {
-  for (Buffer* b : {&scene.objects, &scene.nodes, &scene.items, &scene.planes, &scene.lights}) {
+  for (Buffer* b : {&scene.objects, &scene.nodes, &scene.planes, &scene.lights}) {
     context.destroy(*b);
   }
 }

@@ -49,22 +49,22 @@ inline constexpr int kObjectDoubles = 32;
 
 // Where each array of the scene lies in one host buffer, in the shader's
 // layouts: the objects (kObjectDoubles each), the lights (position,
-// colour), the BVH nodes (BvhNode's 32 bytes as 8 words), per BVH item its
-// object, the plane objects; each aligned for its type where the buffer is
-// aligned to 8 bytes.
+// colour), the BVH nodes (BvhNode's 32 bytes as 8 words; a leaf's item k is
+// the object planeCount + k), the plane objects; each aligned for its type
+// where the buffer is aligned to 8 bytes.
 struct GpuSceneLayout {
   struct Part {
     VkDeviceSize offset = 0;
     VkDeviceSize bytes = 0;
   };
-  Part objects, nodes, items, planes, lights;
+  Part objects, nodes, planes, lights;
   VkDeviceSize bytes = 0;
 };
 GpuSceneLayout layoutOf(const RenderScene& scene);
 
 // The scene's buffers on the device.
 struct GpuScene {
-  Buffer objects, nodes, items, planes, lights;
+  Buffer objects, nodes, planes, lights;
   std::uint64_t bytes = 0;
 };
 

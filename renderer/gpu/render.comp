@@ -46,16 +46,14 @@ layout(std430, binding = 1) readonly buffer Objects { double objects[]; };
 // BvhNode as the CPU keeps it, 8 words a node: six float planes, the offset,
 // then count (low 16 bits) and axis (next 8).
 layout(std430, binding = 2) readonly buffer Nodes { uint nodes[]; };
-// Per BVH item, the object it stands for.
-layout(std430, binding = 3) readonly buffer Items { uint itemObjects[]; };
-layout(std430, binding = 4) readonly buffer Planes { uint planes[]; };
+layout(std430, binding = 3) readonly buffer Planes { uint planes[]; };
 // 6 doubles a light: position, colour.
-layout(std430, binding = 5) readonly buffer Lights { double lights[]; };
+layout(std430, binding = 4) readonly buffer Lights { double lights[]; };
 // Per pixel of the region: red, green, blue, coverage.
-layout(std430, binding = 6) writeonly buffer Colours { vec4 colours[]; };
+layout(std430, binding = 5) writeonly buffer Colours { vec4 colours[]; };
 // Per pixel: reflected and refracted rays, shadow rays, branches dropped on
 // a full stack, and the object the last camera ray met.
-layout(std430, binding = 7) writeonly buffer Counts { uvec4 counts[]; };
+layout(std430, binding = 6) writeonly buffer Counts { uvec4 counts[]; };
 
 const int kObjectDoubles = 32;
 const int kMaterial = 22;
@@ -466,7 +464,8 @@ bool searchScene(dvec3 origin, dvec3 direction, uint source, bool inward, double
     uint count = packed & 0xFFFFu;
     if (count > 0u) {
       for (uint i = 0u; i < count; ++i) {
-        uint object = itemObjects[offset + i];
+        // The objects lie the planes first, then in the BVH's item order.
+        uint object = uint(planeCount) + offset + i;
         if (intersectObject(object, origin, direction, source, inward, bestCandidate.t, c)) {
           best = object;
           bestCandidate = c;
