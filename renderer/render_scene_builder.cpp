@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "renderer/parallel_parts.h"
+#include "renderer/permute_in_place.h"
 
 namespace render {
 
@@ -101,30 +102,10 @@ void RenderSceneBuilder::add(std::span<const scene::Object> batch) {
 }
 
 void RenderSceneBuilder::permute(const std::vector<std::uint32_t>& order) {
-  // Cycle by cycle: record `at` takes the one at order[at], whose place
-  // takes the next, until the cycle comes back to its start, kept aside.
-  // A bit a record marks those placed. (A copy in the new order would hold
-  // the records twice.)
-  const std::size_t count = order.size();
-  std::vector<std::uint64_t> placed((count + 63) / 64, 0);
-  for (std::size_t start = 0; start < count; ++start) {
-    if ((placed[start / 64] >> (start % 64) & 1) != 0 || order[start] == start) continue;
-    const RenderObject object = objects_[start];
-    const glm::dvec3 colour = colours_[start];
-    std::size_t at = start;
-    for (;;) {
-      std::size_t from = order[at];
-      placed[at / 64] |= std::uint64_t{1} << (at % 64);
-      if (from == start) {
-        objects_[at] = object;
-        colours_[at] = colour;
-        break;
-      }
-      objects_[at] = objects_[from];
-      colours_[at] = colours_[from];
-      at = from;
-    }
-  }
+  // In place: a copy in the new order would hold the records twice.
+  const int threads = order.size() < RenderScene::kMinParallelObjects ? 1 : threads_;
+  permuteInPlace(std::span<const std::uint32_t>(order), threads, std::span<RenderObject>(objects_),
+                 std::span<glm::dvec3>(colours_));
 }
 
 RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGrids) && {
