@@ -13,7 +13,9 @@ namespace scene {
 
 namespace {
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // What one pass over a literal learns: how far the grammar reaches, whether
 // the text up to there is a whole literal, where its parts stand, and its
@@ -135,14 +137,22 @@ std::uint64_t eightDigitsValue(std::uint64_t digits) {
          32;
 }
 
+// Whether `c` ends a number's token: a blank, and a line break where the
+// text runs on past the line (parseLeadingNumberInText).
+template <bool kLineBreakEnds>
+bool endsToken(char c) {
+  return c == ' ' || c == '\t' || (kLineBreakEnds && (c == '\n' || c == '\r'));
+}
+
 // The literal nearly every token is, read as one word: an optional sign,
-// then at most eight digits and points, one point at most, ended by a blank
-// or the end of `text`. Nothing here branches on the digits, whose varying
-// count makes a loop over the bytes mispredict a few times per number.
-// Declines (false) anything else, exponents included, and when fewer than
-// nine bytes may be read; the grammar scan then decides. The value is exact
-// by the fast path's argument: at most eight digits, at most seven of them
-// after the point.
+// then at most eight digits and points, one point at most, ended as
+// endsToken says or by the end of `text`. Nothing here branches on the
+// digits, whose varying count makes a loop over the bytes mispredict a few
+// times per number. Declines (false) anything else, exponents included, and
+// when fewer than nine bytes may be read; the grammar scan then decides. The
+// value is exact by the fast path's argument: at most eight digits, at most
+// seven of them after the point.
+template <bool kLineBreakEnds>
 bool readShortLiteral(std::string_view text, std::size_t readable, double& value,
                       std::size_t& length) {
   if constexpr (std::endian::native != std::endian::little || !kExactDoubleArithmetic) {
@@ -175,7 +185,7 @@ bool readShortLiteral(std::string_view text, std::size_t readable, double& value
   if ((points & (points - 1)) != 0) return false;  // "1.2.3"
   int digitCount = end - (points != 0);
   std::size_t stop = sign + static_cast<std::size_t>(end);
-  bool ended = stop < text.size() ? text[stop] == ' ' || text[stop] == '\t' : stop == text.size();
+  bool ended = stop < text.size() ? endsToken<kLineBreakEnds>(text[stop]) : stop == text.size();
   if (digitCount == 0 || !ended) return false;  // ".", "1e5", "1.0f", too long
 
   // Take the point out, moving the bytes above it down (with no point,
@@ -202,8 +212,8 @@ ParsedNumber convert(std::string_view literal, const LiteralShape& shape) {
   std::string_view body = literal;
   if (body.front() == '+') body.remove_prefix(1);  // from_chars takes no '+'
   double value = 0.0;
-  auto [ptr, ec] = std::from_chars(body.data(), body.data() + body.size(), value,
-                                   std::chars_format::general);
+  auto [ptr, ec] =
+      std::from_chars(body.data(), body.data() + body.size(), value, std::chars_format::general);
   if (ec == std::errc::result_out_of_range) {
     result.status =
         leadingExponent(literal, shape) >= 0 ? NumberStatus::Overflow : NumberStatus::Underflow;
@@ -219,12 +229,13 @@ ParsedNumber convert(std::string_view literal, const LiteralShape& shape) {
 
 // parseLeadingNumber for what readShortLiteral declines. Kept out of line:
 // inlined, its registers and stack would burden the common case.
+template <bool kLineBreakEnds>
 [[gnu::noinline]] ParsedNumber parseLeadingLiteral(std::string_view text, std::size_t& length) {
   LiteralShape shape = scanLiteral(text);
   length = shape.length;
   if (!shape.valid) return {0.0, NumberStatus::Syntax};
   // The token goes on past the literal: "1.0f", "1.2.3".
-  if (length != text.size() && text[length] != ' ' && text[length] != '\t') {
+  if (length != text.size() && !endsToken<kLineBreakEnds>(text[length])) {
     return {0.0, NumberStatus::Syntax};
   }
   return convert(text.substr(0, length), shape);
@@ -242,8 +253,14 @@ ParsedNumber parseNumber(std::string_view token) {
 
 ParsedNumber parseLeadingNumber(std::string_view text, std::size_t readable, std::size_t& length) {
   ParsedNumber result;
-  if (readShortLiteral(text, readable, result.value, length)) return result;
-  return parseLeadingLiteral(text, length);
+  if (readShortLiteral<false>(text, readable, result.value, length)) return result;
+  return parseLeadingLiteral<false>(text, length);
+}
+
+ParsedNumber parseLeadingNumberInText(std::string_view text, std::size_t& length) {
+  ParsedNumber result;
+  if (readShortLiteral<true>(text, text.size(), result.value, length)) return result;
+  return parseLeadingLiteral<true>(text, length);
 }
 
 std::string numberSyntaxReason(std::string_view token) {

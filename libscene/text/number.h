@@ -32,6 +32,11 @@ ParsedNumber parseNumber(std::string_view token);
 // past a short literal, the literal is read a word at a time.
 ParsedNumber parseLeadingNumber(std::string_view text, std::size_t readable, std::size_t& length);
 
+// parseLeadingNumber for a reader that reads a line's numbers before it
+// knows where the line ends: `text` runs on past the line, and a line break
+// ('\n' or '\r') ends the token too.
+ParsedNumber parseLeadingNumberInText(std::string_view text, std::size_t& length);
+
 // Why `token` (which parseNumber rejected as Syntax) is not a number, in
 // words for a diagnostic: "hexadecimal numbers are not allowed", ...
 std::string numberSyntaxReason(std::string_view token);

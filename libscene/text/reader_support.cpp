@@ -82,25 +82,48 @@ bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count,
   return ok;
 }
 
-bool readPlainNumbers(std::string_view line, std::size_t readable, std::uint32_t lineNumber,
-                      std::size_t count, double* values, SourceSpan* spans) {
-  auto isBlank = [](char c) { return c == ' ' || c == '\t'; };
+namespace {
+
+bool isBlank(char c) {
+  return c == ' ' || c == '\t';
+}
+
+// The line ends as LineCursor::nextLine ends it: at "\n", "\r\n", or the
+// text's end, a '\r' there dropped too. `at` is where the blanks after its
+// last number end; false where something else follows them.
+bool passLineEndingAt(LineCursor& cursor, std::string_view text, std::size_t at) {
+  std::size_t length = at;
+  if (at < text.size() && text[at] == '\r') ++at;
+  if (at < text.size()) {
+    if (text[at] != '\n') return false;
+    ++at;
+  }
+  cursor.passLine(length, at);
+  return true;
+}
+
+}  // namespace
+
+bool readPlainNumberLine(LineCursor& cursor, std::size_t count, double* values, SourceSpan* spans) {
+  // The line's end is found as its numbers are read: no search for it first.
+  std::string_view text = cursor.rest();
+  const std::uint32_t lineNumber = cursor.lineNumber() + 1;
   std::size_t i = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    while (i < line.size() && isBlank(line[i])) ++i;
-    if (i == line.size()) return false;
+    while (i < text.size() && isBlank(text[i])) ++i;
+    if (i == text.size()) return false;
     // Every byte must belong to a number or a blank, so a line read here
     // holds no invalid byte, comment or keyword either.
     std::size_t length = 0;
-    ParsedNumber parsed = parseLeadingNumber(line.substr(i), readable - i, length);
+    ParsedNumber parsed = parseLeadingNumberInText(text.substr(i), length);
     if (parsed.status != NumberStatus::Ok) return false;
     values[k] = parsed.value;
     spans[k] = SourceSpan{lineNumber, static_cast<std::uint32_t>(i + 1),
                           static_cast<std::uint32_t>(length)};
     i += length;
   }
-  while (i < line.size() && isBlank(line[i])) ++i;
-  return i == line.size();
+  while (i < text.size() && isBlank(text[i])) ++i;
+  return passLineEndingAt(cursor, text, i);
 }
 
 std::optional<std::string_view> keywordInOtherCase(std::string_view word,

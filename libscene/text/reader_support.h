@@ -8,8 +8,8 @@
 #include <span>
 #include <string_view>
 
-#include "scenefile/diagnostic.h"
 #include "libscene/text/text_lines.h"
+#include "scenefile/diagnostic.h"
 
 namespace scene {
 
@@ -27,13 +27,13 @@ bool readNumbers(const LineCursor& cursor, std::size_t first, std::size_t count,
                  std::string_view what, DiagnosticList& out);
 
 // readNumbers for the common line, in one pass over its text and with no
-// tokens: true when `line` is exactly `count` numbers that read cleanly,
-// each value and span then stored. False says only that the line needs the
-// careful path (the cursor's tokens and readNumbers), which finds and
-// reports whatever is wrong with it; nothing is reported here. `readable`
-// is as for parseLeadingNumber.
-bool readPlainNumbers(std::string_view line, std::size_t readable, std::uint32_t lineNumber,
-                      std::size_t count, double* values, SourceSpan* spans);
+// tokens: true when the cursor's next line is exactly `count` numbers that
+// read cleanly; each value and span is then stored and the cursor moved to
+// that line (LineCursor::passLine). False says only that the line needs the
+// careful path (nextLine, its tokens and readNumbers), which finds and
+// reports whatever is wrong with it; nothing is reported here, and the
+// cursor stays where it was.
+bool readPlainNumberLine(LineCursor& cursor, std::size_t count, double* values, SourceSpan* spans);
 
 // The closest candidate to `word`: the same word in another case, or one at
 // a small edit distance.

@@ -29,6 +29,14 @@ bool LineCursor::nextLine() {
   return true;
 }
 
+void LineCursor::passLine(std::size_t length, std::size_t next) {
+  ++lineNumber_;
+  tokenCount_ = 0;
+  invalidByteColumn_.reset();
+  line_ = std::string_view(text_.data() + offset_, length);
+  offset_ += next;
+}
+
 void LineCursor::tokenize() {
   const char* begin = line_.data();
   std::size_t length = line_.size();

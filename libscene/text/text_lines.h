@@ -44,13 +44,15 @@ class LineCursor {
   bool nextLine();
   void tokenize();
 
+  // The text from where the next line starts, for a reader that reads a
+  // line itself; then passLine(length, next) moves to that line as
+  // nextLine() would, `length` its bytes without the line break and `next`
+  // where the line after it starts, without looking for the line's end again.
+  std::string_view rest() const { return text_.substr(offset_); }
+  void passLine(std::size_t length, std::size_t next);
+
   std::uint32_t lineNumber() const { return lineNumber_; }
   std::string_view line() const { return line_; }
-  // The bytes from the start of line() to the end of the text: a reader may
-  // look past the end of the line as far as that.
-  std::size_t readableFromLine() const {
-    return static_cast<std::size_t>(text_.data() + text_.size() - line_.data());
-  }
   bool blank() const { return tokenCount_ == 0; }
   // Every token on the line, the stored ones being the first kMaxTokens.
   std::size_t tokenCount() const { return tokenCount_; }

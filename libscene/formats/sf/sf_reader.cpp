@@ -220,10 +220,6 @@ class SceneFileParser {
     bool blankReported = false;
     int linesRead = 0;
     while (linesRead < 5) {
-      if (!cursor_.nextLine()) {
-        if (!damaged) reportTruncated(name, nameSpan, linesRead, "the file ends");
-        return;
-      }
       // The colour line, then the four matrix rows, their spans as written.
       std::size_t count = linesRead == 0 ? 3 : 4;
       double* values = linesRead == 0 ? colour.data() : rows.data() + 4 * (linesRead - 1);
@@ -231,10 +227,13 @@ class SceneFileParser {
           linesRead == 0 ? spans_.colour.data() : spans_.matrix.data() + 4 * (linesRead - 1);
       // Nearly every line is just its numbers, read in one pass; any other
       // line is split into tokens and looked at with care.
-      if (readPlainNumbers(cursor_.line(), cursor_.readableFromLine(), cursor_.lineNumber(), count,
-                           values, where)) {
+      if (readPlainNumberLine(cursor_, count, values, where)) {
         ++linesRead;
         continue;
+      }
+      if (!cursor_.nextLine()) {
+        if (!damaged) reportTruncated(name, nameSpan, linesRead, "the file ends");
+        return;
       }
       cursor_.tokenize();
       if (cursor_.blank()) {

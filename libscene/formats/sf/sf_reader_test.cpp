@@ -56,6 +56,24 @@ TEST(SceneFileReader, AcceptsCrlfBomTabsAndNoFinalNewline) {
   EXPECT_EQ(r.scene.objects.size(), 1u);
 }
 
+TEST(SceneFileReader, EndsALineOfNumbersOnlyWhereALineEnds) {
+  // A '\r' ends a line just before its '\n' or at the file's end; anywhere
+  // else it is an invalid byte, however the numbers around it read.
+  ReadResult last =
+      parse(kCameraRecord + kLightRecord + "PLANE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\r");
+  EXPECT_TRUE(last.diagnostics.empty());
+  ASSERT_EQ(last.scene.objects.size(), 1u);
+  EXPECT_EQ(last.scene.objects[0].matrix[3][3], 1.0);
+  for (std::string row : {"1 0\r0 0\n", "1 0 0 0\r\r\n", "1 0 0 0\r \n", "1 0 0 0 \r0\n"}) {
+    SCOPED_TRACE(row);
+    ReadResult r = parse(kCameraRecord + kLightRecord + "PLANE\n1 1 1\n" + row +
+                         "0 1 0 0\n0 0 1 0\n0 0 0 1\n");
+    std::size_t column = row.find('\r') + 1;
+    expectOne(r.diagnostics, DiagnosticCode::InvalidByte, 15, static_cast<std::uint32_t>(column));
+    EXPECT_TRUE(r.scene.objects.empty());
+  }
+}
+
 TEST(SceneFileReader, StopsAtTheFirstObjectOrLightPastMaxObjects) {
   ReadOptions options;
   options.maxObjects = 2;
