@@ -58,16 +58,15 @@ bool writePng(const PngLevels& levels, png_bytep* rows, PngSink& sink) {
   png_set_IHDR(png, info, static_cast<png_uint_32>(levels.width),
                static_cast<png_uint_32>(levels.height), levels.bits, colourType, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  // Every row with the Sub filter, not libpng's choice per row among all
-  // five: smaller files and 30% less time at 1280x720 (the default scene
-  // 108,770 -> 100,199 bytes and 62 -> 42 ms, floor-1000 396,593 -> 370,731
-  // bytes and 141 -> 102 ms), where libpng and zlib had been 13% of a
-  // 1-sample render's CPU time. docs/RENDERING.md, "Image files".
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
-  // zlib's level 3, not its default 6: at 1920x1080 (floor-1000000) 0.11
-  // instead of 0.20 s for a file 3% larger (2,541,007 bytes, not 2,466,878);
-  // level 1 saved 0.02 s more for 4% more bytes.
-  png_set_compression_level(png, 3);
+  // Every row unfiltered, at zlib's level 2: a rendered image's pixel-to-
+  // pixel noise leaves the filters' differences no easier to compress than
+  // the bytes. Against the Sub filter at level 3, at 1920x1080 (floor-
+  // 1000000, 1 sample) 0.07 s instead of 0.16 s and 1,926,599 bytes instead
+  // of 2,541,007; at 1280x720 the default scene 136,809 bytes (141,227) and
+  // floor-1000 419,627 (426,641) in two thirds of the time. Level 3 saved
+  // 1.5% more bytes for 30% more time. docs/RENDERING.md, "Image files".
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+  png_set_compression_level(png, 2);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   if (levels.originX != 0 || levels.originY != 0) {
     png_set_oFFs(png, info, levels.originX, levels.originY, PNG_OFFSET_PIXEL);
