@@ -181,23 +181,13 @@ void SharedSides::keep(int column, const PixelLattice& lattice, const SampleColo
   bottomValid_[column] = 1;
 }
 
-int CornerInterpolation::anchorsOf(int x, int y, int anchors[4][2]) const {
-  bool oddX = (x & 1) != 0, oddY = (y & 1) != 0;
-  if (!on() || !(oddX || oddY) || x + oddX > fullWidth || y + oddY > fullHeight) return 0;
-  int count = 0;
-  for (int dy = oddY ? -1 : 0; dy <= (oddY ? 1 : 0); dy += 2) {
-    for (int dx = oddX ? -1 : 0; dx <= (oddX ? 1 : 0); dx += 2) {
-      anchors[count][0] = x + dx;
-      anchors[count][1] = y + dy;
-      ++count;
-    }
-  }
-  return count;
-}
-
 bool CornerInterpolation::agree(int x, int y, const SampleLook* looks, int count) const {
   SampleSpread spread;
   for (int k = 0; k < count; ++k) spread.add(looks[k]);
+  if (stageOf(x, y) == 1) {
+    return !spread.exceeds(coarseTolerance) &&
+           (!coarseBlocks || coarseBlocks->onlyShows(x, y, looks[0].object));
+  }
   return !spread.exceeds(tolerance) && (!blocks || blocks->onlyShows(x, y, looks[0].object));
 }
 
@@ -264,10 +254,12 @@ std::uint64_t adaptiveSamplingBytes(int width, int height, int threads, int tile
   // samples while they are traced or interpolated.
   std::uint64_t perThread =
       tileCorners * (2 * sizeof(SampleColour) + sizeof(SampleLook) + 2 * sizeof(int));
-  // And the anchors' blocks, which decide where corners are interpolated.
+  // And the anchors' blocks and the coarse anchors', which decide where
+  // corners are interpolated.
+  std::uint64_t blocks = saturatingSum(AnchorBlocks::bytesFor(width, height),
+                                       AnchorBlocks::bytesFor(width, height, 4));
   return saturatingSum(
-      saturatingSum(TileEdgeCorners::bytesFor(width, height, tileSize),
-                    AnchorBlocks::bytesFor(width, height)),
+      saturatingSum(TileEdgeCorners::bytesFor(width, height, tileSize), blocks),
       saturatingProduct(static_cast<std::uint64_t>(std::max(1, threads)), perThread));
 }
 

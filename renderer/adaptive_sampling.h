@@ -192,22 +192,57 @@ class SharedSides {
 
 // Which pixel corners adaptive sampling takes from their neighbours instead
 // of tracing (docs/RENDERING.md, "Adaptive sampling"). A corner (x, y) of
-// the full image with x and y even is an anchor, always traced; any other
-// lies between two anchors (x or y odd) or four (both odd), and is their
-// mean where they show one object and colours within `tolerance`, and no
-// other bounded object reaches the square or side between them (`blocks`),
-// else traced. A corner's sample is thus a function of its position alone,
-// whichever tile or region asks for it.
+// the full image with x and y even is an anchor; any other lies between two
+// anchors (x or y odd) or four (both odd), and is their mean where they
+// show one object and colours within `tolerance`, and no other bounded
+// object reaches the square or side between them (`blocks`), else traced.
+// With coarse anchors on, anchors come in two levels: those with x and y
+// multiples of 4 are always traced, and any other anchor lies between two
+// or four of them, two corners away, and is their mean where they agree
+// within `coarseTolerance` and no other object reaches the 4 x 4 block or
+// side between them (`coarseBlocks`); without, every anchor is traced. A
+// corner's sample is thus a function of its position alone, whichever tile
+// or region asks for it.
 struct CornerInterpolation {
   double tolerance = -1.0;  // below 0: every corner is traced
   int fullWidth = 0, fullHeight = 0;
   const AnchorBlocks* blocks = nullptr;  // nullptr: no object is looked for
+  double coarseTolerance = -1.0;         // below 0: every anchor is traced
+  const AnchorBlocks* coarseBlocks = nullptr;
 
   bool on() const { return tolerance >= 0.0; }
-  // The anchors of corner (x, y) into `anchors`, and how many: 0 for an
-  // anchor, a corner whose anchors leave the image, or with interpolation
+  bool coarse() const { return on() && coarseTolerance >= 0.0; }
+  // The anchors of corner (x, y) into `anchors`, and how many: 0 for a
+  // corner always traced (an anchor, or a coarse anchor with coarse anchors
+  // on), a corner whose anchors leave the image, or with interpolation
   // off; each of those is traced.
-  int anchorsOf(int x, int y, int anchors[4][2]) const;
+  int anchorsOf(int x, int y, int anchors[4][2]) const {
+    if (!on()) return 0;
+    int stage = stageOf(x, y);
+    if (stage == 0) return 0;
+    // A corner between anchors looks one corner away, an anchor between
+    // coarse anchors two; along each axis where the coordinate is off the
+    // anchors' spacing.
+    int step = stage == 2 ? 1 : 2;
+    bool offX = (x & (2 * step - 1)) != 0, offY = (y & (2 * step - 1)) != 0;
+    if (x + (offX ? step : 0) > fullWidth || y + (offY ? step : 0) > fullHeight) return 0;
+    int count = 0;
+    for (int dy = offY ? -step : 0; dy <= (offY ? step : 0); dy += 2 * step) {
+      for (int dx = offX ? -step : 0; dx <= (offX ? step : 0); dx += 2 * step) {
+        anchors[count][0] = x + dx;
+        anchors[count][1] = y + dy;
+        ++count;
+      }
+    }
+    return count;
+  }
+  // The order in which corners are known: 0 for those traced whatever their
+  // neighbours, 1 for anchors between coarse anchors, 2 for the corners
+  // between anchors. A corner's anchors come earlier in this order.
+  int stageOf(int x, int y) const {
+    if (((x | y) & 1) != 0) return 2;
+    return coarse() && ((x | y) & 3) != 0 ? 1 : 0;
+  }
   // Whether corner (x, y), between anchors that look as `looks`, is their
   // mean.
   bool agree(int x, int y, const SampleLook* looks, int count) const;

@@ -424,6 +424,61 @@ TEST(AdaptiveSampling, ACornerBetweenAnchorsIsTheirMeanWhereTheyAgree) {
   EXPECT_EQ(mean.object, 3u);
 }
 
+// With coarse anchors on, an anchor (both coordinates even) off the
+// multiples of 4 lies between coarse anchors two corners away, is known
+// before the corners between anchors, and agrees at its own tolerance.
+TEST(AdaptiveSampling, AnAnchorBetweenCoarseAnchorsIsTheirMeanWhereTheyAgree) {
+  CornerInterpolation rule{0.1, 10, 6, nullptr, 0.05};
+  ASSERT_TRUE(rule.coarse());
+  int anchors[4][2];
+  auto listed = [&](int count) {
+    std::vector<int> v;
+    for (int a = 0; a < count; ++a) v.insert(v.end(), {anchors[a][0], anchors[a][1]});
+    return v;
+  };
+  EXPECT_EQ(rule.stageOf(4, 4), 0);
+  EXPECT_EQ(rule.anchorsOf(4, 4, anchors), 0);  // a coarse anchor: traced
+  EXPECT_EQ(rule.stageOf(2, 0), 1);
+  EXPECT_EQ(listed(rule.anchorsOf(2, 0, anchors)), (std::vector<int>{0, 0, 4, 0}));
+  EXPECT_EQ(listed(rule.anchorsOf(4, 2, anchors)), (std::vector<int>{4, 0, 4, 4}));
+  EXPECT_EQ(listed(rule.anchorsOf(2, 2, anchors)), (std::vector<int>{0, 0, 4, 0, 0, 4, 4, 4}));
+  // Corner 10 of an image 10 pixels wide has no coarse anchor to its right.
+  EXPECT_EQ(rule.anchorsOf(10, 0, anchors), 0);
+  EXPECT_EQ(rule.stageOf(3, 2), 2);
+  EXPECT_EQ(listed(rule.anchorsOf(3, 2, anchors)), (std::vector<int>{2, 2, 4, 2}));
+  // Without coarse anchors every even corner is an anchor, traced.
+  CornerInterpolation fine{0.1, 10, 6};
+  EXPECT_EQ(fine.stageOf(2, 0), 0);
+  EXPECT_EQ(fine.anchorsOf(2, 0, anchors), 0);
+
+  SampleLook near[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.54, 0.5, 0.5}, 1)};
+  EXPECT_TRUE(rule.agree(2, 0, near, 2));
+  SampleLook apart[2] = {lookOf({0.5, 0.5, 0.5}, 1), lookOf({0.57, 0.5, 0.5}, 1)};
+  EXPECT_FALSE(rule.agree(2, 0, apart, 2));  // beyond the coarse tolerance
+  EXPECT_TRUE(rule.agree(3, 0, apart, 2));   // within the corners'
+}
+
+// Coarse anchors spare samples for the same error: on the default scene at
+// 160x120, 17,052 against 19,231 at --adaptive 0.1 --spp 16, RMSE 0.00438
+// either way (at 1280x720, where more of the image is flat, 0.24 samples a
+// pixel against 0.38).
+TEST(AdaptiveSampling, CoarseAnchorsSpareSamplesForAboutTheSameError) {
+  RenderScene compiled(defaultScene());
+  RenderSettings settings = adaptiveSettings(256, 0.0);
+  settings.width = 160;
+  settings.height = 120;
+  Image reference = renderImage(compiled, settings);
+  settings.samplesPerPixel = 16;
+  settings.adaptiveThreshold = 0.1;
+  RenderStatistics fine, coarse;
+  settings.interpolatesAnchors = false;
+  double fineError = clampedRmse(renderImage(compiled, settings, &fine), reference);
+  settings.interpolatesAnchors = true;
+  double coarseError = clampedRmse(renderImage(compiled, settings, &coarse), reference);
+  EXPECT_LT(coarse.samples, fine.samples * 9 / 10);
+  EXPECT_LT(coarseError, fineError * 1.02);
+}
+
 // Thin red posts before a grey wall, each 1.2 pixels wide, at various
 // offsets from the anchors (even pixel corners): a post between two anchors
 // that see the wall is missed by both.
@@ -457,6 +512,27 @@ TEST(AdaptiveSampling, AnObjectBetweenAgreeingAnchorsIsTracedNotLost) {
     }
     EXPECT_LE(worst, settings.adaptiveThreshold) << spp << " spp";
   }
+}
+
+// An anchor between coarse anchors that saw the wall is traced where a post
+// reaches their block, so every pixel on a post has its corners traced, as
+// without coarse anchors: the same pixel, bit for bit.
+TEST(AdaptiveSampling, AnObjectBetweenAgreeingCoarseAnchorsIsTracedNotLost) {
+  RenderSettings settings = adaptiveSettings(16, 0.1);
+  RenderScene compiled(thinPostsBeforeAWall(settings));
+  Image coarse = renderImage(compiled, settings);
+  settings.interpolatesAnchors = false;
+  Image fine = renderImage(compiled, settings);
+  int onPosts = 0;
+  for (int j = 0; j < settings.height; ++j) {
+    for (int i = 0; i < settings.width; ++i) {
+      glm::vec3 f = fine.pixel(i, j);
+      if (f.x - f.y < 0.3f) continue;  // not red: the wall's
+      ++onPosts;
+      ASSERT_EQ(coarse.pixel(i, j), f) << i << "," << j;
+    }
+  }
+  EXPECT_GT(onPosts, 7 * settings.height);
 }
 
 // Corners taken from agreeing anchors spare so many samples that half the

@@ -19,14 +19,23 @@ constexpr double kNearEyePlane = 1e-9;
 
 }  // namespace
 
-std::uint64_t AnchorBlocks::bytesFor(int fullWidth, int fullHeight) {
-  return static_cast<std::uint64_t>(std::max(1, (fullWidth + 1) / 2)) *
-         static_cast<std::uint64_t>(std::max(1, (fullHeight + 1) / 2)) * sizeof(Block);
+namespace {
+int blocksAcross(int pixels, int span) {
+  return std::max(1, (pixels + span - 1) / span);
+}
+}  // namespace
+
+std::uint64_t AnchorBlocks::bytesFor(int fullWidth, int fullHeight, int span) {
+  span = std::max(2, span);
+  return static_cast<std::uint64_t>(blocksAcross(fullWidth, span)) *
+         static_cast<std::uint64_t>(blocksAcross(fullHeight, span)) * sizeof(Block);
 }
 
 AnchorBlocks::AnchorBlocks(const RenderScene& scene, const PinholeCamera& camera, int fullWidth,
-                           int fullHeight)
-    : columns_(std::max(1, (fullWidth + 1) / 2)), rows_(std::max(1, (fullHeight + 1) / 2)) {
+                           int fullHeight, int span)
+    : span_(std::max(2, span)),
+      columns_(blocksAcross(fullWidth, span_)),
+      rows_(blocksAcross(fullHeight, span_)) {
   blocks_.resize(static_cast<std::size_t>(columns_) * rows_);
   const glm::dvec3& eye = camera.eye();
   const double width = fullWidth, height = fullHeight;
@@ -59,12 +68,14 @@ AnchorBlocks::AnchorBlocks(const RenderScene& scene, const PinholeCamera& camera
                     y0 - kMarginPixels <= height && y1 + kMarginPixels >= 0.0)) {
       continue;  // outside the image (or not a number)
     }
-    // Block i holds the corners from 2i to 2i + 2.
+    // Block i holds the corners from span * i to span * (i + 1).
+    const double perPixel = 1.0 / span_;
     auto first = [&](double v, int count) {
-      return whole ? 0 : std::clamp(static_cast<int>(std::floor(v * 0.5)) - 1, 0, count - 1);
+      return whole ? 0 : std::clamp(static_cast<int>(std::floor(v * perPixel)) - 1, 0, count - 1);
     };
     auto last = [&](double v, int count) {
-      return whole ? count - 1 : std::clamp(static_cast<int>(std::floor(v * 0.5)), 0, count - 1);
+      return whole ? count - 1
+                   : std::clamp(static_cast<int>(std::floor(v * perPixel)), 0, count - 1);
     };
     mark(first(std::max(x0 - kMarginPixels, -4.0), columns_),
          last(std::min(x1 + kMarginPixels, width + 4.0), columns_),

@@ -21,6 +21,11 @@ constexpr int kTileSize = kRenderTileSize;
 // The share of adaptive sampling's threshold within which a corner's
 // anchors must agree for it to be their mean (CornerInterpolation).
 constexpr double kAnchorsAgreement = 0.1;
+// The same for an anchor between coarse anchors, and their spacing: half
+// the corners' share, as an anchor's mean spans twice the distance (at a
+// tenth, the same error took as much time: docs/RENDERING.md).
+constexpr double kCoarseAnchorsAgreement = 0.05;
+constexpr int kCoarseSpan = 4;
 
 // Keeps an image finite whatever the scene: NaN becomes 0, and values past
 // the float range are clamped to it.
@@ -286,13 +291,23 @@ struct CornerSamples {
   PixelRegion corners;
   std::vector<SampleColour> samples;
   std::vector<SampleLook> looks;
-  // The corners inside the tile's edges, and their samples: fillTileCorners'
-  // work lists, kept to spare their allocations.
-  std::vector<glm::ivec2> inner;
-  std::vector<SampleColour> innerSamples;
+  // fillTileCorners' work lists, kept to spare their allocations: the
+  // corners of a stage to trace and where their samples go, and the
+  // anchors outside the tile with their samples.
+  std::vector<glm::ivec2> now;
+  std::vector<SampleColour*> into;
+  std::vector<glm::ivec2> outside;
+  std::vector<SampleColour> outsideSamples;
 
+  bool inside(int x, int y) const {
+    return x >= corners.x0 && x < corners.x1 && y >= corners.y0 && y < corners.y1;
+  }
   std::size_t at(int x, int y) const {
     return static_cast<std::size_t>(y - corners.y0) * corners.width() + (x - corners.x0);
+  }
+  const SampleColour& outsideSample(int x, int y) const {
+    auto it = std::find(outside.begin(), outside.end(), glm::ivec2(x, y));
+    return outsideSamples[static_cast<std::size_t>(it - outside.begin())];
   }
 };
 
@@ -310,35 +325,20 @@ void traceCorners(const PixelTracer& tracer, const std::vector<glm::ivec2>& corn
 }
 
 // The samples of the pixel corners `corners` into out[0, corners.size()),
-// as `rule` says (CornerInterpolation): first those it traces, then each
-// other from its anchors. find(x, y) gives the sample of an anchor that the
-// caller holds, or that this batch traced first; nullptr for any other,
-// which is traced here.
+// as `rule` says (CornerInterpolation), stage by stage (stageOf): each
+// corner traced, or from its anchors, which an earlier stage gave.
+// find(x, y) gives the sample of an anchor that the caller holds, or that
+// this batch gives in an earlier stage; nullptr for any other, which is
+// found here as the batch's corners are, with its own anchors.
 template <typename Find>
 void sampleCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
                    const std::vector<glm::ivec2>& corners, SampleColour* out, Find&& find,
                    MediumStack& media, Worker& worker) {
-  std::vector<glm::ivec2> now;
-  std::vector<SampleColour*> into;
   int anchors[4][2];
-  for (std::size_t k = 0; k < corners.size(); ++k) {
-    if (rule.anchorsOf(corners[k].x, corners[k].y, anchors) == 0) {
-      now.push_back(corners[k]);
-      into.push_back(&out[k]);
-    }
-  }
-  traceCorners(tracer, now, into, media, worker);
-  // The anchors the caller lacks (beyond a run's ends, or its region's).
+  // The anchors the caller lacks (beyond a run's ends, or its region's),
+  // and theirs in turn.
   std::vector<glm::ivec2> extra;
-  auto lookup = [&](const glm::ivec2& at, const std::vector<SampleColour>& extraSamples) {
-    const SampleColour* known = find(at.x, at.y);
-    if (known) return known;
-    auto it = std::find(extra.begin(), extra.end(), at);
-    return it == extra.end() ? nullptr
-                             : &extraSamples[static_cast<std::size_t>(it - extra.begin())];
-  };
-  const std::vector<SampleColour> none;
-  for (const glm::ivec2& corner : corners) {
+  auto addAnchorsOf = [&](const glm::ivec2& corner) {
     int count = rule.anchorsOf(corner.x, corner.y, anchors);
     for (int a = 0; a < count; ++a) {
       glm::ivec2 at(anchors[a][0], anchors[a][1]);
@@ -346,30 +346,47 @@ void sampleCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
         extra.push_back(at);
       }
     }
-  }
+  };
+  for (const glm::ivec2& corner : corners) addAnchorsOf(corner);
+  for (std::size_t k = 0; k < extra.size(); ++k) addAnchorsOf(extra[k]);
   std::vector<SampleColour> extraSamples(extra.size());
-  into.clear();
-  for (SampleColour& sample : extraSamples) into.push_back(&sample);
-  traceCorners(tracer, extra, into, media, worker);
-  now.clear();
-  into.clear();
-  for (std::size_t k = 0; k < corners.size(); ++k) {
-    int count = rule.anchorsOf(corners[k].x, corners[k].y, anchors);
-    if (count == 0) continue;
-    const SampleColour* samples[4];
-    SampleLook looks[4];
-    for (int a = 0; a < count; ++a) {
-      samples[a] = lookup(glm::ivec2(anchors[a][0], anchors[a][1]), extraSamples);
-      looks[a] = lookOf(samples[a]->colour, samples[a]->object);
+  auto lookup = [&](const glm::ivec2& at) -> const SampleColour* {
+    const SampleColour* known = find(at.x, at.y);
+    if (known) return known;
+    auto it = std::find(extra.begin(), extra.end(), at);
+    return &extraSamples[static_cast<std::size_t>(it - extra.begin())];
+  };
+  // The batch's corners, then the extra anchors: position and sample.
+  auto cornerAt = [&](std::size_t k) {
+    return k < corners.size() ? corners[k] : extra[k - corners.size()];
+  };
+  auto sampleAt = [&](std::size_t k) {
+    return k < corners.size() ? &out[k] : &extraSamples[k - corners.size()];
+  };
+  std::vector<glm::ivec2> now;
+  std::vector<SampleColour*> into;
+  for (int stage = 0; stage <= 2; ++stage) {
+    now.clear();
+    into.clear();
+    for (std::size_t k = 0; k < corners.size() + extra.size(); ++k) {
+      glm::ivec2 corner = cornerAt(k);
+      if (rule.stageOf(corner.x, corner.y) != stage) continue;
+      int count = rule.anchorsOf(corner.x, corner.y, anchors);
+      const SampleColour* samples[4];
+      SampleLook looks[4];
+      for (int a = 0; a < count; ++a) {
+        samples[a] = lookup(glm::ivec2(anchors[a][0], anchors[a][1]));
+        looks[a] = lookOf(samples[a]->colour, samples[a]->object);
+      }
+      if (count > 0 && rule.agree(corner.x, corner.y, looks, count)) {
+        *sampleAt(k) = meanOf(samples, count);
+      } else {
+        now.push_back(corner);
+        into.push_back(sampleAt(k));
+      }
     }
-    if (rule.agree(corners[k].x, corners[k].y, looks, count)) {
-      out[k] = meanOf(samples, count);
-    } else {
-      now.push_back(corners[k]);
-      into.push_back(&out[k]);
-    }
+    traceCorners(tracer, now, into, media, worker);
   }
-  traceCorners(tracer, now, into, media, worker);
 }
 
 // Adaptive sampling's pass 1: the corners on the edges of the region's
@@ -400,8 +417,42 @@ void traceTileEdges(const PixelTracer& tracer, const CornerInterpolation& rule,
       progress);
 }
 
-// The corners of `tile`'s pixels into `corners`: those on its edges from
-// pass 1, the others traced here a row at a time, as packets.
+// The anchors of `tile`'s inner corners that lie outside it (a tile off
+// the coarse anchors' spacing, whose corners look two corners away) into
+// corners.outside, found as pass 1 finds its corners: the tile's edges
+// known, any other traced or from its own anchors.
+void sampleOutsideAnchors(const PixelTracer& tracer, const CornerInterpolation& rule,
+                          const PixelRegion& tile, CornerSamples& corners, MediumStack& media,
+                          Worker& worker) {
+  std::vector<glm::ivec2>& outside = corners.outside;
+  outside.clear();
+  if (!rule.coarse() || ((tile.x0 | tile.y0 | tile.x1 | tile.y1) & 3) == 0) return;
+  int anchors[4][2];
+  for (int y = tile.y0 + 1; y < tile.y1; ++y) {
+    for (int x = tile.x0 + 1; x < tile.x1; ++x) {
+      int count = rule.anchorsOf(x, y, anchors);
+      for (int a = 0; a < count; ++a) {
+        glm::ivec2 at(anchors[a][0], anchors[a][1]);
+        if (!corners.inside(at.x, at.y) &&
+            std::find(outside.begin(), outside.end(), at) == outside.end()) {
+          outside.push_back(at);
+        }
+      }
+    }
+  }
+  corners.outsideSamples.resize(outside.size());
+  auto find = [&](int x, int y) -> const SampleColour* {
+    bool edge = x == tile.x0 || x == tile.x1 || y == tile.y0 || y == tile.y1;
+    return corners.inside(x, y) && edge ? &corners.samples[corners.at(x, y)] : nullptr;
+  };
+  sampleCorners(tracer, rule, outside, corners.outsideSamples.data(), find, media, worker);
+}
+
+// The corners of `tile`'s pixels into `corners`, with their looks: those on
+// its edges from pass 1, the inner ones stage by stage
+// (CornerInterpolation::stageOf), each the mean of its anchors or traced,
+// as packets, a stage at a time. The tile's corners are a grid: an anchor
+// inside it is read in place.
 void fillTileCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
                      const PixelRegion& tile, const TileEdgeCorners& edges, CornerSamples& corners,
                      MediumStack& media, Worker& worker) {
@@ -409,36 +460,53 @@ void fillTileCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
   std::size_t count = static_cast<std::size_t>(corners.corners.width()) * corners.corners.height();
   corners.samples.resize(count);
   corners.looks.resize(count);
-  std::vector<glm::ivec2>& inner = corners.inner;
-  inner.clear();
-  for (int y = tile.y0; y <= tile.y1; ++y) {
-    SampleColour* row = &corners.samples[corners.at(tile.x0, y)];
-    if (edges.onEdgeRow(y)) {
-      for (int x = tile.x0; x <= tile.x1; ++x) row[x - tile.x0] = edges.sample(x, y);
-      continue;
-    }
-    row[0] = edges.sample(tile.x0, y);
-    row[tile.x1 - tile.x0] = edges.sample(tile.x1, y);
-    for (int x = tile.x0 + 1; x < tile.x1; ++x) inner.emplace_back(x, y);
-  }
-  // The inner corners' anchors all lie in the tile: its edges, or inner
-  // anchors, which sampleCorners traces first.
-  corners.innerSamples.resize(inner.size());
-  auto find = [&](int x, int y) -> const SampleColour* {
-    bool edge = x == tile.x0 || x == tile.x1 || edges.onEdgeRow(y);
-    if (edge) return &corners.samples[corners.at(x, y)];
-    // Inner corners run row by row, tile.x1 - tile.x0 - 1 a row.
-    std::size_t columns = static_cast<std::size_t>(tile.x1 - tile.x0 - 1);
-    std::size_t k = static_cast<std::size_t>(y - tile.y0 - 1) * columns +
-                    static_cast<std::size_t>(x - tile.x0 - 1);
-    return &corners.innerSamples[k];
-  };
-  sampleCorners(tracer, rule, inner, corners.innerSamples.data(), find, media, worker);
-  for (std::size_t k = 0; k < inner.size(); ++k) {
-    corners.samples[corners.at(inner[k].x, inner[k].y)] = corners.innerSamples[k];
-  }
-  for (std::size_t c = 0; c < count; ++c) {
+  auto setLook = [&](std::size_t c) {
     corners.looks[c] = lookOf(corners.samples[c].colour, corners.samples[c].object);
+  };
+  for (int y = tile.y0; y <= tile.y1; ++y) {
+    std::size_t row = corners.at(tile.x0, y);
+    for (int x = tile.x0; x <= tile.x1; ++x) {
+      if (!edges.onEdgeRow(y) && x != tile.x0 && x != tile.x1) continue;
+      corners.samples[row + (x - tile.x0)] = edges.sample(x, y);
+      setLook(row + (x - tile.x0));
+    }
+  }
+  sampleOutsideAnchors(tracer, rule, tile, corners, media, worker);
+  std::vector<glm::ivec2>& now = corners.now;
+  std::vector<SampleColour*>& into = corners.into;
+  int anchors[4][2];
+  for (int stage = 0; stage <= 2; ++stage) {
+    now.clear();
+    into.clear();
+    for (int y = tile.y0; y <= tile.y1; ++y) {
+      if (edges.onEdgeRow(y)) continue;
+      for (int x = tile.x0 + 1; x < tile.x1; ++x) {
+        if (rule.stageOf(x, y) != stage) continue;
+        std::size_t c = corners.at(x, y);
+        int n = rule.anchorsOf(x, y, anchors);
+        const SampleColour* samples[4];
+        SampleLook looks[4];
+        for (int a = 0; a < n; ++a) {
+          int ax = anchors[a][0], ay = anchors[a][1];
+          if (corners.inside(ax, ay)) {
+            samples[a] = &corners.samples[corners.at(ax, ay)];
+            looks[a] = corners.looks[corners.at(ax, ay)];
+          } else {
+            samples[a] = &corners.outsideSample(ax, ay);
+            looks[a] = lookOf(samples[a]->colour, samples[a]->object);
+          }
+        }
+        if (n > 0 && rule.agree(x, y, looks, n)) {
+          corners.samples[c] = meanOf(samples, n);
+          setLook(c);
+        } else {
+          now.emplace_back(x, y);
+          into.push_back(&corners.samples[c]);
+        }
+      }
+    }
+    traceCorners(tracer, now, into, media, worker);
+    for (const glm::ivec2& corner : now) setLook(corners.at(corner.x, corner.y));
   }
 }
 
@@ -607,11 +675,17 @@ void renderAdaptive(const PixelTracer& tracer, const PixelRegion& region,
   // a third of the samples for the same error (docs/RENDERING.md).
   // Where no other object's box reaches between them, so that an object
   // narrower than the anchors' spacing is traced, not lost.
-  std::optional<AnchorBlocks> blocks;
+  std::optional<AnchorBlocks> blocks, coarseBlocks;
   if (depth > 0 && settings.interpolatesCorners) {
     rule.tolerance = kAnchorsAgreement * settings.adaptiveThreshold;
     blocks.emplace(tracer.scene(), tracer.camera(), settings.width, settings.height);
     rule.blocks = &*blocks;
+    if (settings.interpolatesAnchors) {
+      rule.coarseTolerance = kCoarseAnchorsAgreement * settings.adaptiveThreshold;
+      coarseBlocks.emplace(tracer.scene(), tracer.camera(), settings.width, settings.height,
+                           kCoarseSpan);
+      rule.coarseBlocks = &*coarseBlocks;
+    }
   }
   rule.fullWidth = settings.width;
   rule.fullHeight = settings.height;

@@ -47,6 +47,10 @@ struct RenderSettings : scene::RenderSettings {
   // docs/RENDERING.md, "Adaptive sampling"); false traces every corner, for
   // the tests and benchmarks that compare.
   bool interpolatesCorners = true;
+  // Whether, with interpolatesCorners, an anchor between coarse anchors
+  // (corners 4 apart) that agree is their mean too; false traces every
+  // anchor, for the tests and benchmarks that compare.
+  bool interpolatesAnchors = true;
   // The device GPU renders go through, kept open by the caller for as long
   // as renders use it; null: each GPU render opens a device of its own.
   // Auto with one given asks no probe: it takes it where it is a real GPU.
