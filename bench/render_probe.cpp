@@ -2,7 +2,7 @@
 // does not print, taken with the same libraries sfrender uses.
 //
 //   render_probe time SCENE [--width W --height H --spp S --depth D --threads T
-//                            --packets 0|1]
+//                            --packets 0|1 --light-grids auto|0|1]
 //       Reads SCENE (any format sfrender reads), then times apart, on one
 //       process: parsing (scene::parseScene on the file in memory, on T
 //       threads), building the render scene and its BVH
@@ -20,7 +20,9 @@
 //       times the threads: CPU time per ray), peak_rss_bytes, and rgb_fnv1a
 //       (a hash of the image's floats, to see that two renders agree bit
 //       for bit). --packets 0 finds camera rays' hits one by one
-//       (RenderSettings::packets), for comparing the two.
+//       (RenderSettings::packets), for comparing the two; --light-grids 0 or
+//       1 leaves out or builds the lights' direction grids, which auto
+//       builds as sfrender does (RenderScene::lightGridsPay).
 //   render_probe default-scene OUT.txt
 //       Writes render::defaultScene() (the scene sfrender draws with no
 //       input) as an instruction file, materials included.
@@ -88,7 +90,8 @@ void resetPeakRss() {
 
 // Builds the render scene as sfrender's streaming read does, and prints
 // the build's times and memory by stage.
-render::RenderScene buildInBatches(const scene::Scene& scene, int threads) {
+render::RenderScene buildInBatches(const scene::Scene& scene, int threads,
+                                   const std::string& lightGrids, std::uint64_t samples) {
   constexpr std::size_t kBatch = 65536;
   const double objects = std::max<double>(1.0, static_cast<double>(scene.objects.size()));
   resetPeakRss();
@@ -103,7 +106,10 @@ render::RenderScene buildInBatches(const scene::Scene& scene, int threads) {
   }
   const double add = since(t0);
   t0 = Clock::now();
-  render::RenderScene compiled = std::move(builder).finish(scene);
+  render::RenderScene compiled = std::move(builder).finish(
+      scene, lightGrids == "auto"
+                 ? render::RenderScene::lightGridsPay(scene.objects.size(), samples)
+                 : lightGrids == "1");
   const double finish = since(t0);
   const long peak = peakRssBytes();
   render::RenderSceneMemory memory = compiled.memory();
@@ -120,7 +126,8 @@ render::RenderScene buildInBatches(const scene::Scene& scene, int threads) {
   return compiled;
 }
 
-int timeScene(const std::string& path, const render::RenderSettings& settings) {
+int timeScene(const std::string& path, const render::RenderSettings& settings,
+              const std::string& lightGrids) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     std::cerr << "render_probe: cannot read " << path << "\n";
@@ -146,7 +153,8 @@ int timeScene(const std::string& path, const render::RenderSettings& settings) {
   std::string().swap(text);
   std::printf("objects: %zu\n", result.scene.objects.size());
   std::printf("parse_s: %.6f\n", parse);
-  const render::RenderScene compiled = buildInBatches(result.scene, settings.threads);
+  const render::RenderScene compiled = buildInBatches(result.scene, settings.threads, lightGrids,
+                                                      render::uniformSampleCount(settings));
   render::RenderStatistics stats;
   t0 = Clock::now();
   render::Image image = render::renderImage(compiled, settings, &stats);
@@ -271,6 +279,8 @@ int main(int argc, char** argv) {
   timeCmd->add_option("--depth", settings.maxDepth);
   timeCmd->add_option("--threads", settings.threads);
   timeCmd->add_option("--packets", settings.packets);
+  std::string lightGrids = "auto";
+  timeCmd->add_option("--light-grids", lightGrids)->check(CLI::IsMember({"auto", "0", "1"}));
   auto* defaultCmd = app.add_subcommand("default-scene", "write the default scene");
   defaultCmd->add_option("output", output)->required();
   auto* compareCmd = app.add_subcommand("compare", "RMSE and PSNR of A against B");
@@ -284,7 +294,7 @@ int main(int argc, char** argv) {
   adaptiveCmd->add_option("--reference-spp", referenceSpp);
   CLI11_PARSE(app, argc, argv);
   if (*adaptiveCmd) return adaptiveSweep(input, settings, referenceSpp);
-  if (*timeCmd) return timeScene(input, settings);
+  if (*timeCmd) return timeScene(input, settings, lightGrids);
   if (*defaultCmd) return writeDefault(output);
   return compareImages(a, b);
 }

@@ -29,15 +29,15 @@ std::uint64_t RenderMemoryEstimate::total() const {
   return saturatingSum(saturatingSum(image, scene), bvh);
 }
 
-RenderMemoryEstimate estimateRenderMemory(std::uint64_t objects, std::uint64_t lights, int width,
-                                          int height, bool coverage) {
+RenderMemoryEstimate estimateRenderMemory(const RenderSize& size) {
   RenderMemoryEstimate e;
   // The float image (with its coverage); the writer's copy of it in the
   // file's values (one or two bytes a channel, or EXR's linear floats); and
   // the file itself, made whole in memory before it is written (at most as
   // large as that copy). An EXR measured 2.8 times the float image at peak.
-  e.image = saturatingProduct(Image::bytesFor(width, height, coverage), 3);
-  RenderScene::Bytes compiled = RenderScene::bytesFor(objects, lights);
+  e.image = saturatingProduct(Image::bytesFor(size.width, size.height, size.coverage), 3);
+  RenderScene::Bytes compiled =
+      RenderScene::bytesFor(size.objects, size.lights, size.materials, size.cameraSamples);
   e.scene = compiled.scene;
   e.bvh = compiled.bvh;
   return e;

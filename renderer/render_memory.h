@@ -29,11 +29,24 @@ struct RenderMemoryEstimate {
   std::uint64_t total() const;
 };
 
-/// The estimate for rendering `objects` objects and `lights` lights into a
-/// `width` x `height` image, with its coverage or not, and writing it to a
-/// file.
-RenderMemoryEstimate estimateRenderMemory(std::uint64_t objects, std::uint64_t lights, int width,
-                                          int height, bool coverage = false);
+/// What a render's memory depends on.
+struct RenderSize {
+  std::uint64_t objects = 0;
+  std::uint64_t lights = 0;
+  /// The distinct materials, colour aside (RenderSceneBuilder numbers
+  /// them): the count known, or a bound such as `objects`.
+  std::uint64_t materials = 1;
+  int width = 0;
+  int height = 0;
+  /// The camera samples (uniformSampleCount), which decide whether the
+  /// lights' direction grids are built (RenderScene::lightGridsPay).
+  std::uint64_t cameraSamples = 0;
+  bool coverage = false;
+};
+
+/// The estimate for rendering a scene of `size` into its image, with its
+/// coverage or not, and writing it to a file.
+RenderMemoryEstimate estimateRenderMemory(const RenderSize& size);
 
 /// MemAvailable of /proc/meminfo's text, in bytes, or nothing when absent.
 std::optional<std::uint64_t> parseMemAvailable(std::string_view meminfo);

@@ -15,56 +15,70 @@
 namespace render {
 namespace {
 
+// The estimate of a render of `objects` objects with `materials` distinct
+// materials and `lights` lights in a `width` x `height` image at 1 sample a
+// pixel.
+RenderMemoryEstimate estimate(std::uint64_t objects, std::uint64_t lights, int width, int height,
+                              std::uint64_t materials = 1) {
+  return estimateRenderMemory({.objects = objects,
+                               .lights = lights,
+                               .materials = materials,
+                               .width = width,
+                               .height = height,
+                               .cameraSamples = static_cast<std::uint64_t>(width) * height});
+}
+
 TEST(RenderMemory, ImageGrowsWithThePixelsAndSceneAndBvhWithTheObjects) {
-  RenderMemoryEstimate empty = estimateRenderMemory(0, 0, 1, 1);
+  RenderMemoryEstimate empty = estimate(0, 0, 1, 1, 0);
   EXPECT_EQ(empty.scene, 0u);
   EXPECT_EQ(empty.bvh, 0u);
   EXPECT_GT(empty.image, 0u);
 
-  RenderMemoryEstimate small = estimateRenderMemory(10, 1, 640, 480);
-  RenderMemoryEstimate big = estimateRenderMemory(1'000'000, 1, 640, 480);
+  RenderMemoryEstimate small = estimate(10, 1, 640, 480);
+  RenderMemoryEstimate big = estimate(1'000'000, 1, 640, 480);
   EXPECT_EQ(small.image, big.image);
-  EXPECT_EQ(estimateRenderMemory(2000, 0, 1, 1).scene,
-            2 * estimateRenderMemory(1000, 0, 1, 1).scene);
-  EXPECT_EQ(estimateRenderMemory(2000, 0, 1, 1).bvh, 2 * estimateRenderMemory(1000, 0, 1, 1).bvh);
+  EXPECT_EQ(estimate(2000, 0, 1, 1, 2000).scene, 2 * estimate(1000, 0, 1, 1, 1000).scene);
+  EXPECT_EQ(estimate(2000, 0, 1, 1).bvh, 2 * estimate(1000, 0, 1, 1).bvh);
   // At least the float image, and each object's record (a 3x3 double
-  // matrix and a translation), colour and material, more than 200 bytes.
+  // matrix and a translation), colour and index in the scene: 132 bytes.
   EXPECT_GE(small.image, 640u * 480 * 12);
-  EXPECT_GE(big.scene, 1'000'000u * 200);
+  EXPECT_GE(big.scene, 1'000'000u * 132);
   EXPECT_GT(big.bvh, small.bvh);
   EXPECT_EQ(big.total(), big.image + big.scene + big.bvh);
 
-  RenderMemoryEstimate wide = estimateRenderMemory(10, 1, 1280, 960);
+  RenderMemoryEstimate wide = estimate(10, 1, 1280, 960);
   EXPECT_EQ(wide.image, 4 * small.image);
 }
 
 // The figures of each part, from the types' sizes: the image three times
 // (the floats, the file's copy, the file's bytes).
 TEST(RenderMemory, ThePartsAreTheTypesSizes) {
-  RenderMemoryEstimate e = estimateRenderMemory(1000, 7, 640, 480);
-  EXPECT_EQ(e.image, 640u * 480 * 3 * (3 * sizeof(float)));
-  // The records, their colours, a material each (at most), each object's
-  // index in the scene and in the plane list, and a plane's normal, counted
-  // for any object.
-  EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(scene::Material) +
-                             2 * sizeof(std::uint32_t) + sizeof(glm::dvec3)) +
-                         7 * sizeof(RenderLight));
-  // At least the nodes, the build's copy of each box in float beside its
-  // index and bin, the BVH's order (twice: the builder's copy), a byte of
-  // marks for the records' moves, and each item's leaf. The threads' lists
-  // of the top of the tree and of its subtrees come only with a parallel
-  // build, from 16,384 boxes.
-  std::uint64_t parts =
-      1000 * ((6 * sizeof(float) + 8) + 2 * sizeof(BvhNode) + 3 * sizeof(std::uint32_t) + 1);
-  // And 7 lights' grids of at most 8 cells a box on each face: per cell
-  // its start, count and full flag, per entry an index (16 a box, plus one
-  // a cell, at most), and while two build at once, 6 ranges of cells a box
-  // each in a vector that may double.
+  RenderMemoryEstimate e = estimate(1000, 7, 64, 46, 3);
+  EXPECT_EQ(e.image, 64u * 46 * 3 * (3 * sizeof(float)));
+  // The records, their colours and indices in the scene; the materials'
+  // table and their numbers by their properties; the lights.
+  std::uint64_t material = sizeof(scene::Material) + 7 * 8 + 4 + 4 * sizeof(void*);
+  EXPECT_EQ(e.scene, 1000 * (sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(std::uint32_t)) +
+                         3 * material + 7 * sizeof(RenderLight));
+  // The BVH's build, then the reorder's byte a record and its stations'
+  // records (one in 32); 2,944 samples build no light grids for 1,000
+  // objects.
+  EXPECT_EQ(e.bvh, Bvh::bytesFor(1000) + 1000 * 6);
+  // 3,000 samples do: 7 lights' grids of at most 8 cells a box on each
+  // face: per cell its start, count and full flag, per entry an index (16
+  // a box, plus one a cell, at most), and while two build at once, 6
+  // ranges of cells a box each in a vector that may double; and each
+  // item's leaf.
+  RenderMemoryEstimate gridded = estimateRenderMemory({.objects = 1000,
+                                                       .lights = 7,
+                                                       .materials = 3,
+                                                       .width = 64,
+                                                       .height = 46,
+                                                       .cameraSamples = 3000});
   std::uint64_t cells = 6 * 8 * 1000 + 1;
-  std::uint64_t grids = 7 * (cells * 13 + (16 * 1000 + cells) * 4) + 1000 * (2 * 2 * 6 * 20);
-  EXPECT_GE(e.bvh, parts + grids);
-  EXPECT_LE(e.bvh, parts + grids + 1000 * 12);
-  EXPECT_EQ(estimateRenderMemory(5, 0, 0, -3).image, 0u);  // no pixels
+  std::uint64_t grids = 7 * (cells * 13 + (16 * 1000 + cells) * 4) + 1000 * (2 * 2 * 6 * 20 + 4);
+  EXPECT_EQ(gridded.bvh, e.bvh + grids);
+  EXPECT_EQ(estimate(5, 0, 0, -3).image, 0u);  // no pixels
 }
 
 // What the constructors actually hold stays within what bytesFor says: the
@@ -89,7 +103,9 @@ TEST(RenderMemory, TheEstimateBoundsWhatIsAllocated) {
       bvh.nodes().capacity() * sizeof(BvhNode) + bvh.order().capacity() * sizeof(std::uint32_t),
       Bvh::bytesFor(boxes));
 
-  RenderScene::Bytes bytes = RenderScene::bytesFor(s.objects.size(), s.lights.size());
+  // The constructor builds the lights' grids whatever the samples.
+  RenderScene::Bytes bytes =
+      RenderScene::bytesFor(s.objects.size(), s.lights.size(), 1, UINT64_MAX);
   EXPECT_LE(compiled.objects().capacity() * sizeof(RenderObject) +
                 compiled.lights().capacity() * sizeof(RenderLight),
             bytes.scene);
@@ -114,17 +130,76 @@ TEST(RenderMemory, TheEstimateBoundsWhatIsAllocated) {
   Image covered = renderImage(compiled, settings);
   EXPECT_EQ((covered.rgb.capacity() + covered.coverage.capacity()) * sizeof(float),
             Image::bytesFor(17, 5, true));
-  EXPECT_GT(estimateRenderMemory(1, 1, 17, 5, true).image, estimateRenderMemory(1, 1, 17, 5).image);
+  EXPECT_GT(estimateRenderMemory({.objects = 1, .width = 17, .height = 5, .coverage = true}).image,
+            estimate(1, 1, 17, 5).image);
 }
 
 TEST(RenderMemory, HugeCountsSaturateInsteadOfWrapping) {
-  RenderMemoryEstimate e = estimateRenderMemory(UINT64_MAX / 2, UINT64_MAX / 2, 32768, 32768);
+  RenderMemoryEstimate e = estimateRenderMemory({.objects = UINT64_MAX / 2,
+                                                 .lights = UINT64_MAX / 2,
+                                                 .materials = UINT64_MAX / 2,
+                                                 .width = 32768,
+                                                 .height = 32768,
+                                                 .cameraSamples = UINT64_MAX});
   EXPECT_EQ(e.scene, UINT64_MAX);
   EXPECT_EQ(e.bvh, UINT64_MAX);
   EXPECT_EQ(e.total(), UINT64_MAX);
   EXPECT_TRUE(renderMemoryRefusal(e, std::uint64_t{1} << 40).has_value());
   EXPECT_EQ(Bvh::bytesFor(UINT64_MAX / 4), UINT64_MAX);
   EXPECT_EQ(Image::bytesFor(32768, 32768), std::uint64_t{32768} * 32768 * 12);
+}
+
+// The worst cases of what a build holds stay within the estimate: every
+// object a plane (normals and a plane list instead of a BVH), every object
+// of its own material, and light grids where the samples build them.
+TEST(RenderMemory, TheEstimateBoundsAScenesWorstCases) {
+  auto held = [](const RenderScene& compiled) {
+    RenderSceneMemory m = compiled.memory();
+    return m.records + m.bvh + m.grids;
+  };
+  auto bound = [](std::uint64_t objects, std::uint64_t materials, std::uint64_t samples) {
+    RenderScene::Bytes b = RenderScene::bytesFor(objects, 2, materials, samples);
+    return b.scene + b.bvh;
+  };
+  scene::Scene planes = testing::sceneLookingAt({0, 0, 10}, {0, 0, 0});
+  for (int i = 0; i < 300; ++i) {
+    planes.objects.push_back(
+        testing::object(scene::ObjectKind::Plane, {testing::translate(0, -i, 0)}));
+  }
+  planes.lights = {testing::light({0, 5, 5}), testing::light({5, 5, 5})};
+  EXPECT_LE(held(RenderScene(planes)), bound(300, 1, 0));
+
+  scene::Scene own = testing::sceneLookingAt({0, 0, 10}, {0, 0, 0});
+  for (int i = 0; i < 300; ++i) {
+    own.objects.push_back(testing::object(scene::ObjectKind::Sphere,
+                                          {testing::scale(0.1), testing::translate(i, i % 7, 0)}));
+    own.objects.back().material.shininess = 1.0 + i;
+  }
+  own.lights = planes.lights;
+  RenderScene ownMaterials(own, 1, false);
+  EXPECT_LE(held(ownMaterials), bound(300, 300, 0));
+  // The records and the table, made as the objects are added.
+  EXPECT_LE(ownMaterials.memory().records, RenderScene::bytesFor(300, 2, 300, 0).scene);
+  EXPECT_GT(ownMaterials.memory().records, RenderScene::bytesFor(300, 2, 1, 0).scene);
+
+  // With the grids: 900 samples build them for 300 objects, 899 do not.
+  ASSERT_TRUE(RenderScene::lightGridsPay(300, 900));
+  ASSERT_FALSE(RenderScene::lightGridsPay(300, 899));
+  RenderScene gridded(own, 1, true);
+  ASSERT_NE(gridded.lightGrid(0), nullptr);
+  EXPECT_LE(held(gridded), bound(300, 300, 900));
+  EXPECT_GE(bound(300, 300, 900) - bound(300, 300, 899), gridded.memory().grids);
+}
+
+// A scene of 100,000,000 objects of one material, rendered in 1080p at one
+// sample a pixel, builds no light grids: it is estimated at its records
+// (132 bytes an object), one material, the BVH's build and the reorder's
+// 6 bytes an object.
+TEST(RenderMemory, AHundredMillionObjectsAreEstimatedAtWhatTheBuildHolds) {
+  RenderMemoryEstimate e = estimate(100'000'000, 2, 1920, 1080);
+  std::uint64_t material = sizeof(scene::Material) + 7 * 8 + 4 + 4 * sizeof(void*);
+  EXPECT_EQ(e.scene, std::uint64_t{100'000'000} * 132 + material + 2 * sizeof(RenderLight));
+  EXPECT_EQ(e.bvh, Bvh::bytesFor(100'000'000) + 600'000'000);
 }
 
 TEST(RenderMemory, ReadsMemAvailableInKibibytes) {
@@ -140,7 +215,7 @@ TEST(RenderMemory, ReadsMemAvailableInKibibytes) {
 }
 
 TEST(RenderMemory, RefusesOnlyWhatDoesNotFitAndSaysBothFigures) {
-  RenderMemoryEstimate e = estimateRenderMemory(1000, 2, 640, 480);
+  RenderMemoryEstimate e = estimate(1000, 2, 640, 480);
   EXPECT_EQ(renderMemoryRefusal(e, e.total()), std::nullopt);
   EXPECT_EQ(renderMemoryRefusal(e, std::nullopt), std::nullopt);  // unknown: not refused
   std::optional<std::string> refusal = renderMemoryRefusal(e, 1000);

@@ -9,6 +9,7 @@
 #include "renderer/bvh_packet.h"
 #include "renderer/float_error.h"
 #include "renderer/parallel_parts.h"
+#include "renderer/permute_in_place.h"
 #include "renderer/saturating.h"
 #include "renderer/unit_shapes.h"
 
@@ -105,26 +106,38 @@ std::optional<Bounds> worldBounds(scene::ObjectKind kind, const glm::dmat4& m) {
   return Bounds{centre - *extent - slack, centre + *extent + slack};
 }
 
-RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t lights) {
-  // The vectors of RenderSceneBuilder. Kept: per object its record, colour
-  // and scene index, a plane's normal and place in the plane list (counted
-  // for every object, as any may be a plane), and a material (as many
-  // distinct ones as objects, at most).
+RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t lights,
+                                         std::uint64_t materials, std::uint64_t cameraSamples) {
+  // The vectors of RenderSceneBuilder. Made as objects are added: per
+  // object its record, colour and scene index (the order finish() lays the
+  // records out in), and the table of materials with their numbers by
+  // their properties (a std::map node each, about four pointers besides).
   Bytes bytes;
-  std::uint64_t perObject = sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(std::uint32_t) +
-                            sizeof(glm::dvec3) + sizeof(std::uint32_t) + sizeof(scene::Material);
-  bytes.scene = saturatingSum(saturatingProduct(objects, perObject),
+  constexpr std::uint64_t kPerObject =
+      sizeof(RenderObject) + sizeof(glm::dvec3) + sizeof(std::uint32_t);
+  constexpr std::uint64_t kPerMaterial = sizeof(scene::Material) +
+                                         sizeof(std::array<std::uint64_t, 7>) +
+                                         sizeof(std::uint32_t) + 4 * sizeof(void*);
+  bytes.scene = saturatingSum(saturatingSum(saturatingProduct(objects, kPerObject),
+                                            saturatingProduct(materials, kPerMaterial)),
                               saturatingProduct(lights, sizeof(RenderLight)));
-  // While it builds: the BVH (Bvh::bytesFor), its old item numbers and the
-  // records' moves' marks (a byte an object is counted), and each item's
-  // leaf.
-  bytes.bvh = saturatingSum(saturatingProduct(objects, 2 * sizeof(std::uint32_t) + 1),
-                            Bvh::bytesFor(objects));
-  // The lights' grids (DirectionGrid::bytes, bounded by its limits), and
-  // while they are built (kGridsBuiltAtOnce at a time), each one's cell
-  // ranges of each box (at most one a window, in a vector that may double).
+  // Made by finish(), for bounded objects: the BVH with its build's
+  // temporaries (Bvh::bytesFor), which the reorder's (a byte a record and
+  // the records at every permute_in_place station) come after; for planes,
+  // each one's normal and place in the plane list. The larger of the two,
+  // as any object may be a plane.
+  constexpr std::uint64_t kPerPlane = sizeof(glm::dvec3) + sizeof(std::uint32_t);
+  constexpr std::uint64_t kReorderPerObject =
+      1 + (sizeof(RenderObject) + sizeof(glm::dvec3)) / permute_detail::kStride + 1;
+  bytes.bvh =
+      std::max(saturatingSum(Bvh::bytesFor(objects), saturatingProduct(objects, kReorderPerObject)),
+               saturatingProduct(objects, kPerPlane));
+  // The lights' grids where they are built (DirectionGrid::bytes, bounded
+  // by its limits), each item's leaf, and while the grids are built
+  // (kGridsBuiltAtOnce at a time), each one's cell ranges of each box (at
+  // most one a window, in a vector that may double).
   std::uint64_t grids = std::min<std::uint64_t>(lights, kMaxLightGrids);
-  if (objects >= kMinLightGridObjects && grids > 0) {
+  if (grids > 0 && lightGridsPay(objects, cameraSamples)) {
     DirectionGrid::Limits limits;
     std::uint64_t cells =
         saturatingProduct(DirectionGrid::kMaxWindows, kLightGridCells.bound(objects)) + 1;
@@ -136,8 +149,9 @@ RenderScene::Bytes RenderScene::bytesFor(std::uint64_t objects, std::uint64_t li
     std::uint64_t atOnce = std::min<std::uint64_t>(grids, kGridsBuiltAtOnce);
     std::uint64_t building = saturatingProduct(
         objects, atOnce * 2 * DirectionGrid::kMaxWindows * DirectionGrid::kRangeBytes);
-    bytes.bvh =
-        saturatingSum(bytes.bvh, saturatingSum(saturatingProduct(grids, perGrid), building));
+    std::uint64_t leaves = saturatingProduct(objects, sizeof(std::uint32_t));
+    bytes.bvh = saturatingSum(bytes.bvh, saturatingSum(saturatingProduct(grids, perGrid),
+                                                       saturatingSum(building, leaves)));
   }
   return bytes;
 }

@@ -126,21 +126,25 @@ class RenderScene {
   explicit RenderScene(const scene::Scene& scene, int threads = 0, bool lightGrids = true);
 
   /// What the build (RenderSceneBuilder) allocates for a scene of `objects`
-  /// objects and `lights` lights, in bytes, as two parts.
+  /// objects, `lights` lights and `materials` distinct materials (colour
+  /// aside), in bytes, as two parts.
   struct Bytes {
-    /// Kept while the scene lives: the compiled objects, their colours and
-    /// materials (as many distinct ones as objects, at most), the lights.
+    /// Made as the objects are added: the objects' records, colours and
+    /// scene indices, the materials' table, the lights.
     std::uint64_t scene = 0;
-    /// The BVH, with its build's temporaries, and the lights' direction
-    /// grids with theirs and the boxes they are built over.
+    /// Made by finish(): the BVH with its build's temporaries, or for
+    /// planes their normals and list; the records' reorder's temporaries;
+    /// and the lights' direction grids with theirs, where a render of
+    /// `cameraSamples` samples builds them (lightGridsPay).
     std::uint64_t bvh = 0;
   };
-  /// The most the constructor holds for such a scene, from the sizes and
+  /// The most the build holds for such a scene, from the sizes and
   /// capacities it allocates (Bvh::bytesFor for the hierarchy), so that a
   /// caller can refuse a scene that cannot fit before compiling it; the
   /// scene::Scene itself is not counted. Saturates: a hostile count gives
   /// UINT64_MAX, never a wrapped figure.
-  static Bytes bytesFor(std::uint64_t objects, std::uint64_t lights);
+  static Bytes bytesFor(std::uint64_t objects, std::uint64_t lights, std::uint64_t materials,
+                        std::uint64_t cameraSamples);
 
   /// What this scene holds, by part.
   RenderSceneMemory memory() const;
@@ -225,6 +229,21 @@ class RenderScene {
   // object pays for them. At 5 to 50 objects they take 10% to 18% of the
   // instructions off a render (callgrind); their build is a millisecond.
   static constexpr std::size_t kMinLightGridObjects = 1;
+  // Whether the lights' direction grids pay for their build in a render of
+  // `cameraSamples` camera samples (uniformSampleCount) of a scene of
+  // `objects` objects: from kLightGridSamplesPerObject samples an object
+  // on. Their build costs about the same for each bounded object and what
+  // they save about the same for each shadow ray, which the camera samples
+  // stand for (docs/TRACING.md, "Direction grids"). All objects are
+  // counted, planes too, so that the memory estimate (bytesFor) knows it
+  // before the objects are read.
+  static bool lightGridsPay(std::uint64_t objects, std::uint64_t cameraSamples) {
+    return objects >= kMinLightGridObjects && cameraSamples / kLightGridSamplesPerObject >= objects;
+  }
+  // At floor-1000000 in 1080p at 1 spp (2.1 samples an object) they took
+  // 0.3 to 0.6 s to build and 0.54 s off the render, about even, and held
+  // 61 bytes an object; at 720p and 4 spp (3.7), 0.31 s for 0.69 s.
+  static constexpr std::uint64_t kLightGridSamplesPerObject = 3;
   // Renders of scenes with fewer bounded objects have no eye grid: below
   // that, the packets' walk of a small BVH is about as quick (glass-mirror,
   // 8 objects: 1% fewer instructions with it).

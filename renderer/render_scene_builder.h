@@ -36,6 +36,9 @@ class RenderSceneBuilder {
   /// ignored). Frees every build temporary before it returns.
   RenderScene finish(const scene::Scene& header, bool lightGrids = true) &&;
 
+  /// The distinct materials (colour aside) of the objects added.
+  std::uint64_t materialCount() const { return materials_.size(); }
+
   /// The most objects a scene may have: objects are numbered in 32 bits,
   /// RaySource::kNone aside.
   static constexpr std::uint64_t kMaxObjects = 0xFFFFFFFE;

@@ -47,7 +47,9 @@ RenderedImage renderScene(const Scene& scene, const RenderSettings& settings,
   // request sets it.
   render::CancelFlag cancel;
   std::stop_callback onStop(control.stop, [&cancel] { cancel.request(); });
-  render::RenderScene compiled(scene);
+  render::RenderScene compiled(
+      scene, 0,
+      render::RenderScene::lightGridsPay(scene.objects.size(), render::uniformSampleCount(full)));
   return render::renderImage(compiled, full, nullptr, control.progress, &cancel);
 }
 

@@ -120,8 +120,16 @@ Refusal renderResourceRefusal(const render::RenderSettings& s, const scene::Scen
     return "width and height make " + std::to_string(pixels) + " pixels, more than the limit of " +
            std::to_string(limits.maxPixels);
   }
-  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
-      scene.objects.size(), scene.lights.size(), s.width, s.height, s.coverage);
+  render::RenderMemoryEstimate estimate =
+      render::estimateRenderMemory({.objects = scene.objects.size(),
+                                    .lights = scene.lights.size(),
+                                    .materials = scene.objects.size(),
+                                    .width = s.width,
+                                    .height = s.height,
+                                    // Its renders build the lights' grids
+                                    // whatever the samples.
+                                    .cameraSamples = UINT64_MAX,
+                                    .coverage = s.coverage});
   if (s.adaptiveThreshold > 0) {
     estimate.image = render::saturatingSum(
         estimate.image,

@@ -412,8 +412,16 @@ MaybeFailure RenderJob::targetRefusal() {
 // already, so that the free memory has counted them.
 std::optional<std::string> RenderJob::memoryRefusal(std::uint64_t objects, std::uint64_t lights,
                                                     bool recordsMade) const {
+  // The materials known so far: a streamed read's first window gives a
+  // few, the whole read all of them.
   render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
-      objects, lights, imageWidth(settings_), imageHeight(settings_), settings_.coverage);
+      {.objects = objects,
+       .lights = lights,
+       .materials = std::max<std::uint64_t>(1, builder_ ? builder_->materialCount() : 0),
+       .width = imageWidth(settings_),
+       .height = imageHeight(settings_),
+       .cameraSamples = render::uniformSampleCount(settings_),
+       .coverage = settings_.coverage});
   if (recordsMade) estimate.scene = 0;
   if (settings_.adaptiveThreshold > 0) {
     estimate.image = render::saturatingSum(
@@ -528,9 +536,11 @@ MaybeFailure RenderJob::run() {
   // and its threads start.
   if (MaybeFailure failure = resourceRefusal()) return failure;
   stage_.set("preparing the scene");
-  // The lights' direction grids serve the CPU path only.
-  render::RenderScene compiled =
-      std::move(*builder_).finish(job_.scene, settings_.device != render::RenderDevice::Gpu);
+  // The lights' direction grids serve the CPU path only, where they pay.
+  const bool lightGrids =
+      settings_.device != render::RenderDevice::Gpu &&
+      render::RenderScene::lightGridsPay(objectCount_, render::uniformSampleCount(settings_));
+  render::RenderScene compiled = std::move(*builder_).finish(job_.scene, lightGrids);
   builder_.reset();
   output_.step("preparing the scene");
   render::RenderStatistics statistics;
