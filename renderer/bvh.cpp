@@ -4,8 +4,11 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <limits>
+#include <new>
 #include <numeric>
 #include <optional>
 #include <thread>
@@ -20,9 +23,6 @@ namespace {
 
 constexpr int kBins = 16;
 constexpr std::uint32_t kMaxLeafItems = Bvh::kMaxLeafItems;
-// A split's cost beside its objects' tests (each 1), per unit of area: the
-// two children's box tests at their parent.
-constexpr double kNodeCost = 0.5;
 // Past this depth only balanced median splits are made, which keeps the
 // tree within the traversal stack (Bvh::kStackSize) for any item count.
 constexpr int kMaxDepth = 64;
@@ -55,10 +55,11 @@ struct BuildItem {
 
 // What a node's split works with: the items and the nodes being written,
 // shared by every thread of a build (each writes only its own range of
-// items and of nodes).
+// items and of nodes), and the price of a node (Bvh::nodeCostFor).
 struct BuildInput {
   BuildItem* items;
   BvhNode* nodes;
+  double nodeCost;
 };
 
 // A node's box and the box of its items' centres: what its split needs
@@ -286,12 +287,14 @@ std::pair<int, double> cheapestSplit(const Bins& bins) {
 // Whether `count` items of a node of surface area `area` cost less as a
 // leaf than split at `splitCost` (the children's counts times their areas):
 // the surface area heuristic with a leaf cost. Equal costs make the leaf.
-bool leafIsCheaper(std::uint32_t count, double area, double splitCost) {
-  return count <= kMaxLeafItems && count * area <= kNodeCost * area + splitCost;
+bool leafIsCheaper(const BuildInput& in, std::uint32_t count, double area, double splitCost) {
+  return count <= kMaxLeafItems && count * area <= in.nodeCost * area + splitCost;
 }
 
-// A node's box: its bounds rounded outward to floats.
+// A node's box: its bounds rounded outward to floats. The first write of
+// every node, which clears it whole (the node's room was never written).
 void writeBox(BvhNode& node, const Bounds& bounds) {
+  node = BvhNode{};
   floatPlanesAround(bounds, node.planes);
 }
 
@@ -332,7 +335,7 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     // cheaper, the item with the lower centre goes first, and equal centres
     // keep their order, as the median's sort of two does.
     double splitCost = items[begin].box().surfaceArea() + items[begin + 1].box().surfaceArea();
-    if (leafIsCheaper(count, extentIn.bounds.surfaceArea(), splitCost)) {
+    if (leafIsCheaper(in, count, extentIn.bounds.surfaceArea(), splitCost)) {
       writeLeaf(node, begin, count, extentIn.bounds);
       return std::nullopt;
     }
@@ -354,7 +357,7 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     std::uint32_t leftCount = 0;
     for (int j = 0; j <= cheapest; ++j) leftCount += bins.count[j];
     if (leftCount != 0 && leftCount != count &&
-        !leafIsCheaper(count, extentIn.bounds.surfaceArea(), splitCost)) {
+        !leafIsCheaper(in, count, extentIn.bounds.surfaceArea(), splitCost)) {
       // Step 3: the split, and the children's extents, the unions of their
       // bins'.
       std::uint32_t last = static_cast<std::uint32_t>(bins.number[cheapest]);
@@ -500,7 +503,7 @@ void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int thr
 // (leaves of several items make them): moves each
 // stretch of nodes down and renumbers the second children. Returns the
 // node count.
-std::uint32_t closeGaps(std::vector<BvhNode>& nodes, const std::vector<Subtree>& subtrees,
+std::uint32_t closeGaps(BvhNode* nodes, const std::vector<Subtree>& subtrees,
                         std::uint32_t reserved) {
   // shifts[k]: how far nodes past subtree k's reserved nodes move down.
   std::vector<std::uint32_t> gapEnds(subtrees.size());
@@ -553,9 +556,6 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
       kMaxBuildThreads * (sizeof(Bins) + sizeof(std::exception_ptr));
   constexpr std::uint64_t kParallelBytes = kMaxSubtrees * kSubtreeBytes + kLevelBytes +
                                            kRootBinBytes + kMaxBuildThreads * sizeof(std::thread);
-  // The nodes' copy when they give back what they did not use (at most one
-  // a box) is made once the list is freed, in no more than its room.
-  static_assert(sizeof(BvhNode) <= sizeof(BuildItem));
   std::uint64_t perBox = kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(BuildItem);
   // A split partitioning in blocks (one at a time on a thread).
   std::uint64_t partitionBytes =
@@ -567,28 +567,32 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
 }
 
 Bvh::Bvh(const std::vector<Bounds>& boxes, int threads)
+    : Bvh(boxes, threads, nodeCostFor(boxes.size())) {}
+
+Bvh::Bvh(const std::vector<Bounds>& boxes, int threads, double nodeCost)
     : Bvh(
           static_cast<std::uint32_t>(boxes.size()), [&](std::uint32_t i) { return boxes[i]; },
-          threads) {}
+          threads, nodeCost) {}
 
-Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int threads) {
+Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int threads)
+    : Bvh(n, boxOf, threads, nodeCostFor(n)) {}
+
+Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int threads,
+         double nodeCost) {
   if (n == 0) return;
   threads = std::min(resolveThreads(threads), kMaxBuildThreads);
   if (n < kMinParallelBoxes) threads = 1;
   // The list in parts side by side, each part's extent merged after (a
-  // union of boxes, the same whatever the parts), and the nodes sized
-  // beside them: most of either is the first touch of its fresh pages.
+  // union of boxes, the same whatever the parts): most of it is the first
+  // touch of its fresh pages. The nodes' room is only reserved: a page
+  // becomes memory when a node is first written in it.
   std::vector<BuildItem> items;
   allocateHere(items, n);
-  allocateHere(nodes_, kNodesPerBox * n);
+  nodes_ = BvhNodes(kNodesPerBox * n - 1);
   items.resize(n);
   const std::size_t parts = static_cast<std::size_t>(threads);
   std::vector<NodeExtent> extents(parts);
-  runParts(parts + 1, threads, [&](std::size_t part) {
-    if (part == parts) {
-      nodes_.resize(2 * static_cast<std::size_t>(n) - 1);
-      return;
-    }
+  runParts(parts, threads, [&](std::size_t part) {
     const std::uint32_t end = static_cast<std::uint32_t>(n * (part + 1) / parts);
     for (std::uint32_t i = static_cast<std::uint32_t>(n * part / parts); i < end; ++i) {
       BuildItem& item = items[i];
@@ -600,11 +604,11 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   });
   NodeExtent extent;
   for (const NodeExtent& part : extents) extent.extend(part);
-  BuildInput in{items.data(), nodes_.data()};
+  BuildInput in{items.data(), nodes_.data(), nodeCost};
   itemCount_ = n;
   // The boxes' numbers in the order the build left them, which the leaves'
-  // items follow; then the build's list goes, and the nodes give back what
-  // the build kept past those it made.
+  // items follow; then the build's list goes. (The nodes have given back
+  // the room past those made.)
   auto keepOrder = [&] {
     order_.resize(n);
     runParts(parts, threads, [&](std::size_t part) {
@@ -614,12 +618,9 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
       }
     });
     std::vector<BuildItem>().swap(items);
-    // The nodes' copy, at most one a box, is never more than the list just
-    // freed (Bvh::bytesFor).
-    if (nodes_.size() <= n) nodes_.shrink_to_fit();
   };
   if (threads == 1) {
-    nodes_.resize(buildSubtree(in, 0, 0, n, 0, extent));
+    nodes_.shrink(buildSubtree(in, 0, 0, n, 0, extent));
     keepOrder();
     return;
   }
@@ -632,8 +633,48 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   subtrees.reserve(kMaxSubtrees);
   planTop(in, largest, subtrees, n, extent, threads);
   buildSubtrees(in, subtrees, threads);
-  nodes_.resize(closeGaps(nodes_, subtrees, 2 * n - 1));
+  nodes_.shrink(closeGaps(nodes_.data(), subtrees, 2 * n - 1));
   keepOrder();
+}
+
+BvhNodes::BvhNodes(std::size_t room) {
+  if (room == 0) return;
+  data_ = static_cast<BvhNode*>(std::malloc(room * sizeof(BvhNode)));
+  if (!data_) throw std::bad_alloc();
+  size_ = room;
+}
+
+BvhNodes::BvhNodes(const BvhNodes& other) : BvhNodes(other.size_) {
+  if (size_ > 0) std::memcpy(data_, other.data_, size_ * sizeof(BvhNode));
+}
+
+BvhNodes& BvhNodes::operator=(const BvhNodes& other) {
+  if (this != &other) *this = BvhNodes(other);
+  return *this;
+}
+
+BvhNodes& BvhNodes::operator=(BvhNodes&& other) noexcept {
+  std::swap(data_, other.data_);
+  std::swap(size_, other.size_);
+  return *this;
+}
+
+BvhNodes::~BvhNodes() {
+  std::free(data_);
+}
+
+void BvhNodes::shrink(std::size_t size) {
+  if (size >= size_) return;
+  if (size == 0) {
+    *this = BvhNodes();
+    return;
+  }
+  // Smaller: realloc cannot fail, and where the room was mapped apart
+  // (a large one) it unmaps the rest rather than copying.
+  if (void* smaller = std::realloc(data_, size * sizeof(BvhNode))) {
+    data_ = static_cast<BvhNode*>(smaller);
+  }
+  size_ = size;
 }
 
 std::vector<std::uint32_t> Bvh::takeOrder() {
@@ -644,13 +685,13 @@ std::vector<std::uint32_t> Bvh::takeOrder() {
 
 std::vector<std::uint32_t> Bvh::visitRanks(std::uint8_t signs) const {
   std::vector<std::uint32_t> rank(itemCount_, 0);
-  if (nodes_.empty()) return rank;
+  if (empty()) return rank;
   std::vector<std::uint32_t> stack{0};
   std::uint32_t next = 0;
   while (!stack.empty()) {
     std::uint32_t current = stack.back();
     stack.pop_back();
-    const BvhNode& node = nodes_[current];
+    const BvhNode& node = nodes()[current];
     if (node.count > 0) {
       for (std::uint32_t i = 0; i < node.count; ++i) rank[node.offset + i] = next++;
       continue;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -36,6 +37,35 @@ struct BvhNode {
   std::uint32_t offset = 0;
   std::uint16_t count = 0;  // items in a leaf; 0 for an interior node
   std::uint8_t axis = 0;    // split axis of an interior node
+  // Zero: every byte of a node is a member's, so a node written whole
+  // leaves none unset (BvhNodes' room is never cleared).
+  std::uint8_t unused = 0;
+};
+static_assert(sizeof(BvhNode) == 32);
+
+// The nodes of a Bvh, in one block from malloc, so that a build can reserve
+// room for the most nodes a tree can have, write only those it makes (a
+// page never written is never memory) and give back the rest with
+// realloc, which moves no node where the block was mapped on its own.
+class BvhNodes {
+ public:
+  BvhNodes() = default;
+  /// Room for `room` nodes, none written.
+  explicit BvhNodes(std::size_t room);
+  BvhNodes(const BvhNodes& other);
+  BvhNodes(BvhNodes&& other) noexcept { *this = std::move(other); }
+  BvhNodes& operator=(const BvhNodes& other);
+  BvhNodes& operator=(BvhNodes&& other) noexcept;
+  ~BvhNodes();
+
+  /// Keeps the first `size` nodes (all written), giving back the rest.
+  void shrink(std::size_t size);
+  BvhNode* data() { return data_; }
+  std::span<const BvhNode> span() const { return {data_, size_}; }
+
+ private:
+  BvhNode* data_ = nullptr;
+  std::size_t size_ = 0;
 };
 
 class Bvh {
@@ -49,9 +79,24 @@ class Bvh {
   /// cost for each node) finds them cheaper together than split: fewer
   /// nodes than leaves of one, and no list of items.
   static constexpr std::uint32_t kMaxLeafItems = 4;
-  /// Nodes the build reserves for each box, so that the node array never
-  /// grows (and never holds twice its size while it moves): a binary tree
-  /// whose leaves hold at least one box each has at most 2n - 1 nodes.
+  /// What the surface area heuristic prices a node at beside its items'
+  /// object tests (1 each), per unit of its area: the two box tests of a
+  /// split. Below kCompactFromBoxes, kNodeCost: objects apart from one
+  /// another then get leaves of their own, whose boxes cull before the
+  /// exact test; leaves of several (kCompactNodeCost, about 0.85 nodes an
+  /// object rather than 2 on sfgen's floor) made floor-1000000's shadow
+  /// rays a quarter slower (docs/TRACING.md), but hold a scene of
+  /// kCompactFromBoxes objects or more in 40 bytes an object less.
+  static constexpr double kNodeCost = 0.5;
+  static constexpr double kCompactNodeCost = 2.0;
+  static constexpr std::uint64_t kCompactFromBoxes = std::uint64_t{1} << 24;
+  static constexpr double nodeCostFor(std::uint64_t boxes) {
+    return boxes < kCompactFromBoxes ? kNodeCost : kCompactNodeCost;
+  }
+  /// Nodes the build reserves room for, for each box, so that the node
+  /// array never grows (and never holds twice its size while it moves): a
+  /// binary tree whose leaves hold at least one box each has at most 2n - 1
+  /// nodes. Only the pages of the nodes made become memory (BvhNodes).
   static constexpr std::uint64_t kNodesPerBox = 2;
 
   /// The most threads a build starts, whatever it is asked for: enough
@@ -69,20 +114,24 @@ class Bvh {
   /// order()[k]. `threads` threads share the build (0: the hardware's
   /// count); the tree is the same, node for node and item for item,
   /// whatever their number.
+  /// Each node is priced at nodeCostFor(count), or at `nodeCost`.
   Bvh(std::uint32_t count, const std::function<Bounds(std::uint32_t)>& boxOf, int threads);
+  Bvh(std::uint32_t count, const std::function<Bounds(std::uint32_t)>& boxOf, int threads,
+      double nodeCost);
   /// The same over boxes held in a list.
   explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
+  Bvh(const std::vector<Bounds>& boxes, int threads, double nodeCost);
 
-  /// The most bytes the build over `boxes` boxes holds at once: the nodes
-  /// as reserved (kNodesPerBox), a copy of each box beside its index that
-  /// it splits, the boxes' order (the list is freed before the nodes give
-  /// back what they do not use), and its list of subtrees for the threads.
+  /// The most bytes the build over `boxes` boxes holds at once: the nodes'
+  /// room (kNodesPerBox, all of it, as leaves of one box each may take it),
+  /// a copy of each box in float beside its index that it splits, the
+  /// boxes' order, and its list of subtrees for the threads.
   /// The boxes themselves are the caller's. Saturates: a hostile count
   /// gives UINT64_MAX, never a wrapped figure.
   static std::uint64_t bytesFor(std::uint64_t boxes);
 
-  bool empty() const { return nodes_.empty(); }
-  const std::vector<BvhNode>& nodes() const { return nodes_; }
+  bool empty() const { return nodes().empty(); }
+  std::span<const BvhNode> nodes() const { return nodes_.span(); }
   /// The items: one a box.
   std::uint32_t itemCount() const { return itemCount_; }
   /// Per item, the box it stands for, until taken.
@@ -101,10 +150,11 @@ class Bvh {
   // equal distances fall do not depend on the order in which boxes prune.
   template <typename Visit>
   void traverse(const BoxRay& ray, double tMax, Visit&& visit) const {
-    if (nodes_.empty()) return;
+    const BvhNode* nodes = nodes_.span().data();
+    if (empty()) return;
     NodeRay r(ray);
     double tEntry = 0.0;
-    if (!hitsNode(nodes_[0], r, tMax, tEntry)) return;
+    if (!hitsNode(nodes[0], r, tMax, tEntry)) return;
     // Both children are tested at their parent (two independent box tests
     // overlap in the pipeline, and a missed child is never pushed); the far
     // one waits on the stack with its entry distance, and is dropped when
@@ -117,7 +167,7 @@ class Bvh {
     int top = 0;
     std::uint32_t current = 0;
     for (;;) {
-      const BvhNode& node = nodes_[current];
+      const BvhNode& node = nodes[current];
       if (node.count > 0) {
         for (std::uint32_t i = 0; i < node.count; ++i) {
           tMax = visit(node.offset + i);
@@ -128,7 +178,7 @@ class Bvh {
         std::uint32_t farChild = node.offset;
         if (r.negative[node.axis]) std::swap(nearChild, farChild);
         double tEntries[2];
-        int hits = hitsChildren(nodes_[nearChild], nodes_[farChild], r, tMax, tEntries);
+        int hits = hitsChildren(nodes[nearChild], nodes[farChild], r, tMax, tEntries);
         bool hitNear = hits & 1;
         bool hitFar = hits & 2;
         if (hitNear) {
@@ -266,7 +316,7 @@ class Bvh {
 #endif
   }
 
-  std::vector<BvhNode> nodes_;
+  BvhNodes nodes_;
   std::uint32_t itemCount_ = 0;
   std::vector<std::uint32_t> order_;
 };

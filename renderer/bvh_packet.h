@@ -207,11 +207,12 @@ template <bool kWide, typename Visit>
   Pending stack[kStackSize + 1];
   int top = 0;
   alignas(64) double tEntries[kPacketSize];
-  int mask = r.template hits<kWide>(nodes_[0], tMaxes, tEntries);
+  const BvhNode* nodes = nodes_.span().data();
+  int mask = r.template hits<kWide>(nodes[0], tMaxes, tEntries);
   int stopped = 0;
   std::uint32_t current = 0;
   while (mask != 0) {
-    const BvhNode& node = nodes_[current];
+    const BvhNode& node = nodes[current];
     if (node.count > 0) {
       for (std::uint32_t i = 0; i < node.count && mask != 0; ++i) {
         std::uint32_t item = node.offset + i;
@@ -233,8 +234,8 @@ template <bool kWide, typename Visit>
       if (r.negative[node.axis]) std::swap(nearChild, farChild);
       alignas(64) double nearEntries[kPacketSize];
       Pending& far = stack[top];
-      int hitNear = r.template hits<kWide>(nodes_[nearChild], tMaxes, nearEntries) & mask;
-      int hitFar = r.template hits<kWide>(nodes_[farChild], tMaxes, far.tEntry) & mask;
+      int hitNear = r.template hits<kWide>(nodes[nearChild], tMaxes, nearEntries) & mask;
+      int hitFar = r.template hits<kWide>(nodes[farChild], tMaxes, far.tEntry) & mask;
       if (hitNear != 0) {
         if (hitFar != 0) {
           far.node = farChild;
@@ -272,7 +273,7 @@ template <typename Visit>
 
 template <typename Visit>
 void Bvh::traversePacket(const BoxRay* rays, int count, const double* tMax, Visit&& visit) const {
-  if (nodes_.empty() || count <= 0) return;
+  if (empty() || count <= 0) return;
   if (count > kPacketSize) count = kPacketSize;
   if (count == 1 || !detail::PacketNodeRays::sameSigns(rays, count)) {
     for (int lane = 0; lane < count; ++lane) {

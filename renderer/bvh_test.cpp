@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace render {
@@ -73,12 +74,11 @@ void expectSameTree(const Bvh& a, const Bvh& b, int threads) {
   }
 }
 
-// Every item in exactly one leaf of at most Bvh::kMaxLeafItems (but past
-// the greatest depth), every box one item's, every second child after its
-// sibling.
+// Every item in exactly one leaf, every box one item's, every second child
+// after its sibling.
 void expectWellFormed(const Bvh& bvh, std::size_t boxes) {
   std::vector<int> seen(boxes, 0);
-  const std::vector<BvhNode>& nodes = bvh.nodes();
+  std::span<const BvhNode> nodes = bvh.nodes();
   ASSERT_EQ(bvh.itemCount(), boxes);
   std::vector<std::uint32_t> order = bvh.order();
   std::sort(order.begin(), order.end());
@@ -106,11 +106,15 @@ TEST(BvhBuild, TheTreeIsTheSameWhateverTheThreadCount) {
     for (int threads : {2, 4, 64}) expectSameTree(one, Bvh(boxes, threads), threads);
   }
   // Enough boxes that the root bins them on several threads and partitions
-  // them in blocks, side by side.
+  // them in blocks, side by side; with leaves of one box and of several.
   std::vector<Bounds> boxes = randomBoxes(300000, 300000);
-  Bvh one(boxes, 1);
-  expectWellFormed(one, boxes.size());
-  for (int threads : {2, 3}) expectSameTree(one, Bvh(boxes, threads), threads);
+  for (double nodeCost : {Bvh::kNodeCost, Bvh::kCompactNodeCost}) {
+    Bvh one(boxes, 1, nodeCost);
+    expectWellFormed(one, boxes.size());
+    for (int threads : {2, 3}) {
+      expectSameTree(one, Bvh(boxes, threads, nodeCost), threads);
+    }
+  }
 }
 
 // Past the greatest depth the build makes leaves of many boxes, which take
@@ -167,7 +171,7 @@ TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
   // The same in every pair of leaves of a larger tree.
   std::vector<Bounds> boxes = randomBoxes(5, 5000);
   Bvh bvh(boxes, 1);
-  const std::vector<BvhNode>& nodes = bvh.nodes();
+  std::span<const BvhNode> nodes = bvh.nodes();
   int pairs = 0;
   for (std::size_t i = 0; i + 2 < nodes.size(); ++i) {
     const BvhNode& node = nodes[i];
@@ -190,17 +194,18 @@ TEST(BvhBuild, TwoItemsGoLowerCentreFirstOnTheirWidestAxis) {
 // 16 bins along the widest axis of their centres, prices the split after
 // each of bins 0 to 14 by the surface area heuristic, takes the first of
 // the cheapest (std::min_element) when it leaves items on both sides and
-// costs less than a leaf would (at most 4 items: their count times the
-// node's area, against half the area plus the split's price), makes a leaf
-// of at most 4 items otherwise, and else halves the list at the median. Two
-// items are priced as split apart.
+// costs less than a leaf would (at most Bvh::kMaxLeafItems items: their
+// count times the node's area, against nodeCost times the area plus the
+// split's price), makes a leaf of at most that many otherwise, and else
+// halves the list at the median. Two items are priced as split apart.
 struct ReferenceBuild {
   std::vector<Bounds> boxes;
   std::vector<std::uint32_t> items;
   std::vector<BvhNode> nodes;
+  double nodeCost;
 
-  static bool leafIsCheaper(std::uint32_t count, double area, double splitCost) {
-    return count <= 4 && count * area <= 0.5 * area + splitCost;
+  bool leafIsCheaper(std::uint32_t count, double area, double splitCost) {
+    return count <= Bvh::kMaxLeafItems && count * area <= nodeCost * area + splitCost;
   }
 
   std::uint32_t leaf(std::uint32_t at, std::uint32_t begin, std::uint32_t end) {
@@ -267,7 +272,7 @@ struct ReferenceBuild {
         split = true;
       }
     }
-    if (!split && count <= 4) return leaf(at, begin, end);
+    if (!split && count <= Bvh::kMaxLeafItems) return leaf(at, begin, end);
     if (!split) {
       std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
                        [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
@@ -298,24 +303,27 @@ std::vector<Bounds> gridBoxes(std::uint64_t seed, int count) {
 // splits, and works each child's extent out from its bins) makes the
 // reference's tree, node for node and item for item.
 TEST(BvhBuild, SplitsAsThePlainBinnedSurfaceAreaRuleDoes) {
-  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
-    int count = 2 + static_cast<int>(seed % 90);
-    std::vector<Bounds> boxes = seed % 2 ? gridBoxes(seed, count) : randomBoxes(seed, count);
-    if (seed % 6 == 0) {
-      // Near the end of the float range.
-      for (Bounds& box : boxes) box = Bounds{box.lo * 1e36, box.hi * 1e36};
+  for (double nodeCost : {Bvh::kNodeCost, Bvh::kCompactNodeCost}) {
+    for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+      int count = 2 + static_cast<int>(seed % 90);
+      std::vector<Bounds> boxes = seed % 2 ? gridBoxes(seed, count) : randomBoxes(seed, count);
+      if (seed % 6 == 0) {
+        // Near the end of the float range.
+        for (Bounds& box : boxes) box = Bounds{box.lo * 1e36, box.hi * 1e36};
+      }
+      ReferenceBuild reference{{}, {}, {}, nodeCost};
+      for (const Bounds& box : boxes) reference.boxes.push_back(floatBox(box));
+      for (std::uint32_t i = 0; i < boxes.size(); ++i) reference.items.push_back(i);
+      reference.build(0, 0, static_cast<std::uint32_t>(boxes.size()));
+      Bvh bvh(boxes, 1, nodeCost);
+      ASSERT_EQ(bvh.order(), reference.items) << "seed " << seed << ", cost " << nodeCost;
+      ASSERT_EQ(bvh.nodes().size(), reference.nodes.size())
+          << "seed " << seed << ", cost " << nodeCost;
+      ASSERT_EQ(std::memcmp(bvh.nodes().data(), reference.nodes.data(),
+                            reference.nodes.size() * sizeof(BvhNode)),
+                0)
+          << "seed " << seed << ", cost " << nodeCost;
     }
-    ReferenceBuild reference{{}, {}, {}};
-    for (const Bounds& box : boxes) reference.boxes.push_back(floatBox(box));
-    for (std::uint32_t i = 0; i < boxes.size(); ++i) reference.items.push_back(i);
-    reference.build(0, 0, static_cast<std::uint32_t>(boxes.size()));
-    Bvh bvh(boxes, 1);
-    ASSERT_EQ(bvh.order(), reference.items) << "seed " << seed;
-    ASSERT_EQ(bvh.nodes().size(), reference.nodes.size()) << "seed " << seed;
-    ASSERT_EQ(std::memcmp(bvh.nodes().data(), reference.nodes.data(),
-                          reference.nodes.size() * sizeof(BvhNode)),
-              0)
-        << "seed " << seed;
   }
 }
 

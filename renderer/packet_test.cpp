@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "renderer/bvh_packet.h"
@@ -119,7 +120,7 @@ TEST(Packets, RaysInBoxPlanesAndAlongAxesFindTheirOwnClosestHits) {
   Random random(43);
   for (int trial = 0; trial < 30; ++trial) {
     RenderScene compiled(randomScene(random, 2 + random.below(100)));
-    const std::vector<BvhNode>& nodes = compiled.bvh().nodes();
+    std::span<const BvhNode> nodes = compiled.bvh().nodes();
     ASSERT_FALSE(nodes.empty());
     for (int packet = 0; packet < 50; ++packet) {
       // Origins on a node's face planes, directions with components of +0
@@ -176,7 +177,9 @@ TEST(Packets, RaysLeavingSurfacesFindTheirOwnClosestHits) {
 
 // The leaves each lane visits, and the tMax it has before each, are those of
 // Bvh::traverse for its ray alone, whatever the visitor returns: a made-up
-// tMax that shrinks at some items, and stops a ray at others.
+// tMax that shrinks at some items, and stops a ray at others; with leaves
+// of one box and of several (odd trials: Bvh::kCompactNodeCost), where the
+// tMax changes between the items of a leaf.
 TEST(Packets, EachLaneVisitsTheItemsOfItsOwnTraversalInOrder) {
   Random random(45);
   for (int trial = 0; trial < 40; ++trial) {
@@ -187,7 +190,7 @@ TEST(Packets, EachLaneVisitsTheItemsOfItsOwnTraversalInOrder) {
       glm::dvec3 half(random.uniform(0.01, 2), random.uniform(0.01, 2), random.uniform(0.01, 2));
       boxes.push_back(Bounds{centre - half, centre + half});
     }
-    Bvh bvh(boxes);
+    Bvh bvh(boxes, 1, trial % 2 ? Bvh::kCompactNodeCost : Bvh::kNodeCost);
     // A tMax per item from its index: some items end the ray.
     auto tMaxAt = [&](std::uint32_t item, double tMax) {
       if (item % 17 == 3) return -1.0;

@@ -97,11 +97,9 @@ TEST(RenderMemory, TheEstimateBoundsWhatIsAllocated) {
 
   const Bvh& bvh = compiled.bvh();
   std::uint64_t boxes = s.objects.size() - 1;  // the plane is not in the BVH
-  EXPECT_LE(bvh.nodes().capacity(), Bvh::kNodesPerBox * boxes);
   EXPECT_LE(bvh.nodes().size(), 2 * boxes - 1);
-  EXPECT_LE(
-      bvh.nodes().capacity() * sizeof(BvhNode) + bvh.order().capacity() * sizeof(std::uint32_t),
-      Bvh::bytesFor(boxes));
+  EXPECT_LE(bvh.nodes().size_bytes() + bvh.order().capacity() * sizeof(std::uint32_t),
+            Bvh::bytesFor(boxes));
 
   // The constructor builds the lights' grids whatever the samples.
   RenderScene::Bytes bytes =
@@ -116,8 +114,7 @@ TEST(RenderMemory, TheEstimateBoundsWhatIsAllocated) {
     ASSERT_NE(compiled.lightGrid(l), nullptr);
     grids += compiled.lightGrid(l)->bytes();
   }
-  EXPECT_LE(bvh.nodes().capacity() * sizeof(BvhNode) +
-                bvh.order().capacity() * sizeof(std::uint32_t) + grids,
+  EXPECT_LE(bvh.nodes().size_bytes() + bvh.order().capacity() * sizeof(std::uint32_t) + grids,
             bytes.bvh);
 
   RenderSettings settings;

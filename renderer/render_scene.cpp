@@ -173,7 +173,7 @@ RenderSceneMemory RenderScene::memory() const {
   memory.records = heldBytes(objects_) + heldBytes(colours_) + heldBytes(materials_) +
                    heldBytes(sceneObjects_) + heldBytes(planes_) + heldBytes(planeNormals_) +
                    heldBytes(lights_);
-  memory.bvh = heldBytes(bvh_.nodes()) + heldBytes(bvh_.order());
+  memory.bvh = bvh_.nodes().size_bytes() + heldBytes(bvh_.order());
   memory.grids = heldBytes(leafOf_);
   for (const DirectionGrid& grid : lightGrids_) memory.grids += grid.bytes();
   return memory;
@@ -184,7 +184,7 @@ void RenderScene::buildLightGrids(int threads) {
   // float, rounded outward from the items' (so holding them), read from the
   // nodes rather than copied into a list of their own; a shadow ray through
   // a cell tests the same box before the object (meetsItemBox).
-  const std::vector<BvhNode>& nodes = bvh_.nodes();
+  std::span<const BvhNode> nodes = bvh_.nodes();
   leafOf_.resize(bounded_.size());
   for (std::uint32_t node = 0; node < nodes.size(); ++node) {
     for (std::uint32_t k = 0; k < nodes[node].count; ++k) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <span>
 
 #include "renderer/parallel_parts.h"
 
@@ -74,7 +75,7 @@ void packScene(const RenderScene& scene, const GpuSceneLayout& layout, char* out
              }
            });
   auto* nodes = reinterpret_cast<std::uint32_t*>(out + layout.nodes.offset);
-  const std::vector<BvhNode>& bvhNodes = scene.bvh().nodes();
+  std::span<const BvhNode> bvhNodes = scene.bvh().nodes();
   for (std::size_t i = 0; i < bvhNodes.size(); ++i) packNode(bvhNodes[i], nodes + i * 8);
   const std::vector<std::uint32_t>& planes = scene.planeObjects();
   if (!planes.empty()) {
