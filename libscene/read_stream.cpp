@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstring>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -66,23 +67,23 @@ StreamReadResult readWhole(const std::filesystem::path& path, const ReadOptions&
 }
 
 // The bytes of an open file, read into a buffer that holds one window and
-// the start of the next.
+// the start of the next. While a window is parsed, the next one is read into
+// a second buffer on a thread of its own (readAhead, takeAhead).
 class WindowBuffer {
  public:
   WindowBuffer(int fd, std::size_t window) : fd_(fd), window_(window) {}
+  WindowBuffer(const WindowBuffer&) = delete;
+  WindowBuffer& operator=(const WindowBuffer&) = delete;
+  ~WindowBuffer() { takeAhead(); }
 
   // Fills the buffer up to the window's size, the start of the next window
   // that it holds included (so that its room is made once); false where the
   // read failed.
   bool fill() {
     if (bytes_.size() < window_) bytes_.resize(window_);
-    while (!atEnd_ && held_ < bytes_.size()) {
-      ssize_t n = ::read(fd_, bytes_.data() + held_, bytes_.size() - held_);
-      if (n < 0 && errno == EINTR) continue;
-      if (n < 0) return false;
-      if (n == 0) atEnd_ = true;
-      held_ += static_cast<std::size_t>(n);
-      total_ += static_cast<std::uint64_t>(n);
+    if (failed_ || !readInto(bytes_, held_)) {
+      failed_ = true;
+      return false;
     }
     return true;
   }
@@ -100,10 +101,33 @@ class WindowBuffer {
     return 0;
   }
 
-  // Drops the window's `end` bytes, keeping what follows them.
-  void drop(std::size_t end) {
-    std::memmove(bytes_.data(), bytes_.data() + end, held_ - end);
-    held_ -= end;
+  // Starts reading what follows the window's `end` bytes into the second
+  // buffer, after the bytes the buffer holds past `end`: on a thread of its
+  // own, so that the reading overlaps the window's parse (where no thread
+  // can start, here and now). The window's text stays as it is until
+  // takeAhead.
+  void readAhead(std::size_t end) {
+    ahead_.resize(std::max(window_, held_ - end));
+    std::memcpy(ahead_.data(), bytes_.data() + end, held_ - end);
+    aheadHeld_ = held_ - end;
+    readingAhead_ = true;
+    auto read = [this] { aheadRead_ = readInto(ahead_, aheadHeld_); };
+    try {
+      reader_ = std::thread(read);
+    } catch (const std::system_error&) {
+      read();
+    }
+  }
+
+  // Waits for readAhead's reading, whose buffer then becomes this one: the
+  // window is dropped, what followed it kept.
+  void takeAhead() {
+    if (reader_.joinable()) reader_.join();
+    if (!readingAhead_) return;
+    readingAhead_ = false;
+    std::swap(bytes_, ahead_);
+    held_ = aheadHeld_;
+    failed_ = failed_ || !aheadRead_;
   }
 
   // A buffer of one more window, for a record longer than the window.
@@ -112,17 +136,37 @@ class WindowBuffer {
   std::string_view text(std::size_t end) const { return {bytes_.data(), end}; }
   std::string_view held() const { return {bytes_.data(), held_}; }
   bool empty() const { return held_ == 0; }
-  bool atEnd() const { return atEnd_; }
   std::uint64_t total() const { return total_; }
-  std::uint64_t capacity() const { return bytes_.capacity(); }
+  std::uint64_t capacity() const { return bytes_.capacity() + ahead_.capacity(); }
 
  private:
+  // Reads the file into `bytes` from `held` on, until it is full or the
+  // file ends; false where the read failed.
+  bool readInto(std::vector<char>& bytes, std::size_t& held) {
+    while (!atEnd_ && held < bytes.size()) {
+      ssize_t n = ::read(fd_, bytes.data() + held, bytes.size() - held);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) return false;
+      if (n == 0) atEnd_ = true;
+      held += static_cast<std::size_t>(n);
+      total_ += static_cast<std::uint64_t>(n);
+    }
+    return true;
+  }
+
   int fd_;
   std::size_t window_;
   std::vector<char> bytes_;
   std::size_t held_ = 0;
   std::uint64_t total_ = 0;
   bool atEnd_ = false;
+  bool failed_ = false;
+  // The next window's buffer, while readAhead's thread fills it.
+  std::vector<char> ahead_;
+  std::size_t aheadHeld_ = 0;
+  bool readingAhead_ = false;
+  bool aheadRead_ = true;
+  std::thread reader_;
 };
 
 // What the windows read so far made of the file.
@@ -180,14 +224,16 @@ bool readWindow(std::string_view text, const ReadOptions& options, unsigned thre
 // to the whole-file reader.
 bool readWindows(WindowBuffer& buffer, const ReadOptions& options, unsigned threads,
                  const ObjectBatchSink& sink, StreamedScene& done) {
-  SceneFileWindowRead read;
+  SceneFileWindowRead windowRead;
   while (!buffer.empty()) {
     std::size_t end = buffer.windowEnd();
     if (end == 0) {
       buffer.grow();
     } else {
-      if (!readWindow(buffer.text(end), options, threads, read, done, sink)) return false;
-      buffer.drop(end);
+      buffer.readAhead(end);
+      bool read = readWindow(buffer.text(end), options, threads, windowRead, done, sink);
+      buffer.takeAhead();
+      if (!read) return false;
     }
     done.memory.textBytes = std::max(done.memory.textBytes, buffer.capacity());
     if (options.stop.stop_requested()) return true;

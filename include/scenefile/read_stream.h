@@ -50,8 +50,9 @@ struct StreamReadResult {
 /// its objects to `sink` in file order, each once. A scene file (.sf) larger
 /// than one window is read a window at a time (SceneFileReadOptions::
 /// windowBytes on each of options.threads threads), each cut at a record's
-/// first line and parsed in parts on those threads: the text is never held
-/// whole, and the objects only a window's at a time. Where a window holds a
+/// first line and parsed in parts on those threads, while the next window
+/// is read: the text is never held whole (two windows at most), and the
+/// objects only a window's at a time. Where a window holds a
 /// diagnostic of any kind, the file is read again, whole, by readSceneFile,
 /// so that the diagnostics are exactly its (the whole-file reader recovers
 /// from an error across windows), and the objects the sink has not had yet
