@@ -522,16 +522,29 @@ std::uint32_t closeGaps(BvhNode* nodes, const std::vector<Subtree>& subtrees,
     return k == 0 ? index : index - shifts[k - 1];
   };
   std::uint32_t out = 0;
-  std::size_t k = 0;
-  for (std::uint32_t index = 0; index < reserved;) {
-    if (k < subtrees.size() && index == subtrees[k].at + subtrees[k].used) {
-      index = gapEnds[k++];  // past the gap
-      continue;
+  std::uint32_t index = 0;
+  // The nodes of the top of the tree from `index` to `end`: their second
+  // children may lie past any gap.
+  auto moveTop = [&](std::uint32_t end) {
+    for (; index < end; ++index) {
+      BvhNode node = nodes[index];
+      if (node.count == 0) node.offset = moved(node.offset);
+      nodes[out++] = node;
     }
-    BvhNode node = nodes[index++];
-    if (node.count == 0) node.offset = moved(node.offset);
-    nodes[out++] = node;
+  };
+  for (std::size_t k = 0; k < subtrees.size(); ++k) {
+    const Subtree& s = subtrees[k];
+    moveTop(s.at);
+    // A subtree's second children lie in it, and move as far as it does.
+    const std::uint32_t down = s.at - out;
+    for (std::uint32_t i = s.at; i < s.at + s.used; ++i) {
+      BvhNode node = nodes[i];
+      if (node.count == 0) node.offset -= down;
+      nodes[out++] = node;
+    }
+    index = gapEnds[k];  // past the gap
   }
+  moveTop(reserved);
   return out;
 }
 
