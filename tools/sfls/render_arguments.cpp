@@ -7,6 +7,7 @@
 #include "renderer/adaptive_sampling.h"
 #include "renderer/image.h"
 #include "renderer/render_memory.h"
+#include "renderer/render_settings.h"
 #include "renderer/saturating.h"
 #include "scenefile/render.h"
 #include "scenefile/validation.h"
@@ -126,9 +127,7 @@ Refusal renderResourceRefusal(const render::RenderSettings& s, const scene::Scen
                                     .materials = scene.objects.size(),
                                     .width = s.width,
                                     .height = s.height,
-                                    // Its renders build the lights' grids
-                                    // whatever the samples.
-                                    .cameraSamples = UINT64_MAX,
+                                    .cameraSamples = render::uniformSampleCount(s),
                                     .coverage = s.coverage});
   if (s.adaptiveThreshold > 0) {
     estimate.image = render::saturatingSum(

@@ -9,6 +9,8 @@
 #include "image/image_file.h"
 #include "renderer/render.h"
 #include "renderer/render_memory.h"
+#include "renderer/render_scene.h"
+#include "renderer/render_settings.h"
 #include "scenefile/validation.h"
 #include "tools/common/document_check.h"
 #include "tools/common/file_io.h"
@@ -75,7 +77,10 @@ RenderOutcome renderScene(const scene::Scene& scene, render::RenderSettings sett
   }
   image::fitRenderToImage(target, imageOptions, settings);
   if (progress) progress(0, "preparing the scene");
-  render::RenderScene compiled(scene, tools::renderThreadCount(settings.threads), true);
+  // The lights' grids only where they pay, as sfrender decides.
+  render::RenderScene compiled(scene, tools::renderThreadCount(settings.threads),
+                               render::RenderScene::lightGridsPay(
+                                   scene.objects.size(), render::uniformSampleCount(settings)));
   if (cancel.requested()) return cancelledOutcome();
   std::string rendering =
       "rendering " + std::to_string(settings.width) + "x" + std::to_string(settings.height);
