@@ -55,11 +55,17 @@ struct BuildItem {
 
 // What a node's split works with: the items and the nodes being written,
 // shared by every thread of a build (each writes only its own range of
-// items and of nodes), and the price of a node (Bvh::nodeCostFor).
+// items and of nodes), the price of a node (Bvh::nodeCostFor) and the
+// fewest items a leaf holds (Bvh::minLeafItemsFor).
 struct BuildInput {
   BuildItem* items;
   BvhNode* nodes;
   double nodeCost;
+  std::uint32_t minLeafItems;
+  // The nodes a range of `count` items may take (Bvh::mostNodes).
+  std::uint32_t mostNodes(std::uint32_t count) const {
+    return static_cast<std::uint32_t>(Bvh::mostNodes(count, minLeafItems));
+  }
 };
 
 // A node's box and the box of its items' centres: what its split needs
@@ -253,18 +259,23 @@ Bins fewItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, cons
 // The split of least cost by the surface area heuristic, as the index in
 // `bins` of the last bin on the left. The splits are those after bins 0 to
 // kBins - 2, priced as left count * left area + right count * right area,
-// and the first of the cheapest is taken. The split after a bin with no
-// item prices the same as the split after the bin before it, so leaving
-// the bin out changes neither the price of any split nor which is first of
-// the cheapest. Bin 0, which holds the lowest centre, is never left out.
-// Returns the bin and the price.
-std::pair<int, double> cheapestSplit(const Bins& bins) {
+// and the first of the cheapest is taken. With leaves of at least two
+// items, a split leaving either side fewer is no candidate (one leaving a
+// side none is left to the caller, as it always was). The split after a
+// bin with no item prices and counts the same as the split after the bin
+// before it, so leaving the bin out changes neither the price of any split
+// nor which is first of the cheapest. Bin 0, which holds the lowest
+// centre, is never left out. Returns the bin (-1 where no split is a
+// candidate) and the price.
+std::pair<int, double> cheapestSplit(const Bins& bins, std::uint32_t minLeafItems) {
   // Right to left: what the bins after each one cost.
   std::array<double, kBins> rightCost;
+  std::array<std::uint32_t, kBins> rightCounts;
   Bounds right;
   std::uint32_t rightCount = 0;
   for (int j = bins.size - 1; j >= 0; --j) {
     rightCost[j] = rightCount ? rightCount * right.surfaceArea() : 0.0;
+    rightCounts[j] = rightCount;
     right.extend(bins.extent[j].bounds);
     rightCount += bins.count[j];
   }
@@ -275,6 +286,7 @@ std::pair<int, double> cheapestSplit(const Bins& bins) {
   for (int j = 0; j < bins.size && bins.number[j] <= kBins - 2; ++j) {
     left.extend(bins.extent[j].bounds);
     leftCount += bins.count[j];
+    if (minLeafItems > 1 && (leftCount < minLeafItems || rightCounts[j] < minLeafItems)) continue;
     double cost = (leftCount ? leftCount * left.surfaceArea() : 0.0) + rightCost[j];
     if (cheapest < 0 || cost < least) {
       cheapest = j;
@@ -319,6 +331,11 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     writeLeaf(node, begin, count, extentIn.bounds);
     return std::nullopt;
   }
+  if (count < 2 * in.minLeafItems) {
+    // No split leaves each side a leaf's fewest items.
+    writeLeaf(node, begin, count, extentIn.bounds);
+    return std::nullopt;
+  }
   writeBox(node, extentIn.bounds);
 
   // Step 1: the widest axis of the centres; all centres equal means no split
@@ -353,7 +370,7 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     BinRule rule{axis, centreBounds.lo[axis], kBins / extent[axis]};
     Bins bins = count <= kFewItems ? fewItemsBins(items, begin, end, rule)
                                    : manyItemsBinsInParts(items, begin, end, rule, threads);
-    auto [cheapest, splitCost] = cheapestSplit(bins);
+    auto [cheapest, splitCost] = cheapestSplit(bins, in.minLeafItems);
     std::uint32_t leftCount = 0;
     for (int j = 0; j <= cheapest; ++j) leftCount += bins.count[j];
     if (leftCount != 0 && leftCount != count &&
@@ -373,11 +390,13 @@ std::optional<std::uint32_t> splitNode(const BuildInput& in, BvhNode& node, std:
     }
   }
   if (count <= kMaxLeafItems) {
-    // No split of these few (all centres in one bin, or one place) beats
-    // them together.
+    // No split of these few (all centres in one bin, or one place, or no
+    // split leaving each side a leaf's fewest) beats them together.
     writeLeaf(node, begin, count, extentIn.bounds);
     return std::nullopt;
   }
+  // The median: more than kMaxLeafItems items leave each side two or more.
+  static_assert(kMaxLeafItems >= 3);
   std::nth_element(
       items + begin, items + mid, items + end,
       [&](const BuildItem& a, const BuildItem& b) { return a.centre(axis) < b.centre(axis); });
@@ -404,8 +423,8 @@ std::uint32_t buildSubtree(const BuildInput& in, std::uint32_t at, std::uint32_t
 }
 
 // A subtree left to the threads: items [begin, end) at `depth`, built into
-// the nodes from `at`, where 2 (end - begin) - 1 nodes, the most it can
-// take, are kept for it; `used` is how many it took.
+// the nodes from `at`, where BuildInput::mostNodes(end - begin) nodes, the
+// most it can take, are kept for it; `used` is how many it took.
 struct Subtree {
   std::uint32_t begin = 0;
   std::uint32_t end = 0;
@@ -437,8 +456,8 @@ struct TopRange {
 // above kMaxDepth, where buildSubtree makes the leaves), built a level at a
 // time, the splits of a level side by side on `threads` threads. Each node
 // sits where it would if every subtree took all it may: a range of c items
-// keeps 2c - 1 nodes, so the second child of a split at `at` is at
-// at + 2 (mid - begin). Leaves `subtrees` in node order.
+// keeps in.mostNodes(c), so the second child of a split at `at` is at
+// at + 1 + in.mostNodes(mid - begin). Leaves `subtrees` in node order.
 void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
              std::uint32_t count, const NodeExtent& extent, int threads) {
   std::vector<TopRange> level{TopRange{0, 0, count, 0, extent}};
@@ -470,7 +489,7 @@ void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& 
     next.clear();
     for (std::size_t k = 0; k < splitting.size(); ++k) {
       const TopRange& r = splitting[k];
-      std::uint32_t second = r.at + 2 * (mids[k] - r.begin);
+      std::uint32_t second = r.at + 1 + in.mostNodes(mids[k] - r.begin);
       in.nodes[r.at].offset = second;
       next.push_back(TopRange{r.at + 1, r.begin, mids[k], r.depth + 1, children[k][0]});
       next.push_back(TopRange{second, mids[k], r.end, r.depth + 1, children[k][1]});
@@ -503,15 +522,16 @@ void buildSubtrees(const BuildInput& in, std::vector<Subtree>& subtrees, int thr
 // (leaves of several items make them): moves each
 // stretch of nodes down and renumbers the second children. Returns the
 // node count.
-std::uint32_t closeGaps(BvhNode* nodes, const std::vector<Subtree>& subtrees,
+std::uint32_t closeGaps(const BuildInput& in, const std::vector<Subtree>& subtrees,
                         std::uint32_t reserved) {
+  BvhNode* nodes = in.nodes;
   // shifts[k]: how far nodes past subtree k's reserved nodes move down.
   std::vector<std::uint32_t> gapEnds(subtrees.size());
   std::vector<std::uint32_t> shifts(subtrees.size());
   std::uint32_t shift = 0;
   for (std::size_t k = 0; k < subtrees.size(); ++k) {
     const Subtree& s = subtrees[k];
-    std::uint32_t kept = 2 * (s.end - s.begin) - 1;
+    std::uint32_t kept = in.mostNodes(s.end - s.begin);
     shift += kept - s.used;
     gapEnds[k] = s.at + kept;
     shifts[k] = shift;
@@ -569,14 +589,18 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
       kMaxBuildThreads * (sizeof(Bins) + sizeof(std::exception_ptr));
   constexpr std::uint64_t kParallelBytes = kMaxSubtrees * kSubtreeBytes + kLevelBytes +
                                            kRootBinBytes + kMaxBuildThreads * sizeof(std::thread);
-  std::uint64_t perBox = kNodesPerBox * sizeof(BvhNode) + sizeof(std::uint32_t) + sizeof(BuildItem);
+  std::uint64_t perBox = sizeof(std::uint32_t) + sizeof(BuildItem);
+  // The nodes' room (mostNodes, and a node over).
+  std::uint64_t nodeRoom =
+      saturatingProduct(boxes, (2 / minLeafItemsFor(nodeCostFor(boxes))) * sizeof(BvhNode));
   // A split partitioning in blocks (one at a time on a thread).
   std::uint64_t partitionBytes =
       boxes >= kMinItemsPartitionedInBlocks
           ? kMaxBuildThreads * (boxes / kPartitionBlock + 1) * kPartitionBytesPerBlock
           : 0;
-  return saturatingSum(saturatingSum(saturatingProduct(boxes, perBox), partitionBytes),
-                       boxes >= kMinParallelBoxes ? kParallelBytes : 0);
+  return saturatingSum(
+      saturatingSum(saturatingSum(saturatingProduct(boxes, perBox), nodeRoom), partitionBytes),
+      boxes >= kMinParallelBoxes ? kParallelBytes : 0);
 }
 
 Bvh::Bvh(const std::vector<Bounds>& boxes, int threads)
@@ -601,7 +625,8 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   // becomes memory when a node is first written in it.
   std::vector<BuildItem> items;
   allocateHere(items, n);
-  nodes_ = BvhNodes(kNodesPerBox * n - 1);
+  const std::uint32_t minLeafItems = minLeafItemsFor(nodeCost);
+  nodes_ = BvhNodes(mostNodes(n, minLeafItems));
   items.resize(n);
   const std::size_t parts = static_cast<std::size_t>(threads);
   std::vector<NodeExtent> extents(parts);
@@ -617,7 +642,7 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   });
   NodeExtent extent;
   for (const NodeExtent& part : extents) extent.extend(part);
-  BuildInput in{items.data(), nodes_.data(), nodeCost};
+  BuildInput in{items.data(), nodes_.data(), nodeCost, minLeafItems};
   itemCount_ = n;
   // The boxes' numbers in the order the build left them, which the leaves'
   // items follow; then the build's list goes. (The nodes have given back
@@ -646,7 +671,7 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   subtrees.reserve(kMaxSubtrees);
   planTop(in, largest, subtrees, n, extent, threads);
   buildSubtrees(in, subtrees, threads);
-  nodes_.shrink(closeGaps(nodes_.data(), subtrees, 2 * n - 1));
+  nodes_.shrink(closeGaps(in, subtrees, in.mostNodes(n)));
   keepOrder();
 }
 

@@ -93,11 +93,24 @@ class Bvh {
   static constexpr double nodeCostFor(std::uint64_t boxes) {
     return boxes < kCompactFromBoxes ? kNodeCost : kCompactNodeCost;
   }
-  /// Nodes the build reserves room for, for each box, so that the node
-  /// array never grows (and never holds twice its size while it moves): a
-  /// binary tree whose leaves hold at least one box each has at most 2n - 1
-  /// nodes. Only the pages of the nodes made become memory (BvhNodes).
-  static constexpr std::uint64_t kNodesPerBox = 2;
+  /// The fewest items a leaf holds in a tree priced at `nodeCost` (a tree
+  /// of one box aside): 2 at kCompactNodeCost or more, so that such a tree
+  /// has at most n / 2 leaves, so n - 1 nodes, and Bvh::bytesFor need count
+  /// only that much room (half of 2n - 1); 1 below it.
+  static constexpr std::uint32_t minLeafItemsFor(double nodeCost) {
+    return nodeCost >= kCompactNodeCost ? 2 : 1;
+  }
+  /// Room for the nodes of a tree over `boxes` boxes whose leaves (but a
+  /// lone box's) hold at least `minLeafItems` (1 or 2): 2n - 1 or n - 1,
+  /// as a tree of L leaves has 2L - 1 nodes. The room of a split is one
+  /// node and its children's rooms, exactly, so a build on threads lays
+  /// out the top of the tree in it with gaps only where a subtree took
+  /// less. The build reserves it, so that the node array never grows (nor
+  /// holds twice its size while it moves); only the pages of the nodes made
+  /// become memory (BvhNodes).
+  static constexpr std::uint64_t mostNodes(std::uint64_t boxes, std::uint32_t minLeafItems) {
+    return boxes > 1 ? boxes * (2 / minLeafItems) - 1 : boxes;
+  }
 
   /// The most threads a build starts, whatever it is asked for: enough
   /// for any machine this runs on, and what bounds the build's task list.
@@ -122,8 +135,9 @@ class Bvh {
   explicit Bvh(const std::vector<Bounds>& boxes, int threads = 1);
   Bvh(const std::vector<Bounds>& boxes, int threads, double nodeCost);
 
-  /// The most bytes the build over `boxes` boxes holds at once: the nodes'
-  /// room (kNodesPerBox, all of it, as leaves of one box each may take it),
+  /// The most bytes the build over `boxes` boxes holds at once, priced at
+  /// nodeCostFor(boxes): the nodes' room (mostNodes, all of it, as the
+  /// smallest leaves may take it: 64 bytes a box, 32 for the compact tree),
   /// a copy of each box in float beside its index that it splits, the
   /// boxes' order, and its list of subtrees for the threads.
   /// The boxes themselves are the caller's. Saturates: a hostile count

@@ -14,6 +14,7 @@
 #include <limits>
 #include <random>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace render {
@@ -227,7 +228,8 @@ struct ReferenceBuild {
       nodes[at].planes[3 + i] = floatAtOrAbove(bounds.hi[i]);
     }
     std::uint32_t count = end - begin;
-    if (count == 1) return leaf(at, begin, end);
+    const std::uint32_t minLeaf = Bvh::minLeafItemsFor(nodeCost);
+    if (count < 2 * minLeaf) return leaf(at, begin, end);
     glm::dvec3 e = centres.hi - centres.lo;
     int axis = e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
     auto centre = [&](std::uint32_t item) { return boxes[item].centre()[axis]; };
@@ -263,8 +265,12 @@ struct ReferenceBuild {
         cost[b] = (l ? l * left.surfaceArea() : 0.0) + (r ? r * right.surfaceArea() : 0.0);
         lefts[b] = l;
       }
-      int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
-      if (lefts[best] != 0 && lefts[best] != count &&
+      int best = -1;
+      for (int b = 0; b < 15; ++b) {
+        bool candidate = minLeaf < 2 || (lefts[b] >= minLeaf && count - lefts[b] >= minLeaf);
+        if (candidate && (best < 0 || cost[b] < cost[best])) best = b;
+      }
+      if (best >= 0 && lefts[best] != 0 && lefts[best] != count &&
           !leafIsCheaper(count, bounds.surfaceArea(), cost[best])) {
         std::partition(items.begin() + begin, items.begin() + end,
                        [&](std::uint32_t item) { return binOf(item) <= best; });
@@ -325,6 +331,61 @@ TEST(BvhBuild, SplitsAsThePlainBinnedSurfaceAreaRuleDoes) {
           << "seed " << seed << ", cost " << nodeCost;
     }
   }
+}
+
+// Boxes for the compact tree's bound: random, on a grid, all one box, and
+// all on a line (centres in a row, and the same centre half the time).
+std::vector<Bounds> compactTrialBoxes(std::uint64_t seed, int count) {
+  switch (seed % 4) {
+    case 0:
+      return randomBoxes(seed, count);
+    case 1:
+      return gridBoxes(seed, count);
+    case 2:
+      return std::vector<Bounds>(count, Bounds{glm::dvec3(-1.0), glm::dvec3(1.0)});
+    default: {
+      std::vector<Bounds> boxes;
+      for (int i = 0; i < count; ++i) {
+        glm::dvec3 centre(static_cast<double>(seed % 8 == 3 ? i / 2 : i), 0.0, 0.0);
+        boxes.push_back(Bounds{centre - 0.25, centre + 0.25});
+      }
+      return boxes;
+    }
+  }
+}
+
+// At the compact price every leaf holds two items or more, so a tree over
+// n boxes has at most n / 2 leaves and n - 1 nodes: what Bvh::bytesFor
+// counts from Bvh::kCompactFromBoxes boxes.
+TEST(BvhBuild, CompactTreesHaveLeavesOfTwoItemsOrMoreAndFewerNodesThanBoxes) {
+  auto expectCompact = [](const Bvh& bvh, std::size_t count, const std::string& what) {
+    expectWellFormed(bvh, count);
+    ASSERT_LE(bvh.nodes().size(), std::max<std::size_t>(count - 1, 1)) << what;
+    for (const BvhNode& node : bvh.nodes()) {
+      if (node.count > 0) {
+        ASSERT_GE(node.count, count >= 2 ? 2u : 1u) << what;
+      }
+    }
+  };
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    int count = 1 + static_cast<int>(seed % 120);
+    std::vector<Bounds> boxes = compactTrialBoxes(seed, count);
+    expectCompact(Bvh(boxes, 1, Bvh::kCompactNodeCost), boxes.size(),
+                  "seed " + std::to_string(seed));
+  }
+  // On threads, whose subtrees keep the room of the compact bound.
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    std::vector<Bounds> boxes = compactTrialBoxes(seed, 50000);
+    Bvh one(boxes, 1, Bvh::kCompactNodeCost);
+    expectCompact(one, boxes.size(), "seed " + std::to_string(seed));
+    expectSameTree(one, Bvh(boxes, 3, Bvh::kCompactNodeCost), 3);
+  }
+  // The bound the estimate counts: 64 bytes of nodes a box below the
+  // compact price, 32 from it.
+  const std::uint64_t from = Bvh::kCompactFromBoxes;
+  EXPECT_EQ(Bvh::bytesFor(from + 2) - Bvh::bytesFor(from), 2 * 32 + 2 * 36);
+  EXPECT_EQ(Bvh::bytesFor(from - 1) - Bvh::bytesFor(from - 3), 2 * 64 + 2 * 36);
+  EXPECT_EQ(Bvh::mostNodes(from, Bvh::minLeafItemsFor(Bvh::nodeCostFor(from))), from - 1);
 }
 
 // The outward rounding of box planes to float is std::nextafter's step from

@@ -190,13 +190,18 @@ TEST(RenderMemory, TheEstimateBoundsAScenesWorstCases) {
 
 // A scene of 100,000,000 objects of one material, rendered in 1080p at one
 // sample a pixel, builds no light grids: it is estimated at its records
-// (132 bytes an object), one material, the BVH's build and the reorder's
-// 6 bytes an object.
+// (132 bytes an object), one material, the BVH's build (the compact tree's
+// 32 bytes of nodes a box, a 32-byte copy of each box and its 4-byte place
+// in the order, and the threads' lists) and the reorder's 6 bytes an
+// object: under 21 GB in all, which fits a machine of 24.
 TEST(RenderMemory, AHundredMillionObjectsAreEstimatedAtWhatTheBuildHolds) {
   RenderMemoryEstimate e = estimate(100'000'000, 2, 1920, 1080);
   std::uint64_t material = sizeof(scene::Material) + 7 * 8 + 4 + 4 * sizeof(void*);
   EXPECT_EQ(e.scene, std::uint64_t{100'000'000} * 132 + material + 2 * sizeof(RenderLight));
   EXPECT_EQ(e.bvh, Bvh::bytesFor(100'000'000) + 600'000'000);
+  EXPECT_GE(Bvh::bytesFor(100'000'000), std::uint64_t{100'000'000} * (32 + 32 + 4));
+  EXPECT_LT(Bvh::bytesFor(100'000'000), std::uint64_t{100'000'000} * (32 + 32 + 4 + 1));
+  EXPECT_LT(e.total(), std::uint64_t{21'000'000'000});
 }
 
 TEST(RenderMemory, ReadsMemAvailableInKibibytes) {
