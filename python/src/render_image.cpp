@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/render_memory.h"
+#include "renderer/render_settings.h"
 
 namespace scenefile_python {
 
@@ -67,8 +68,17 @@ void runInterruptibly(Work&& work, std::stop_source& stop) {
 }  // namespace
 
 py::array_t<float> renderToArray(const scene::Scene& scene, const scene::RenderSettings& settings) {
-  render::RenderMemoryEstimate estimate = render::estimateRenderMemory(
-      scene.objects.size(), scene.lights.size(), settings.width, settings.height);
+  // As scene::renderScene renders it: the settings as the renderer's, so
+  // that the lights' grids are counted only where it builds them.
+  render::RenderSettings full;
+  static_cast<scene::RenderSettings&>(full) = settings;
+  render::RenderMemoryEstimate estimate =
+      render::estimateRenderMemory({.objects = scene.objects.size(),
+                                    .lights = scene.lights.size(),
+                                    .materials = scene.objects.size(),
+                                    .width = settings.width,
+                                    .height = settings.height,
+                                    .cameraSamples = render::uniformSampleCount(full)});
   if (std::optional<std::string> refusal =
           render::renderMemoryRefusal(estimate, render::readAvailableMemory())) {
     PyErr_SetString(PyExc_MemoryError, refusal->c_str());
