@@ -44,8 +44,7 @@ void prefetch(const T* element) {
 // along its cycle up to the next station (which takes the element set
 // aside there) is then independent of the others, and these walks run on
 // the threads, kLanes at a time on each, the next step's reads prefetched.
-// Cycles that meet no station (short ones) are walked whole afterwards,
-// each by the thread whose range holds its smallest place. Beyond the
+// Cycles that meet no station are walked whole afterwards, one by one. Beyond the
 // arrays it holds a byte a place and the stations' elements.
 template <typename... T>
 void permuteInPlace(std::span<const std::uint32_t> order, int threads, std::span<T>... arrays) {
@@ -104,27 +103,26 @@ void permuteInPlace(std::span<const std::uint32_t> order, int threads, std::span
       }
     }
   });
-  // The cycles that meet no station, each walked by the thread that holds
-  // its smallest place.
-  runParts(parts, threads, [&](std::size_t part) {
-    const std::size_t end = count * (part + 1) / parts;
-    for (std::size_t first = count * part / parts; first < end; ++first) {
-      if (placed[first] != 0 || order[first] == first) continue;
-      std::size_t at = order[first];
-      while (at > first) at = order[at];
-      if (at != first) continue;
-      std::tuple<T...> kept{arrays[first]...};
-      for (at = first;;) {
-        std::size_t from = order[at];
-        if (from == first) {
-          std::apply([&](auto&... k) { ((arrays[at] = k), ...); }, kept);
-          break;
-        }
-        ((arrays[at] = arrays[from]), ...);
-        at = from;
+  // The cycles that meet no station, one after another: each walk marks
+  // its places, so every cycle is walked once, in time linear in its
+  // length. (On threads, a cycle would need an owner, such as its smallest
+  // place, and finding that costs a walk from each place: quadratic in the
+  // length of a long cycle, which an order such as a shift by kStride
+  // makes.) In a random order they are few and short.
+  for (std::size_t first = 0; first < count; ++first) {
+    if (placed[first] != 0 || order[first] == first) continue;
+    std::tuple<T...> kept{arrays[first]...};
+    for (std::size_t at = first;;) {
+      placed[at] = 1;
+      std::size_t from = order[at];
+      if (from == first) {
+        std::apply([&](auto&... k) { ((arrays[at] = k), ...); }, kept);
+        break;
       }
+      ((arrays[at] = arrays[from]), ...);
+      at = from;
     }
-  });
+  }
 }
 
 }  // namespace render

@@ -78,5 +78,17 @@ TEST(PermuteInPlace, CyclesThatMeetNoStation) {
   for (int threads : {1, 2, 3}) expectPermutedAsACopyWouldBe(order, threads);
 }
 
+// A shift by the stations' stride: every place but the stations' lies on
+// one of 31 long cycles that meet no station (at 2^20 places, 32,768 places
+// each), which a walk from each place to find its cycle's owner would take
+// minutes over.
+TEST(PermuteInPlace, LongCyclesThatMeetNoStationInLinearTime) {
+  std::vector<std::uint32_t> order(std::size_t{1} << 20);
+  for (std::uint32_t i = 0; i < order.size(); ++i) {
+    order[i] = static_cast<std::uint32_t>((i + permute_detail::kStride) % order.size());
+  }
+  for (int threads : {1, 2}) expectPermutedAsACopyWouldBe(order, threads);
+}
+
 }  // namespace
 }  // namespace render
