@@ -283,18 +283,25 @@ StreamReadResult streamSceneFile(const std::filesystem::path& path, const ReadOp
   }
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return readWhole(path, options, sink, quotes, estimate, 0, {});
-  WindowBuffer buffer(fd, window);
   std::string firstWindow;
   bool streamed = false;
   StreamedScene done;
   done.fileBytes = static_cast<std::uint64_t>(info.st_size);
   done.estimate = &estimate;
-  if (buffer.fill() && detectFormat(buffer.held(), path.string()) == Format::SceneFile) {
-    // The camera's lines, for the quotes of the whole-file checks.
-    if (quotes) firstWindow = buffer.held();
-    streamed = readWindows(buffer, options, threads, sink, done);
+  {
+    // Closed on every way out, a sink's exception included, after the
+    // buffer's reading thread has stopped (locals go in reverse order).
+    struct ClosedAtEnd {
+      int fd;
+      ~ClosedAtEnd() { ::close(fd); }
+    } file{fd};
+    WindowBuffer buffer(file.fd, window);
+    if (buffer.fill() && detectFormat(buffer.held(), path.string()) == Format::SceneFile) {
+      // The camera's lines, for the quotes of the whole-file checks.
+      if (quotes) firstWindow = buffer.held();
+      streamed = readWindows(buffer, options, threads, sink, done);
+    }
   }
-  ::close(fd);
   if (!streamed) return readWhole(path, options, sink, quotes, estimate, done.handed, done.memory);
   return finishStream(std::move(done), path, options, firstWindow, quotes);
 }

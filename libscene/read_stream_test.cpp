@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -210,6 +211,32 @@ TEST(ReadStream, MemoryStaysWithinTheWindow) {
     EXPECT_GT(memory.modelBytes, 0u);
     EXPECT_LE(memory.modelBytes, 2 * kWindow * threads / 60 * sizeof(Object));
   }
+}
+
+// The entries of /proc/self/fd: the files this process holds open.
+std::size_t openFiles() {
+  std::size_t count = 0;
+  for (const auto& entry : fs::directory_iterator("/proc/self/fd")) {
+    (void)entry;
+    ++count;
+  }
+  return count;
+}
+
+// A sink that throws (a caller's limit, memory) ends the read with its
+// exception, the file closed and the reading thread stopped.
+TEST(ReadStream, ASinksExceptionLeavesNoFileOpen) {
+  fs::path path = writeFile("read_stream_throwing_sink.sf", manySpheres(3000));
+  const std::size_t before = openFiles();
+  for (unsigned threads : {1u, 2u}) {
+    std::size_t batches = 0;
+    auto throwing = [&](std::span<const Object>) {
+      if (++batches == 2) throw std::length_error("too many objects");
+    };
+    EXPECT_THROW(streamSceneFile(path, withWindow(1000, threads), throwing), std::length_error);
+    EXPECT_EQ(batches, 2u);
+  }
+  EXPECT_EQ(openFiles(), before);
 }
 
 }  // namespace
