@@ -338,7 +338,7 @@ void sampleCorners(const PixelTracer& tracer, const CornerInterpolation& rule,
   // The anchors the caller lacks (beyond a run's ends, or its region's),
   // and theirs in turn.
   std::vector<glm::ivec2> extra;
-  auto addAnchorsOf = [&](const glm::ivec2& corner) {
+  auto addAnchorsOf = [&](glm::ivec2 corner) {  // a copy: it may be one of `extra`, which grows
     int count = rule.anchorsOf(corner.x, corner.y, anchors);
     for (int a = 0; a < count; ++a) {
       glm::ivec2 at(anchors[a][0], anchors[a][1]);
