@@ -9,6 +9,7 @@
 
 #include "renderer/image.h"
 #include "renderer/render_scene.h"
+#include "renderer/render_settings.h"
 #include "renderer/saturating.h"
 
 namespace render {
@@ -27,6 +28,16 @@ std::string amount(std::uint64_t bytes) {
 
 std::uint64_t RenderMemoryEstimate::total() const {
   return saturatingSum(saturatingSum(image, scene), bvh);
+}
+
+RenderSize renderSizeOf(const scene::Scene& scene, const RenderSettings& settings) {
+  return {.objects = scene.objects.size(),
+          .lights = scene.lights.size(),
+          .materials = scene.objects.size(),
+          .width = settings.width,
+          .height = settings.height,
+          .cameraSamples = uniformSampleCount(settings),
+          .coverage = settings.coverage};
 }
 
 RenderMemoryEstimate estimateRenderMemory(const RenderSize& size) {

@@ -13,7 +13,13 @@
 #include <string>
 #include <string_view>
 
+namespace scene {
+struct Scene;
+}  // namespace scene
+
 namespace render {
+
+struct RenderSettings;
 
 /// Bytes still to be allocated once the scene has been read: the compiled
 /// scene (objects, lights), the BVH with its build temporaries, the image,
@@ -43,6 +49,10 @@ struct RenderSize {
   std::uint64_t cameraSamples = 0;
   bool coverage = false;
 };
+
+/// The size of rendering `scene`, read whole, with `settings`: its materials
+/// bounded by its objects, the camera samples and coverage the settings'.
+RenderSize renderSizeOf(const scene::Scene& scene, const RenderSettings& settings);
 
 /// The estimate for rendering a scene of `size` into its image, with its
 /// coverage or not, and writing it to a file.

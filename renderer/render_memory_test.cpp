@@ -204,6 +204,27 @@ TEST(RenderMemory, AHundredMillionObjectsAreEstimatedAtWhatTheBuildHolds) {
   EXPECT_LT(e.total(), std::uint64_t{21'000'000'000});
 }
 
+// A scene read whole: its materials bounded by its objects; the region's
+// camera samples, which decide the lights' grids; the coverage asked for.
+TEST(RenderMemory, ASceneReadWholeIsSizedByItsObjectsAndTheSettings) {
+  scene::Scene s = testing::sceneLookingAt({0, 0, 10}, {0, 0, 0});
+  for (int i = 0; i < 5; ++i) s.objects.push_back(testing::object(scene::ObjectKind::Sphere));
+  for (int i = 0; i < 2; ++i) s.lights.push_back(testing::light({i, 5, 5}));
+  RenderSettings settings;
+  settings.width = 40;
+  settings.height = 30;
+  settings.samplesPerPixel = 3;
+  settings.coverage = true;
+  RenderSize size = renderSizeOf(s, settings);
+  EXPECT_EQ(size.objects, 5u);
+  EXPECT_EQ(size.lights, 2u);
+  EXPECT_EQ(size.materials, 5u);
+  EXPECT_EQ(size.width, 40);
+  EXPECT_EQ(size.height, 30);
+  EXPECT_EQ(size.cameraSamples, 40u * 30u * 3u);
+  EXPECT_TRUE(size.coverage);
+}
+
 TEST(RenderMemory, ReadsMemAvailableInKibibytes) {
   const char* meminfo =
       "MemTotal:       131072000 kB\n"

@@ -73,12 +73,7 @@ py::array_t<float> renderToArray(const scene::Scene& scene, const scene::RenderS
   render::RenderSettings full;
   static_cast<scene::RenderSettings&>(full) = settings;
   render::RenderMemoryEstimate estimate =
-      render::estimateRenderMemory({.objects = scene.objects.size(),
-                                    .lights = scene.lights.size(),
-                                    .materials = scene.objects.size(),
-                                    .width = settings.width,
-                                    .height = settings.height,
-                                    .cameraSamples = render::uniformSampleCount(full)});
+      render::estimateRenderMemory(render::renderSizeOf(scene, full));
   if (std::optional<std::string> refusal =
           render::renderMemoryRefusal(estimate, render::readAvailableMemory())) {
     PyErr_SetString(PyExc_MemoryError, refusal->c_str());

@@ -122,13 +122,7 @@ Refusal renderResourceRefusal(const render::RenderSettings& s, const scene::Scen
            std::to_string(limits.maxPixels);
   }
   render::RenderMemoryEstimate estimate =
-      render::estimateRenderMemory({.objects = scene.objects.size(),
-                                    .lights = scene.lights.size(),
-                                    .materials = scene.objects.size(),
-                                    .width = s.width,
-                                    .height = s.height,
-                                    .cameraSamples = render::uniformSampleCount(s),
-                                    .coverage = s.coverage});
+      render::estimateRenderMemory(render::renderSizeOf(scene, s));
   if (s.adaptiveThreshold > 0) {
     estimate.image = render::saturatingSum(
         estimate.image,
