@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "libscene/core/populate_pages.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/permute_in_place.h"
 
@@ -68,35 +69,61 @@ void RenderSceneBuilder::add(std::span<const scene::Object> batch) {
   if (count > kMaxObjects - first) {
     throw std::length_error("a scene holds at most 4294967294 objects");
   }
+  if (count == 0) return;
+  const std::size_t parts = count < RenderScene::kMinParallelObjects ? 1 : threads_;
+  // The new records' room faulted in on the threads, a part each, before
+  // resize writes it: faulted in by resize's first writes on this thread,
+  // it was a third of the batch's cost.
+  if (parts > 1 && objects_.capacity() - first >= count && colours_.capacity() - first >= count) {
+    runParts(parts, threads_, [&](std::size_t part) {
+      const std::size_t from = first + count * part / parts;
+      const std::size_t to = first + count * (part + 1) / parts;
+      scene::populatePagesForWriting(objects_.data() + from, objects_.data() + to);
+      scene::populatePagesForWriting(colours_.data() + from, colours_.data() + to);
+    });
+  }
   objects_.resize(first + count);
   colours_.resize(first + count);
-  // The materials' numbers on this thread, in order: a material is numbered
-  // by its first use, whatever the threads.
-  for (std::size_t i = 0; i < count; ++i) {
-    objects_[first + i].material = materialNumber(batch[i].material);
-    planes_ += batch[i].kind == scene::ObjectKind::Plane ? 1 : 0;
-  }
-  const std::size_t parts = count < RenderScene::kMinParallelObjects ? 1 : threads_;
+  // Materials are numbered by their first use, in order, whatever the
+  // threads: the first one here, then each part checks that its objects
+  // share the last one found, which nearly every batch does. Where any
+  // object does not, this thread numbers the batch afresh after the parts.
+  if (materials_.empty()) materialNumber(batch[0].material);
+  const std::uint32_t shared = lastMaterial_;
+  const std::array<std::uint64_t, 7> sharedBits = propertyBits(materials_[shared]);
   std::vector<MaterialMaxima> maxima(parts);
   std::vector<std::uint8_t> transparent(parts, 0);
+  std::vector<std::uint8_t> allShared(parts, 1);
+  std::vector<std::uint32_t> planes(parts, 0);
   runParts(parts, threads_, [&](std::size_t part) {
     // Gathered here and stored once: the parts' entries share a cache line.
     MaterialMaxima gathered;
     bool anyTransparent = false;
+    bool sharesMaterial = true;
+    std::uint32_t planeCount = 0;
     const std::size_t end = count * (part + 1) / parts;
     for (std::size_t i = count * part / parts; i < end; ++i) {
       const scene::Object& o = batch[i];
       RenderObject& record = objects_[first + i];
-      std::uint32_t material = record.material;
       record = renderObject(o.kind, o.matrix);
-      record.material = material;
+      record.material = shared;
+      sharesMaterial &= propertyBits(o.material) == sharedBits;
+      planeCount += o.kind == scene::ObjectKind::Plane ? 1 : 0;
       colours_[first + i] = o.material.colour;
       anyTransparent |= o.material.transparency > 0.0;
       gathered.add(o.kind, o.material);
     }
     transparent[part] = anyTransparent ? 1 : 0;
+    allShared[part] = sharesMaterial ? 1 : 0;
+    planes[part] = planeCount;
     maxima[part] = gathered;
   });
+  if (std::find(allShared.begin(), allShared.end(), 0) != allShared.end()) {
+    for (std::size_t i = 0; i < count; ++i) {
+      objects_[first + i].material = materialNumber(batch[i].material);
+    }
+  }
+  for (std::uint32_t n : planes) planes_ += n;
   for (const MaterialMaxima& part : maxima) materialMaxima_.merge(part);
   hasTransparency_ |= std::find(transparent.begin(), transparent.end(), 1) != transparent.end();
 }
