@@ -79,6 +79,38 @@ TEST(RenderSceneBuilder, BatchesRenderTheSameImage) {
   }
 }
 
+// Materials are numbered by their first use in the order added, whatever
+// the batches and threads: here in batches past the size made in parts,
+// most of whose objects share the last material found, a few of which
+// bring a new one (and one batch starts with one).
+TEST(RenderSceneBuilder, MaterialsAreNumberedByFirstUse) {
+  Random random(5);
+  scene::Scene s = randomScene(random, 60000);
+  for (scene::Object& o : s.objects) o.material = scene::Material{};
+  std::vector<std::uint32_t> expected(s.objects.size(), 0);
+  scene::Material glass;
+  glass.transparency = 0.5;
+  scene::Material matte;
+  matte.specular = 0.0;
+  scene::Material shiny;
+  shiny.reflectivity = 0.75;
+  auto use = [&](std::size_t i, const scene::Material& m, std::uint32_t number) {
+    s.objects[i].material = m;
+    expected[i] = number;
+  };
+  use(30001, glass, 1);
+  for (std::size_t i = 40000; i < 41000; ++i) use(i, matte, 2);
+  use(45000, shiny, 3);
+  use(59999, glass, 1);
+  for (int batches : {1, 3}) {
+    SCOPED_TRACE(::testing::Message() << batches << " batches");
+    RenderScene built = builtInBatches(s, batches, 2);
+    for (std::uint32_t r = 0; r < built.objects().size(); ++r) {
+      ASSERT_EQ(built.objects()[r].material, expected[built.sceneObject(r)]) << "object " << r;
+    }
+  }
+}
+
 // memory() counts each array as the layout says: per object its record,
 // colour and file index; per plane its normal and place in the plane list;
 // the table of distinct materials; the lights; the nodes (2n - 1 over n
