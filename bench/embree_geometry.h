@@ -52,7 +52,7 @@ inline bool blocks(const render::RenderObject& object, std::uint32_t index, cons
 
 // What the callbacks share: the objects, and Embree primitive -> object.
 struct Geometry {
-  const std::vector<render::RenderObject>* objects = nullptr;
+  const render::UnsetVector<render::RenderObject>* objects = nullptr;
   std::vector<std::uint32_t> bounded;
   std::vector<render::Bounds> bounds;
 };

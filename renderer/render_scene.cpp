@@ -161,8 +161,8 @@ namespace {
 // The bytes of the elements a vector holds: room reserved past them (an
 // estimate of the count a little over) is never touched, so never
 // resident.
-template <typename T>
-std::uint64_t heldBytes(const std::vector<T>& v) {
+template <typename T, typename Allocator>
+std::uint64_t heldBytes(const std::vector<T, Allocator>& v) {
   return static_cast<std::uint64_t>(v.size()) * sizeof(T);
 }
 

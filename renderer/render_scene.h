@@ -14,6 +14,7 @@
 #include "renderer/direction_grid.h"
 #include "renderer/material_maxima.h"
 #include "renderer/unit_shapes.h"
+#include "renderer/unset_allocator.h"
 #include "scenefile/scene.h"
 
 namespace render {
@@ -153,7 +154,7 @@ class RenderScene {
   /// RaySource::object, the accessors below): the planes first, then the
   /// bounded objects in the BVH's order, where neighbours in space lie
   /// together in memory. sceneObject gives an object's index in the scene.
-  const std::vector<RenderObject>& objects() const { return objects_; }
+  const UnsetVector<RenderObject>& objects() const { return objects_; }
   /// The index in scene::Scene::objects of object `object`.
   std::uint32_t sceneObject(std::uint32_t object) const { return sceneObjects_[object]; }
   scene::Material material(std::uint32_t object) const {
@@ -338,8 +339,9 @@ class RenderScene {
   bool blockedByPlane(const Ray& ray, const RaySource& source, double tMax,
                       std::uint32_t* lastOccluder) const;
 
-  std::vector<RenderObject> objects_;
-  std::vector<glm::dvec3> colours_;          // per object, read once per hit
+  // Written in full by RenderSceneBuilder::add, on its threads.
+  UnsetVector<RenderObject> objects_;
+  UnsetVector<glm::dvec3> colours_;          // per object, read once per hit
   std::vector<scene::Material> materials_;   // RenderObject::material's table (colour unused)
   std::vector<std::uint32_t> sceneObjects_;  // object -> its index in the scene
   ObjectRange bounded_;                      // BVH item -> object

@@ -62,8 +62,9 @@ class RenderSceneBuilder {
 
   int threads_;
   // In the order added, until finish() lays them out in the BVH's.
-  std::vector<RenderObject> objects_;
-  std::vector<glm::dvec3> colours_;
+  // Left unset by resize: add() writes every new record and colour.
+  UnsetVector<RenderObject> objects_;
+  UnsetVector<glm::dvec3> colours_;
   std::uint32_t planes_ = 0;
   // The distinct materials, colour aside (it is zero), and their numbers by
   // their properties' bits; the last one found, which the next object
