@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "libscene/core/finite_check.h"
-#include "libscene/core/run_on_threads.h"
 #include "libscene/formats/sf/sf_reader.h"
 #include "scenefile/read_file.h"
 #include "scenefile/validation.h"
@@ -185,14 +184,8 @@ struct StreamedScene {
 bool readWindow(std::string_view text, const ReadOptions& options, unsigned threads,
                 SceneFileWindowRead& read, StreamedScene& done, const ObjectBatchSink& sink) {
   SceneFileWindow window{text, done.nextLine, done.nextLine == 1, done.objectsSeen};
+  // Its objects are checked finite there (parseScene's last check).
   if (!parseSceneFileWindow(window, options, threads, read)) return false;
-  // parseScene's last check (every object finite), a part a thread: on
-  // this thread alone it took 5% of the reading.
-  std::vector<char> finite(read.parts.size(), 0);
-  bool checked = runOnThreads(read.parts.size(), [&](std::size_t k) {
-    finite[k] = objectsFinite(read.parts[k].scene.objects, 1) ? 1 : 0;
-  });
-  if (!checked || std::find(finite.begin(), finite.end(), 0) != finite.end()) return false;
   std::uint64_t model = 0;
   for (const ReadResult& part : read.parts) {
     model += part.scene.objects.capacity() * sizeof(Object);

@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "libscene/core/finite_check.h"
 #include "libscene/core/populate_pages.h"
 #include "libscene/core/run_on_threads.h"
 #include "libscene/text/reader_support.h"
@@ -456,8 +457,8 @@ namespace {
 // stop.
 bool readPartsOnThreads(std::string_view text, std::span<const std::size_t> starts,
                         std::uint32_t firstLine, const ReadOptions& options, bool roomForAll,
-                        std::vector<ReadResult>& results, std::vector<PartFacts>& facts,
-                        std::vector<std::uint32_t>& lines) {
+                        bool checkFinite, std::vector<ReadResult>& results,
+                        std::vector<PartFacts>& facts, std::vector<std::uint32_t>& lines) {
   const std::size_t count = starts.size();
   auto part = [&](std::size_t k) {
     std::size_t end = k + 1 < count ? starts[k + 1] : text.size();
@@ -496,6 +497,9 @@ bool readPartsOnThreads(std::string_view text, std::span<const std::size_t> star
   facts.assign(count, PartFacts{});
   bool read = runOnThreads(count, [&](std::size_t k) {
     facts[k] = SceneFileParser(part(k), options, results[k], partLine[k], records[k]).runPart();
+    if (checkFinite && results[k].diagnostics.empty()) {
+      facts[k].finite = objectsFinite(results[k].scene.objects, 1);
+    }
   });
   // A stopped read's parts are cut short anywhere: the whole-file reader
   // stops at once, where it checks first.
@@ -504,7 +508,8 @@ bool readPartsOnThreads(std::string_view text, std::span<const std::size_t> star
 
 // The parts make their text's scene only where each read cleanly, the
 // CAMERA came first in the file's first part and nowhere else, and all of
-// them together, after `objectsBefore`, hold no more objects than allowed;
+// them together, after `objectsBefore`, hold no more objects than allowed,
+// and none holds an object found not finite;
 // then the objects and lights they named, else nothing.
 std::optional<std::size_t> cleanPartsObjects(const std::vector<ReadResult>& results,
                                              const std::vector<PartFacts>& facts, bool firstOfFile,
@@ -512,7 +517,9 @@ std::optional<std::size_t> cleanPartsObjects(const std::vector<ReadResult>& resu
                                              const ReadOptions& options) {
   std::size_t objectsSeen = 0;
   for (std::size_t k = 0; k < results.size(); ++k) {
-    if (!results[k].diagnostics.empty() || !facts[k].anyRecord) return std::nullopt;
+    if (!results[k].diagnostics.empty() || !facts[k].anyRecord || !facts[k].finite) {
+      return std::nullopt;
+    }
     bool cameraHere = k == 0 && firstOfFile;
     if (cameraHere ? !facts[k].firstIsCamera : facts[k].cameraNamed) return std::nullopt;
     objectsSeen += facts[k].objectsSeen;
@@ -532,7 +539,7 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
   std::vector<ReadResult> results;
   std::vector<PartFacts> facts;
   std::vector<std::uint32_t> lines;
-  if (!readPartsOnThreads(text, starts, 1, options, true, results, facts, lines) ||
+  if (!readPartsOnThreads(text, starts, 1, options, true, false, results, facts, lines) ||
       !cleanPartsObjects(results, facts, true, 0, options)) {
     return std::nullopt;
   }
@@ -554,7 +561,7 @@ std::optional<ReadResult> parseSceneFileInParts(std::string_view text, std::stri
 bool parseSceneFileWindow(const SceneFileWindow& window, const ReadOptions& options, unsigned parts,
                           SceneFileWindowRead& read) {
   std::vector<std::size_t> starts = partStarts(window.text, std::max(parts, 1u));
-  if (!readPartsOnThreads(window.text, starts, window.firstLine, options, false, read.parts,
+  if (!readPartsOnThreads(window.text, starts, window.firstLine, options, false, true, read.parts,
                           read.facts, read.partLines)) {
     return false;
   }

@@ -46,6 +46,9 @@ struct SceneFilePartFacts {
   bool firstIsCamera = false;
   bool cameraNamed = false;
   std::size_t objectsSeen = 0;  // objects and lights named, read or not
+  // Every object read is finite (objectsFinite), where the part was asked
+  // to check; unchecked counts as finite.
+  bool finite = true;
 };
 
 // A window of a scene file read as it streams in (streamSceneFile): from
@@ -72,9 +75,10 @@ struct SceneFileWindowRead {
 // Reads `window` in up to `parts` parts on as many threads, as
 // parseSceneFileInParts reads a whole file, without the whole-file checks:
 // true where each part read cleanly, the CAMERA came first in the file's
-// first window and nowhere else, and the objects are within
-// options.maxObjects. Then `read` holds what the whole-file reader would
-// have read from those lines, bit for bit; otherwise the caller reads the
+// first window and nowhere else, the objects are within
+// options.maxObjects, and every object is finite (parseScene's last check,
+// made by each part's thread as it ends, on objects still in its cache). Then `read` holds what the
+// whole-file reader would have read from those lines, bit for bit; otherwise the caller reads the
 // file whole, for its diagnostics.
 bool parseSceneFileWindow(const SceneFileWindow& window, const ReadOptions& options, unsigned parts,
                           SceneFileWindowRead& read);
