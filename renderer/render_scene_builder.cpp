@@ -7,11 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include "libscene/core/populate_pages.h"
+#include "renderer/huge_pages.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/permute_in_place.h"
 
@@ -32,21 +29,6 @@ std::array<std::uint64_t, 7> propertyBits(const scene::Material& m) {
           std::bit_cast<std::uint64_t>(m.reflectivity),
           std::bit_cast<std::uint64_t>(m.transparency),
           std::bit_cast<std::uint64_t>(m.ri)};
-}
-
-// The whole 2 MiB pages within [begin, end) asked for as huge pages, where
-// Linux offers them: a record array of millions is faulted in a 512th as
-// many times, and its pages cost the tracer's walks fewer TLB misses.
-void adviseHugePages(const void* begin, const void* end) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
-  std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + kHuge - 1) & ~(kHuge - 1);
-  std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(kHuge - 1);
-  if (to > from) ::madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
-#else
-  (void)begin;
-  (void)end;
-#endif
 }
 
 }  // namespace
