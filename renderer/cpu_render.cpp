@@ -131,7 +131,8 @@ class PixelTracer {
   // sample of its own (its allowance, slack and media afresh), to within
   // `allowed`, into out[0, count). With RenderSettings::packets the closest
   // hits of each Bvh::kPacketSize consecutive rays are found together
-  // (RenderScene::closestHits) and each sample is shaded from its hit: the
+  // (RenderScene::closestHits), then their shadow rays toward each light
+  // (Tracer::primaryShadows), and each sample is shaded from its hit: the
   // same colours as tracing each alone, bit for bit (docs/TRACING.md,
   // "Packets").
   void traceSamples(const glm::dvec2* at, int count, double allowed, MediumStack& media,
@@ -142,12 +143,17 @@ class PixelTracer {
       Ray rays[kPacket];
       for (int k = 0; k < n; ++k) camera_.makeRay(at[first + k], rays[k]);
       std::optional<Hit> hits[kPacket];
-      if (settings_.packets) camera_.closestHits(rays, n, hits);
+      ShadowAnswers shadows[kPacket];
+      if (settings_.packets) {
+        camera_.closestHits(rays, n, hits);
+        tracer_.primaryShadows(rays, hits, n, context, shadows);
+      }
       for (int k = 0; k < n; ++k) {
         if (scene_.hasTransparency()) media = eyeMedia_;
         ++context.counts.primary;
         context.allowance = allowance_;
         context.slack = 0.0;
+        context.shadows = shadows[k];
         glm::dvec3 colour = settings_.packets
                                 ? tracer_.traceFromHit(rays[k], hits[k], media, context, allowed)
                                 : tracer_.trace(rays[k], RaySource{}, 0, media, context, allowed);

@@ -231,10 +231,53 @@ TEST(Packets, EachLaneVisitsTheItemsOfItsOwnTraversalInOrder) {
   }
 }
 
+// Shadow rays toward one light from points near each other, in packets of
+// every size (RenderScene::anyHits), against anyHit ray by ray, with and
+// without a hint.
+TEST(Packets, ShadowRaysAnswerAsEachAlone) {
+  Random random(47);
+  int blocked = 0;
+  int total = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    scene::Scene s = randomScene(random, 1 + random.below(300));
+    RenderScene compiled(s, 0, false);
+    glm::dvec3 light = random.point(20.0);
+    for (int packet = 0; packet < 50; ++packet) {
+      glm::dvec3 centre = random.point(15.0);
+      double spread = std::pow(10.0, random.uniform(-4, 0.5));
+      int count = 1 + random.below(11);
+      std::vector<Ray> rays;
+      std::vector<double> tMaxes;
+      for (int k = 0; k < count; ++k) {
+        glm::dvec3 origin = centre + spread * random.direction();
+        rays.push_back(Ray{origin, light - origin});
+        tMaxes.push_back(random.below(4) == 0 ? random.uniform(0.1, 1.0) : 1.0);
+      }
+      std::vector<RaySource> sources(rays.size());
+      std::uint32_t hint = random.below(2) == 0 ? RaySource::kNone
+                                                : static_cast<std::uint32_t>(random.below(
+                                                      static_cast<int>(compiled.objects().size())));
+      bool packed[11] = {};
+      compiled.anyHits(rays.data(), sources.data(), tMaxes.data(), count, packed, &hint);
+      for (int k = 0; k < count; ++k) {
+        bool alone = compiled.anyHit(rays[k], sources[k], tMaxes[k]);
+        EXPECT_EQ(packed[k], alone) << "trial " << trial << " ray " << k;
+        blocked += alone ? 1 : 0;
+      }
+      total += count;
+    }
+  }
+  // Some rays are blocked and some are not, so that both answers are
+  // compared.
+  EXPECT_GT(blocked, total / 10);
+  EXPECT_LT(blocked, total - total / 10);
+}
+
 // Whole images with and without packets: every channel, the coverage and
-// the ray counts the same.
-void expectSameRender(const scene::Scene& s, RenderSettings settings) {
-  RenderScene compiled(s);
+// the ray counts the same; with the lights' direction grids or without
+// them, when the camera rays' shadow rays go as packets too.
+void expectSameRender(const scene::Scene& s, RenderSettings settings, bool lightGrids) {
+  RenderScene compiled(s, 0, lightGrids);
   RenderStatistics withStats;
   RenderStatistics withoutStats;
   settings.packets = true;
@@ -260,7 +303,7 @@ TEST(Packets, TheDefaultSceneIsTheSameImageWithAndWithoutPackets) {
   for (int spp : {1, 3}) {
     settings.samplesPerPixel = spp;
     settings.seed = 5;
-    expectSameRender(defaultScene(), settings);
+    for (bool grids : {true, false}) expectSameRender(defaultScene(), settings, grids);
   }
 }
 
@@ -275,7 +318,7 @@ TEST(Packets, RandomScenesAreTheSameImageWithAndWithoutPackets) {
     settings.threads = 1;
     settings.samplesPerPixel = 1 + random.below(3);
     settings.seed = static_cast<std::uint64_t>(trial);
-    expectSameRender(s, settings);
+    for (bool grids : {true, false}) expectSameRender(s, settings, grids);
   }
 }
 

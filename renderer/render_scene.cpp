@@ -548,6 +548,46 @@ bool RenderScene::anyHit(const Ray& ray, const RaySource& source, double tMax,
   return found != RaySource::kNone;
 }
 
+void RenderScene::anyHits(const Ray* rays, const RaySource* sources, const double* tMaxes,
+                          int count, bool* blocked, std::uint32_t* lastOccluder) const {
+  constexpr int kPacket = Bvh::kPacketSize;
+  for (int first = 0; first < count; first += kPacket) {
+    int n = std::min(kPacket, count - first);
+    // Each ray's occluder, and the rays neither the hint nor a plane
+    // blocks, for the walk.
+    std::uint32_t occluder[kPacket];
+    BoxRay boxRays[kPacket];
+    double tMax[kPacket];
+    int at[kPacket];
+    int open = 0;
+    for (int lane = 0; lane < n; ++lane) {
+      int k = first + lane;
+      occluder[lane] = *lastOccluder;
+      blocked[k] = (*lastOccluder < objects_.size() &&
+                    intersectObject(*lastOccluder, rays[k], sources[k], tMaxes[k])) ||
+                   blockedByPlane(rays[k], sources[k], tMaxes[k], &occluder[lane]);
+      if (blocked[k]) continue;
+      occluder[lane] = RaySource::kNone;
+      boxRays[open] = BoxRay{rays[k].origin, 1.0 / rays[k].direction};
+      tMax[open] = tMaxes[k];
+      at[open++] = lane;
+    }
+    if (open > 0) {
+      bvh_.traversePacket(boxRays, open, tMax, [&](int lane, std::uint32_t item) {
+        int k = first + at[lane];
+        if (intersectObject(bounded_[item], rays[k], sources[k], tMaxes[k])) {
+          blocked[k] = true;
+          occluder[at[lane]] = bounded_[item];
+          return -1.0;
+        }
+        return tMaxes[k];
+      });
+    }
+    // As anyHit leaves it after the packet's last ray.
+    *lastOccluder = occluder[n - 1];
+  }
+}
+
 std::vector<std::uint32_t> RenderScene::mediaContaining(const glm::dvec3& p) const {
   std::vector<std::uint32_t> media;
   for (std::uint32_t i = 0; i < objects_.size(); ++i) {

@@ -193,6 +193,12 @@ class RenderScene {
   // only finds one sooner.
   bool anyHit(const Ray& ray, const RaySource& source, double tMax,
               std::uint32_t* lastOccluder = nullptr) const;
+  // anyHit for each of `count` rays (blocked[k] for rays[k], sources[k],
+  // tMaxes[k]), the hint tried first on each; those it leaves open walk the
+  // hierarchy as packets of Bvh::kPacketSize (shadow rays toward one light
+  // from neighbouring hits). The same answers as anyHit's, ray by ray.
+  void anyHits(const Ray* rays, const RaySource* sources, const double* tMaxes, int count,
+               bool* blocked, std::uint32_t* lastOccluder) const;
   // anyHit for a shadow ray aimed at light `light`, whose direction is
   // lights()[light].position - ray.origin: the same answer, found through
   // the light's direction grid (lightGrid) where a cell can give it: `cell`

@@ -164,12 +164,20 @@ bool Tracer::shadowed(const Hit& hit, std::size_t lightIndex, TraceContext& cont
     if (lastOccluder) *lastOccluder = RaySource::kNone;
     return false;
   }
-  const glm::dvec3& light = scene_.lights()[lightIndex].position;
   Ray ray;
+  RaySource source;
+  double tMax = 0.0;
+  if (!shadowRay(hit, lightIndex, ray, source, tMax)) return false;
+  return scene_.anyHitTowardLight(lightIndex, ray, source, tMax, lastOccluder, cell);
+}
+
+bool Tracer::shadowRay(const Hit& hit, std::size_t lightIndex, Ray& ray, RaySource& source,
+                       double& tMax) const {
+  const glm::dvec3& light = scene_.lights()[lightIndex].position;
   glm::dvec3 toLight = light - hit.point;
   ray.origin = offsetRayOrigin(hit.point, hit.pointError, hit.normal, toLight);
   ray.direction = light - ray.origin;
-  RaySource source{hit.object, glm::dot(ray.direction, hit.normal) < 0.0};
+  source = RaySource{hit.object, glm::dot(ray.direction, hit.normal) < 0.0};
   // The open segment ends just short of the light by the rounding a hit
   // there could carry, so that a light lying on a surface is not hidden by
   // that surface.
@@ -179,9 +187,56 @@ bool Tracer::shadowed(const Hit& hit, std::size_t lightIndex, TraceContext& cont
   double length =
       std::max({std::abs(ray.direction.x), std::abs(ray.direction.y), std::abs(ray.direction.z)});
   if (length == 0.0) return false;
-  double tMax = 1.0 - gamma(32) * extent / length;
-  if (tMax <= 0.0) return false;
-  return scene_.anyHitTowardLight(lightIndex, ray, source, tMax, lastOccluder, cell);
+  tMax = 1.0 - gamma(32) * extent / length;
+  return tMax > 0.0;
+}
+
+void Tracer::primaryShadows(const Ray* rays, const std::optional<Hit>* hits, int count,
+                            TraceContext& context, ShadowAnswers* out) const {
+  for (int k = 0; k < count; ++k) out[k] = ShadowAnswers{};
+  if (0 > maxDepth_) return;
+  const std::vector<RenderLight>& lights = scene_.lights();
+  std::size_t packed = std::min(lights.size(), ShadowAnswers::kLights);
+  constexpr int kBatch = Bvh::kPacketSize;
+  for (int first = 0; first < count; first += kBatch) {
+    int n = std::min(kBatch, count - first);
+    // Each hit's normal facing its ray, as shade finds it.
+    glm::dvec3 normals[kBatch], toViewers[kBatch];
+    for (int k = 0; k < n; ++k) {
+      if (!hits[first + k]) continue;
+      glm::dvec3 d = glm::normalize(rays[first + k].direction);
+      normals[k] = glm::dot(hits[first + k]->normal, d) > 0.0 ? -hits[first + k]->normal
+                                                              : hits[first + k]->normal;
+      toViewers[k] = -d;
+    }
+    for (std::size_t i = 0; i < packed; ++i) {
+      if (scene_.lightGrid(i)) continue;
+      Ray shadowRays[kBatch];
+      RaySource sources[kBatch];
+      double tMaxes[kBatch];
+      int at[kBatch];
+      int traced = 0;
+      for (int k = 0; k < n; ++k) {
+        if (!hits[first + k]) continue;
+        const Hit& hit = *hits[first + k];
+        // shadeSurface's test, on the lane of its pair that light i takes
+        // (each lane's arithmetic is its own, so the same bits).
+        LightPair pair =
+            lightPair(lights[i].position, lights[i].position, hit.point, normals[k], toViewers[k]);
+        if (!(pair.distance[0] > 0.0 && !(pair.cosine[0] <= 0.0))) continue;
+        out[first + k].known |= 1u << i;
+        if (shadowRay(hit, i, shadowRays[traced], sources[traced], tMaxes[traced])) {
+          at[traced++] = first + k;
+        }
+      }
+      bool blocked[kBatch];
+      scene_.anyHits(shadowRays, sources, tMaxes, traced, blocked,
+                     &context.lastOccluder[i % TraceContext::kOccluderSlots]);
+      for (int t = 0; t < traced; ++t) {
+        if (blocked[t]) out[at[t]].blocked |= 1u << i;
+      }
+    }
+  }
 }
 
 glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
@@ -189,6 +244,7 @@ glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
   const scene::Material& m = scene_.material(hit.object);
   glm::dvec3 colour(0.0);
   const std::vector<RenderLight>& lights = scene_.lights();
+  const ShadowAnswers shadows = std::exchange(context.shadows, ShadowAnswers{});
   for (std::size_t first = 0; first < lights.size(); first += 2) {
     // Two lights side by side (the last light twice when their number is
     // odd): their geometry, then their shadow rays, then the highlights
@@ -202,9 +258,15 @@ glm::dvec3 Tracer::shadeSurface(const Hit& hit, const glm::dvec3& normal,
       std::size_t i = first + lane;
       // As the scalar tests were written: a cosine that is not a number
       // still has its shadow ray traced.
-      lit[lane] =
-          pair.distance[lane] > 0.0 && !(pair.cosine[lane] <= 0.0) &&
-          !shadowed(hit, i, context, &context.lastOccluder[i % TraceContext::kOccluderSlots]);
+      if (!(pair.distance[lane] > 0.0 && !(pair.cosine[lane] <= 0.0))) {
+        lit[lane] = false;
+      } else if (i < ShadowAnswers::kLights && (shadows.known >> i & 1u)) {
+        ++context.counts.shadow;
+        lit[lane] = !(shadows.blocked >> i & 1u);
+      } else {
+        lit[lane] =
+            !shadowed(hit, i, context, &context.lastOccluder[i % TraceContext::kOccluderSlots]);
+      }
       highlights |= lit[lane] && pair.highlight[lane] > 0.0;
     }
     Lanes power{0.0, 0.0};

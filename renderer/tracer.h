@@ -68,6 +68,15 @@ struct RayCounts {
   }
 };
 
+// The answers of a hit's shadow rays toward the first 32 lights, found
+// ahead of its shading: bit i of `known` set where light i's is in bit i of
+// `blocked`.
+struct ShadowAnswers {
+  static constexpr std::size_t kLights = 32;
+  std::uint32_t known = 0;
+  std::uint32_t blocked = 0;
+};
+
 // What one thread carries from ray to ray: its ray counts, the reflected
 // and refracted rays the current sample may still trace, and per light
 // (light index modulo kOccluderSlots) the object that last blocked a shadow
@@ -95,6 +104,11 @@ struct alignas(64) TraceContext {
   // objects of one colour).
   std::uint32_t primaryObject = RaySource::kNone;
   std::array<std::uint32_t, kOccluderSlots> lastOccluder = filledWithNone();
+  // The answers of the next shaded hit's shadow rays, found beforehand for a
+  // packet of camera rays' hits (Tracer::primaryShadows): bit i of `known`
+  // for light i (i < 32) whose answer is in bit i of `blocked`. Spent by the
+  // next shadeSurface, which traces the others.
+  ShadowAnswers shadows;
 
  private:
   static constexpr std::array<std::uint32_t, kOccluderSlots> filledWithNone() {
@@ -144,6 +158,14 @@ class Tracer {
                                     : shade<false>(ray, found, 0, media, context, tolerance);
   }
 
+  // The shadow rays that traceFromHit's shading of each of `count` camera
+  // rays' hits (rays[k], hits[k]) traces toward each light without a
+  // direction grid, traced ahead as packets (RenderScene::anyHits): out[k]
+  // for hits[k], for context.shadows before its traceFromHit. The same
+  // answers, and colours, as tracing each alone (docs/TRACING.md, "Packets").
+  void primaryShadows(const Ray* rays, const std::optional<Hit>* hits, int count,
+                      TraceContext& context, ShadowAnswers* out) const;
+
   const RadianceBound& bound() const { return bound_; }
 
   // The Phong surface term at a hit (ambient per light, diffuse and specular
@@ -179,6 +201,11 @@ class Tracer {
   // add up to `weight` in size, can move it by more than `tolerance`; if so,
   // `childTolerance` is the error each child may make, their share of it.
   bool worthTracing(double weight, int bounce, double tolerance, double& childTolerance) const;
+
+  // The shadow ray from the hit toward light `light`, as shadowed traces it:
+  // false where it is clear without being traced.
+  bool shadowRay(const Hit& hit, std::size_t light, Ray& ray, RaySource& source,
+                 double& tMax) const;
 
   const RenderScene& scene_;
   int maxDepth_;
