@@ -76,10 +76,10 @@ struct FilteredRows {
 // A rendered image's pixel-to-pixel noise leaves the filters' differences
 // no easier to compress than the bytes: against the Sub filter at level 3,
 // at 1920x1080 (floor-1000000, 1 sample) half the time and 1,926,599 bytes
-// instead of 2,541,007; the pieces, each without its predecessor's history,
-// add 0.5% (1,935,332 bytes in 6), and level 1 saved no time here. Level
-// 3 saved 1.5% more bytes for 30% more time. docs/RENDERING.md, "Image
-// files".
+// instead of 2,541,007. The pieces, each without its predecessor's history,
+// cost nothing there (1,926,171 bytes in 6, as libpng's own deflate
+// settings differ), and level 1 saved no time. Level 3 saved 1.5% more
+// bytes for 30% more time. docs/RENDERING.md, "Image files".
 std::string imageData(const PngLevels& levels) {
   FilteredRows rows(levels);
   PieceSource source;
