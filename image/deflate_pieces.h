@@ -15,16 +15,16 @@
 
 namespace image {
 
-/// What deflatePieces compresses: `total` bytes, of which makePiece(first,
-/// count, out) writes bytes [first, first + count) into out[0, count). It
-/// is called from several threads at once, for different ranges.
+/// What deflatePieces compresses: `units` units (a PNG's rows) of
+/// `unitBytes` bytes each, unit k given by unit(k, scratch): a pointer to
+/// its bytes, or to `scratch` (unitBytes long) once it holds them. It is
+/// called from several threads at once, for different units.
 struct PieceSource {
-  std::size_t total = 0;
-  // The piece boundaries are multiples of `unit` (a PNG row, say), at
-  // least `pieceBytes` apart, where the data allows.
-  std::size_t unit = 1;
+  std::size_t units = 0;
+  std::size_t unitBytes = 0;
+  // A piece is whole units, at least this many bytes where there are.
   std::size_t pieceBytes = std::size_t{1} << 20;
-  std::function<void(std::size_t first, std::size_t count, unsigned char* out)> makePiece;
+  std::function<const unsigned char*(std::size_t unit, unsigned char* scratch)> unit;
 };
 
 /// The zlib stream of `source` at zlib's `level`, its pieces deflated on at

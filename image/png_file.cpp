@@ -41,35 +41,21 @@ void recordError(png_structp png, png_const_charp message) {
 
 void ignoreWarning(png_structp, png_const_charp) {}
 
-// The image's rows as PNG's filtered data: each row its filter type, 0
-// (none), then its levels, 16-bit ones most significant byte first.
-struct FilteredRows {
-  const PngLevels& levels;
-  std::size_t rowLevels;
-  std::size_t rowBytes;  // the filter byte and the levels
-
-  explicit FilteredRows(const PngLevels& l)
-      : levels(l),
-        rowLevels(static_cast<std::size_t>(l.width) * l.channels),
-        rowBytes(1 + rowLevels * (l.bits == 16 ? 2 : 1)) {}
-
-  // Bytes [first, first + count) of the data, whole rows, into out.
-  void copy(std::size_t first, std::size_t count, unsigned char* out) const {
-    for (std::size_t y = first / rowBytes; count > 0; ++y, count -= rowBytes) {
-      *out++ = 0;
-      if (levels.bits == 16) {
-        const std::uint16_t* row = levels.words + y * rowLevels;
-        for (std::size_t k = 0; k < rowLevels; ++k) {
-          *out++ = static_cast<unsigned char>(row[k] >> 8);
-          *out++ = static_cast<unsigned char>(row[k] & 0xff);
-        }
-      } else {
-        std::memcpy(out, levels.bytes + y * rowLevels, rowLevels);
-        out += rowLevels;
-      }
+// Row y of the image as PNG's filtered data, into `out`: its filter type,
+// 0 (none), then its levels, 16-bit ones most significant byte first.
+void filteredRow(const PngLevels& levels, std::size_t y, unsigned char* out) {
+  std::size_t rowLevels = static_cast<std::size_t>(levels.width) * levels.channels;
+  *out++ = 0;
+  if (levels.bits == 16) {
+    const std::uint16_t* row = levels.words + y * rowLevels;
+    for (std::size_t k = 0; k < rowLevels; ++k) {
+      *out++ = static_cast<unsigned char>(row[k] >> 8);
+      *out++ = static_cast<unsigned char>(row[k] & 0xff);
     }
+  } else {
+    std::memcpy(out, levels.bytes + y * rowLevels, rowLevels);
   }
-};
+}
 
 // The image data's zlib stream: every row unfiltered, at zlib's level 2,
 // in pieces of a megabyte or more deflated on every core (deflate_pieces.h).
@@ -81,12 +67,13 @@ struct FilteredRows {
 // settings differ), and level 1 saved no time. Level 3 saved 1.5% more
 // bytes for 30% more time. docs/RENDERING.md, "Image files".
 std::string imageData(const PngLevels& levels) {
-  FilteredRows rows(levels);
   PieceSource source;
-  source.total = rows.rowBytes * static_cast<std::size_t>(levels.height);
-  source.unit = rows.rowBytes;
-  source.makePiece = [&rows](std::size_t first, std::size_t count, unsigned char* out) {
-    rows.copy(first, count, out);
+  source.units = static_cast<std::size_t>(levels.height);
+  source.unitBytes =
+      1 + static_cast<std::size_t>(levels.width) * levels.channels * (levels.bits == 16 ? 2 : 1);
+  source.unit = [&levels](std::size_t y, unsigned char* scratch) {
+    filteredRow(levels, y, scratch);
+    return static_cast<const unsigned char*>(scratch);
   };
   return deflatePieces(source, 2, 0);
 }
