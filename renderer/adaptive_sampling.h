@@ -94,17 +94,20 @@ inline constexpr int kMaxSubdivisionDepth = 6;
 int subdivisionDepth(int samplesPerPixel);
 
 // One pixel's adaptive subdivision (docs/RENDERING.md, "Adaptive sampling").
-// Its samples lie on a lattice of side() x side() points, side() = 2^depth +
-// 1: point (a, b), index b * side() + a, sits at (a, b) / 2^depth of a pixel
-// from the pixel's top-left corner. The pixel starts as one square, its four
-// corners; a square whose corners differ (SampleSpread) is cut into four,
-// which needs the looks of up to five more points, down to `depth` cuts; a
-// square left whole counts as the mean of its corners. The pixel is cut
-// where its corners show different objects or colours that differ by more
-// than the threshold; a square `level` cuts down, only where its corners'
-// colours differ by more than threshold * 2^level. Which squares are cut
-// depends on the looks alone, so a pixel is the same however its points are
-// traced. One for each thread: it keeps its arrays from pixel to pixel.
+// Its samples lie on a lattice of side() x side() points, side() =
+// 2^(depth + 1) + 1, a step finer than the finest squares so that each has
+// a centre: point (a, b), index b * side() + a, sits at (a, b) / 2^(depth +
+// 1) of a pixel from the pixel's top-left corner. The pixel starts as one
+// square, its four corners; a square whose corners differ (SampleSpread) is
+// cut into four, which needs the looks of up to five more points, down to
+// `depth` cuts. The pixel is cut where its corners show different objects
+// or colours that differ by more than the threshold; a square `level` cuts
+// down, only where its corners' colours differ by more than threshold *
+// 2^level. A square left whole counts as the mean of its corners, or, where
+// they differ by more than half its level's threshold, as half their mean
+// and half its centre (one sample where a cut takes five). Which squares are
+// cut depends on the looks alone, so a pixel is the same however its points
+// are traced. One for each thread: it keeps its arrays from pixel to pixel.
 class PixelLattice {
  public:
   explicit PixelLattice(int depth);
@@ -131,8 +134,8 @@ class PixelLattice {
   int subdivide(double threshold, const TraceLevel& traceLevel);
 
   // After subdivide: the points the pixel is the weighted mean of, in
-  // lattice order, and their weights (parallel): multiples of 4^-depth / 4
-  // that sum to 1, all exact in a double.
+  // lattice order, and their weights (parallel): multiples of
+  // 4^-(depth + 1) / 4 that sum to 1, all exact in a double.
   const std::vector<int>& points() const { return points_; }
   const std::vector<double>& weights() const { return weights_; }
 
@@ -145,7 +148,7 @@ class PixelLattice {
   std::vector<int> touched_;
   std::vector<int> points_;
   std::vector<double> weights_;
-  // Lattices of up to this many points (depth 3) are read in order for
+  // Lattices of up to this many points (depth 2) are read in order for
   // their weighted points; larger ones sort the points the pixel touched.
   static constexpr int kScannedLattice = 81;
   // subdivide's work lists, kept to spare their allocations.
