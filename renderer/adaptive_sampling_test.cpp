@@ -133,11 +133,11 @@ TEST(AdaptiveSampling, ALatticeCutsAlongAnEdgeAndWeighsItsSquares) {
     for (int p = 0; p < static_cast<int>(tracedAt.size()); ++p) ASSERT_LE(tracedAt[p], 1) << p;
     EXPECT_EQ(tracedAt[0] + tracedAt[last] + tracedAt.back(), 0);
     // Only along the edge: a number of points that grows with the side, not
-    // with its square (at depth 6, 88 of 65 x 65).
+    // with its square (at depth 6, 129 x 129 points).
     int traced = 0;
     for (int n : tracedAt) traced += n;
     EXPECT_LE(traced, 8 * last) << "depth " << depth;
-    // The weights: in lattice order, multiples of the finest square's
+    // The weights: in lattice order, multiples of a lattice step's square's
     // quarter, summing to 1 exactly; the share of object 1 within the
     // finest squares' error of the true share.
     const double quantum = 0.25 / static_cast<double>(last * last);
