@@ -18,6 +18,10 @@
 #include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace render {
 
 namespace {
@@ -112,14 +116,92 @@ struct Bins {
   std::array<std::uint32_t, kBins> count;
 };
 
+// One bin's extent as manyItemsBins gathers it: with SSE2 the box's planes
+// stay floats (their minimum and maximum are those of the planes as
+// doubles, which they convert to exactly) and the centre's three doubles
+// go through two at a time, each compare keeping the bin's value on a tie
+// as Bounds::extend does (the first operand of MINPS and MAXPS is taken
+// only where it is strictly past the second), so the extent is the same,
+// bit for bit. With the doubles one at a time the build took about a ninth
+// more user time at floor-1000000 and floor-10000000.
+#if defined(__SSE2__)
+struct BinExtent {
+  __m128 lo;
+  // Lanes 1 to 3: the high planes (lane 0 the low z plane, left unused).
+  __m128 hi;
+  __m128d centreLoXY, centreHiXY, centreLoZ, centreHiZ;
+
+  // No item's: set up only where a bin is used (most splits use few).
+  void clear() {
+    lo = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    hi = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+    centreLoXY = centreLoZ = _mm_set1_pd(std::numeric_limits<double>::infinity());
+    centreHiXY = centreHiZ = _mm_set1_pd(-std::numeric_limits<double>::infinity());
+  }
+  // An item's centre, BuildItem::centre's: x and y in `xy`, z in the low
+  // lane of `z`; returns the one along `axis`, for its bin.
+  static double centreAlong(const BuildItem& item, int axis, __m128d& xy, __m128d& z) {
+    const float* p = item.planes;
+    const __m128d half = _mm_set1_pd(0.5);
+    __m128 lo = _mm_loadu_ps(p);
+    __m128 hiXY = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p + 3)));
+    xy = _mm_mul_pd(_mm_add_pd(_mm_cvtps_pd(lo), _mm_cvtps_pd(hiXY)), half);
+    z = _mm_mul_sd(_mm_add_sd(_mm_cvtss_sd(_mm_setzero_pd(), _mm_movehl_ps(lo, lo)),
+                              _mm_cvtss_sd(_mm_setzero_pd(), _mm_load_ss(p + 5))),
+                   half);
+    // NaN (a box from -infinity to infinity) to 0.
+    xy = _mm_and_pd(xy, _mm_cmpeq_pd(xy, xy));
+    z = _mm_and_pd(z, _mm_cmpeq_pd(z, z));
+    alignas(16) double c[4];
+    _mm_store_pd(c, xy);
+    _mm_store_pd(c + 2, z);
+    return c[axis];
+  }
+  void add(const BuildItem& item, __m128d xy, __m128d z) {
+    lo = _mm_min_ps(_mm_loadu_ps(item.planes), lo);
+    hi = _mm_max_ps(_mm_loadu_ps(item.planes + 2), hi);
+    centreLoXY = _mm_min_pd(xy, centreLoXY);
+    centreHiXY = _mm_max_pd(xy, centreHiXY);
+    centreLoZ = _mm_min_sd(z, centreLoZ);
+    centreHiZ = _mm_max_sd(z, centreHiZ);
+  }
+  NodeExtent extent() const {
+    alignas(16) float l[4], h[4];
+    alignas(16) double cl[2], ch[2];
+    _mm_store_ps(l, lo);
+    _mm_store_ps(h, hi);
+    NodeExtent e;
+    e.bounds = Bounds{glm::dvec3(l[0], l[1], l[2]), glm::dvec3(h[1], h[2], h[3])};
+    _mm_store_pd(cl, centreLoXY);
+    _mm_store_pd(ch, centreHiXY);
+    e.centres.lo = glm::dvec3(cl[0], cl[1], _mm_cvtsd_f64(centreLoZ));
+    e.centres.hi = glm::dvec3(ch[0], ch[1], _mm_cvtsd_f64(centreHiZ));
+    return e;
+  }
+};
+#endif
+
 // All kBins bins, filled in one pass over the items, each item's bin kept
 // in it for the partition.
 Bins manyItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, const BinRule& rule) {
   Bins bins;
   bins.size = kBins;
   for (int b = 0; b < kBins; ++b) bins.number[b] = b;
-  bins.extent.fill(NodeExtent{});
   bins.count.fill(0);
+#if defined(__SSE2__)
+  std::array<BinExtent, kBins> extent;
+  for (BinExtent& e : extent) e.clear();
+  for (std::uint32_t i = begin; i < end; ++i) {
+    __m128d xy, z;
+    double c = BinExtent::centreAlong(items[i], rule.axis, xy, z);
+    int b = std::clamp(static_cast<int>((c - rule.lo) * rule.scale), 0, kBins - 1);
+    items[i].bin = static_cast<std::uint32_t>(b);
+    ++bins.count[b];
+    extent[b].add(items[i], xy, z);
+  }
+  for (int b = 0; b < kBins; ++b) bins.extent[b] = extent[b].extent();
+#else
+  bins.extent.fill(NodeExtent{});
   for (std::uint32_t i = begin; i < end; ++i) {
     glm::dvec3 centre = items[i].centre();
     int b = rule(centre);
@@ -128,6 +210,7 @@ Bins manyItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, con
     bins.extent[b].bounds.extend(items[i].box());
     bins.extent[b].centres.extend(centre);
   }
+#endif
   return bins;
 }
 
@@ -249,11 +332,24 @@ Bins fewItemsBins(BuildItem* items, std::uint32_t begin, std::uint32_t end, cons
     bins.count[bins.size] = 0;
     ++bins.size;
   }
+#if defined(__SSE2__)
+  std::array<BinExtent, kBins> extent;
+  for (int j = 0; j < bins.size; ++j) extent[j].clear();
+  for (std::uint32_t i = begin; i < end; ++i) {
+    int j = slot[items[i].bin];
+    ++bins.count[j];
+    __m128d xy, z;
+    BinExtent::centreAlong(items[i], 0, xy, z);
+    extent[j].add(items[i], xy, z);
+  }
+  for (int j = 0; j < bins.size; ++j) bins.extent[j] = extent[j].extent();
+#else
   for (std::uint32_t i = begin; i < end; ++i) {
     int j = slot[items[i].bin];
     ++bins.count[j];
     bins.extent[j].extend(items[i]);
   }
+#endif
   return bins;
 }
 
