@@ -30,4 +30,23 @@ inline void populatePagesForWriting(const void* begin, const void* end) {
 #endif
 }
 
+// Asks that the whole 2 MiB pages within [begin, end) be huge pages
+// (MADV_HUGEPAGE, heeded where transparent huge pages are set to "madvise"
+// or "always"), for a big array not yet written: it then faults in a huge
+// page at a time, and a pass over it takes a 512th of the TLB entries. On a
+// guest whose host maps its memory in a shadow page table, each 4 KiB page
+// first written costs microseconds. Elsewhere, or where the call fails, it
+// does nothing.
+inline void adviseHugePages(const void* begin, const void* end) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+  std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + kHuge - 1) & ~(kHuge - 1);
+  std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(kHuge - 1);
+  if (to > from) ::madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+#else
+  (void)begin;
+  (void)end;
+#endif
+}
+
 }  // namespace scene

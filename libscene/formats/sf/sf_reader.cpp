@@ -492,7 +492,9 @@ bool readPartsOnThreads(std::string_view text, std::span<const std::size_t> star
     room.clear();
     results[k] = ReadResult{Scene{}, DiagnosticList({}, options.errorLimit)};
     results[k].scene.objects = std::move(room);
-    results[k].scene.objects.reserve(std::min(records[k], options.maxObjects));
+    std::vector<Object>& objects = results[k].scene.objects;
+    objects.reserve(std::min(records[k], options.maxObjects));
+    adviseHugePages(objects.data(), objects.data() + objects.capacity());
   }
   facts.assign(count, PartFacts{});
   bool read = runOnThreads(count, [&](std::size_t k) {
