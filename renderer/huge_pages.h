@@ -21,6 +21,8 @@ inline constexpr std::uintptr_t kHugePageBytes = std::uintptr_t{1} << 21;
 // entry rather than 512. Pages already written stay as they are: moving
 // them (MADV_COLLAPSE) took seconds for a gigabyte. Elsewhere, or where the
 // call fails, it does nothing.
+// (libscene's readers have their own copy, in libscene/core/populate_pages.h,
+// a header private to the library that the renderer does not include.)
 inline void adviseHugePages(const void* begin, const void* end) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   std::uintptr_t from =

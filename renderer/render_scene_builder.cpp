@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "libscene/core/populate_pages.h"
 #include "renderer/huge_pages.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/permute_in_place.h"
@@ -97,10 +96,6 @@ void RenderSceneBuilder::add(std::span<const scene::Object> batch) {
     std::uint32_t planeCount = 0;
     const std::size_t begin = count * part / parts;
     const std::size_t end = count * (part + 1) / parts;
-    // The part's room faulted in at once: page by page at the first writes
-    // cost more than the records written there.
-    scene::populatePagesForWriting(objects_.data() + first + begin, objects_.data() + first + end);
-    scene::populatePagesForWriting(colours_.data() + first + begin, colours_.data() + first + end);
     for (std::size_t i = begin; i < end; ++i) {
       const scene::Object& o = batch[i];
       RenderObject& record = objects_[first + i];

@@ -37,6 +37,8 @@ inline void populatePagesForWriting(const void* begin, const void* end) {
 // guest whose host maps its memory in a shadow page table, each 4 KiB page
 // first written costs microseconds. Elsewhere, or where the call fails, it
 // does nothing.
+// (The renderer, which includes only the public headers, has its own
+// copy: renderer/huge_pages.h.)
 inline void adviseHugePages(const void* begin, const void* end) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
