@@ -3,21 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/matrix.hpp>
-#include <numbers>
 
 #include "libscene/formats/pov/pov_keywords.h"
 #include "libscene/formats/pov/pov_pattern_mean.h"
+#include "libscene/formats/pov/pov_value.h"
 #include "libscene/text/number.h"
 #include "libscene/text/reader_support.h"
 #include "scenefile/transform.h"
 
 namespace scene {
 
-namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
-
-}  // namespace
+namespace {}  // namespace
 
 // --- Transformations -----------------------------------------------------------
 
@@ -42,7 +38,7 @@ void PovModifierReader::applyTransformItem(const PovToken& word, PovTransform& t
       if (angles[i] == 0.0) continue;
       TransformOp op;
       op.kind = kinds[i];
-      op.value = glm::dvec3(angles[i] * kDegree, 0.0, 0.0);
+      op.value = glm::dvec3(angles[i] * kPovDegree, 0.0, 0.0);
       t.then(transformMatrix(op));
     }
   } else if (w == "scale") {

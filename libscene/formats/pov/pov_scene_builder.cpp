@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,6 +10,7 @@
 
 #include "libscene/formats/pov/pov_comment_words.h"
 #include "libscene/formats/pov/pov_reports.h"
+#include "libscene/formats/pov/pov_value.h"
 #include "libscene/text/number.h"
 #include "scenefile/matrix.h"
 #include "scenefile/transform.h"
@@ -19,8 +19,6 @@
 namespace scene {
 
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // Every matrix of a left-handed scene is conjugated by z -> -z: F M F.
 glm::dmat4 mirrorZ(glm::dmat4 m) {
@@ -184,7 +182,7 @@ void PovSceneBuilder::finishCamera(const PovCameraState& c, SourceSpan span) {
   camera.matrix[2] = glm::dvec4(-forward, 0.0);
   camera.matrix[3] = glm::dvec4(c.location, 1.0);
   double height = upLength / directionLength;
-  result_.view.verticalFovDegrees = 2.0 * std::atan(0.5 * height) / kDegree;
+  result_.view.verticalFovDegrees = 2.0 * std::atan(0.5 * height) / kPovDegree;
   result_.view.aspectRatio = std::abs(rightLength) / upLength;
   exactCamera(camera, forward, up, parts_.cameraComment);
   checkCameraMatrix(camera.matrix, span, out_);

@@ -3,22 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <numbers>
 
 namespace scene {
 
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
-
 // POV-Ray's vrotate: about x, then y, then z, in degrees (rotate's matrices).
 glm::dvec3 rotateDegrees(const glm::dvec3& p, const glm::dvec3& angles) {
   glm::dvec3 r = p;
-  double c = std::cos(angles.x * kDegree), s = std::sin(angles.x * kDegree);
+  double c = std::cos(angles.x * kPovDegree), s = std::sin(angles.x * kPovDegree);
   r = {r.x, c * r.y - s * r.z, s * r.y + c * r.z};
-  c = std::cos(angles.y * kDegree), s = std::sin(angles.y * kDegree);
+  c = std::cos(angles.y * kPovDegree), s = std::sin(angles.y * kPovDegree);
   r = {c * r.x + s * r.z, r.y, -s * r.x + c * r.z};
-  c = std::cos(angles.z * kDegree), s = std::sin(angles.z * kDegree);
+  c = std::cos(angles.z * kPovDegree), s = std::sin(angles.z * kPovDegree);
   r = {c * r.x - s * r.y, s * r.x + c * r.y, r.z};
   return r;
 }
@@ -26,7 +23,7 @@ glm::dvec3 rotateDegrees(const glm::dvec3& p, const glm::dvec3& angles) {
 // Rodrigues' rotation of p about `axis` by `degrees`.
 glm::dvec3 rotateAbout(const glm::dvec3& p, const glm::dvec3& axis, double degrees) {
   glm::dvec3 k = glm::normalize(axis);
-  double c = std::cos(degrees * kDegree), s = std::sin(degrees * kDegree);
+  double c = std::cos(degrees * kPovDegree), s = std::sin(degrees * kPovDegree);
   return p * c + glm::cross(k, p) * s + k * glm::dot(k, p) * (1.0 - c);
 }
 
@@ -36,10 +33,10 @@ struct FloatFunction {
 };
 
 double degrees(double x) {
-  return x / kDegree;
+  return x / kPovDegree;
 }
 double radians(double x) {
-  return x * kDegree;
+  return x * kPovDegree;
 }
 double truncate(double x) {
   return std::trunc(x);

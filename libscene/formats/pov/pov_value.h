@@ -5,12 +5,16 @@
 
 #include <array>
 #include <glm/vec3.hpp>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace scene {
+
+// A degree in radians: POV-Ray writes angles in degrees.
+inline constexpr double kPovDegree = std::numbers::pi / 180.0;
 
 struct PovValue {
   enum class Type { Float, Vector, Colour };
