@@ -6,15 +6,11 @@
 #include <random>
 #include <string>
 
-#include "scenefile/read.h"
 #include "libscene/testing/test_support.h"
+#include "scenefile/read.h"
 
 namespace scene {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 TEST(HostileInput, AOneGigabyteLine) {
   // A colour line whose third number has a billion digits.
@@ -27,7 +23,7 @@ TEST(HostileInput, AOneGigabyteLine) {
   options.maxFileSize = text.size();
   auto start = std::chrono::steady_clock::now();
   ReadResult r = parseScene(text, "big.sf", options);
-  EXPECT_LT(secondsSince(start), 30.0);
+  EXPECT_LT(testing::secondsSince(start), 30.0);
   testing::expectOne(r.diagnostics, DiagnosticCode::NumberOutOfRange, 8, 5);
   EXPECT_EQ(r.diagnostics.errorCount(), 1u);
 }
@@ -39,7 +35,7 @@ TEST(HostileInput, BinaryGarbage) {
     for (char& c : text) c = static_cast<char>(rng());
     auto start = std::chrono::steady_clock::now();
     ReadResult r = parseScene(text, "garbage");
-    EXPECT_LT(secondsSince(start), 5.0);
+    EXPECT_LT(testing::secondsSince(start), 5.0);
     EXPECT_TRUE(r.diagnostics.hasErrors());
     EXPECT_LE(r.diagnostics.items().size(), 2 * DiagnosticList::kDefaultErrorLimit + 1);
   }
@@ -48,9 +44,11 @@ TEST(HostileInput, BinaryGarbage) {
 TEST(HostileInput, PrintableGarbageInBothFormats) {
   // Random tokens drawn from the formats' own words and numbers: the
   // readers must recover from any order of them.
-  const char* words[] = {"CAMERA", "LIGHT", "SPHERE", "CUBE", "START", "END", "OBJECT",
-                         "MATERIAL", "TRANSFORMATION", "LOCATION", "COLOUR", "SCALE", "1",
-                         "0", "-1", "1e400", "nan", "OUTPUT_FILE", "x.ppm", "\n", "\n", "\n"};
+  const char* words[] = {
+      "CAMERA",   "LIGHT",          "SPHERE",   "CUBE",        "START", "END", "OBJECT",
+      "MATERIAL", "TRANSFORMATION", "LOCATION", "COLOUR",      "SCALE", "1",   "0",
+      "-1",       "1e400",          "nan",      "OUTPUT_FILE", "x.ppm", "\n",  "\n",
+      "\n"};
   std::mt19937_64 rng(7);
   for (int round = 0; round < 2000; ++round) {
     std::string text = round % 2 ? "OUTPUT_FILE a.ppm\n" : "";

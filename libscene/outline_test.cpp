@@ -163,10 +163,6 @@ TEST(OutlineOf, NothingForTheOtherFormats) {
   EXPECT_TRUE(placeAt("sphere { 0, 1 }", Format::Pov, 0, 1, 1).words.empty());
 }
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Any text gives some outline, and every place in it some answer.
 TEST(OutlineOf, AnyTextInEitherFormat) {
   std::vector<std::string> texts;
@@ -234,7 +230,7 @@ TEST(OutlineOf, EndlessNestingAndRepetitionInLinearTime) {
       placeAt(*text, Format::InstructionFile, lastLine, 600'001, 1);
     }
   }
-  EXPECT_LT(secondsSince(start), 2.0);
+  EXPECT_LT(testing::secondsSince(start), 2.0);
 }
 
 TEST(PlaceAt, SceneFileLinesInTheirRecord) {

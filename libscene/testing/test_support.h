@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,11 @@
 #include "scenefile/transform.h"
 
 namespace scene::testing {
+
+// Seconds of wall time since `start`, for the tests that bound a read's time.
+inline double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // The bytes of a file, for a test that reads one of the repository's.
 inline std::string readText(const std::filesystem::path& path) {

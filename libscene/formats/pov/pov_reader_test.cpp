@@ -499,10 +499,6 @@ TEST(PovReader, AStaleExactCommentIsIgnored) {
   expectOne(r.read.diagnostics, DiagnosticCode::PovIgnored, 2, 1, Severity::Note);
 }
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Hostile input costs bounded time and memory, and is answered with
 // diagnostics like any other.
 TEST(PovHostileInput, GarbageBinaryAndTokens) {
@@ -523,7 +519,7 @@ TEST(PovHostileInput, GarbageBinaryAndTokens) {
     }
     auto start = std::chrono::steady_clock::now();
     PovImport r = read(text);
-    EXPECT_LT(secondsSince(start), 5.0);
+    EXPECT_LT(testing::secondsSince(start), 5.0);
     EXPECT_TRUE(r.read.diagnostics.hasErrors());
     EXPECT_LE(r.read.diagnostics.items().size(), 2 * DiagnosticList::kDefaultErrorLimit + 2);
   }
@@ -549,7 +545,7 @@ TEST(PovHostileInput, EveryLimitRefusesQuickly) {
 
   std::string digits = "#declare D = " + std::string(10'000'000, '9') + ";";
   EXPECT_EQ(withCode(read(digits).read.diagnostics, DiagnosticCode::NumberOutOfRange).size(), 1u);
-  EXPECT_LT(secondsSince(start), 20.0);
+  EXPECT_LT(testing::secondsSince(start), 20.0);
 }
 
 TEST(PovReader, StopsAtTheFirstObjectOrLightPastMaxObjects) {
