@@ -16,7 +16,7 @@ MemoryFile::~MemoryFile() {
 
 namespace {
 
-tools::ToolFailure cannotWrite(std::string why) {
+tools::ToolFailure inMemoryFailure(std::string why) {
   return tools::toolFailure(tools::ExitCode::IoError, std::move(why));
 }
 
@@ -25,7 +25,7 @@ tools::ToolFailure cannotWrite(std::string why) {
 tools::MaybeFailure MemoryFile::create() {
   fd_ = ::memfd_create("sfrender-image", MFD_CLOEXEC);
   if (fd_ < 0) {
-    return cannotWrite(std::string("no file in memory could be made: ") + std::strerror(errno));
+    return inMemoryFailure(std::string("no file in memory could be made: ") + std::strerror(errno));
   }
   return std::nullopt;
 }
@@ -36,14 +36,15 @@ std::string MemoryFile::name() const {
 
 tools::Outcome<std::string_view> MemoryFile::bytes() {
   struct stat info {};
-  if (::fstat(fd_, &info) != 0) return cannotWrite(std::strerror(errno));
+  if (::fstat(fd_, &info) != 0) return inMemoryFailure(std::strerror(errno));
   if (map_) ::munmap(map_, mapped_);
   map_ = nullptr;
   mapped_ = static_cast<std::size_t>(info.st_size);
   if (mapped_ == 0) return std::string_view();
   void* map = ::mmap(nullptr, mapped_, PROT_READ, MAP_SHARED, fd_, 0);
   if (map == MAP_FAILED) {
-    return cannotWrite(std::string("the image in memory cannot be read: ") + std::strerror(errno));
+    return inMemoryFailure(std::string("the image in memory cannot be read: ") +
+                           std::strerror(errno));
   }
   map_ = map;
   return std::string_view(static_cast<const char*>(map_), mapped_);

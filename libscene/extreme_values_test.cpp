@@ -121,7 +121,7 @@ std::string instructionText(const Scene& scene) {
 }
 
 // |a - b| per column of the 3x3 block, against that column's length.
-double columnError(const glm::dmat4& a, const glm::dmat4& b) {
+double scaledColumnError(const glm::dmat4& a, const glm::dmat4& b) {
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
     double norm = scaledLength(glm::dvec3(a[c]));
@@ -178,10 +178,10 @@ void checkSceneFileScene(const Scene& scene, int index, std::map<Format, Tally>&
         << t.text;
     for (std::size_t k = 0; k < back.objects.size(); ++k) {
       ASSERT_EQ(back.objects[k].matrix[3], scene.objects[k].matrix[3]) << "scene " << index;
-      ASSERT_LE(
-          columnError(scene.objects[k].matrix, back.objects[k].matrix),
-          std::max(1e-12, columnError(scene.objects[k].matrix,
-                                      decomposeTransform(scene.objects[k].matrix).recomposed)))
+      ASSERT_LE(scaledColumnError(scene.objects[k].matrix, back.objects[k].matrix),
+                std::max(1e-12,
+                         scaledColumnError(scene.objects[k].matrix,
+                                           decomposeTransform(scene.objects[k].matrix).recomposed)))
           << "scene " << index << " object " << k;
     }
     ASSERT_EQ(instructionText(back), t.text) << "scene " << index;

@@ -14,11 +14,11 @@
 #include <sstream>
 
 #include "libscene/formats/pov/pov_writer.h"
-#include "scenefile/read.h"
-#include "scenefile/transform.h"
 #include "renderer/default_scene.h"
 #include "renderer/render.h"
 #include "renderer/render_scene.h"
+#include "scenefile/read.h"
+#include "scenefile/transform.h"
 #include "tests/pov/povray_runner.h"
 
 namespace {
@@ -28,8 +28,8 @@ using K = scene::ObjectKind;
 using glm::dmat4;
 using glm::dvec3;
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 240;
+constexpr int kShadedWidth = 320;
+constexpr int kShadedHeight = 240;
 
 struct ShadedCase {
   std::string name;
@@ -141,7 +141,7 @@ scene::Scene crowd() {
   return s;
 }
 
-std::vector<ShadedCase> cases() {
+std::vector<ShadedCase> shadedCases() {
   return {
       {"all primitives (testdata)", readScene("valid/all-primitives.sf")},
       {"materials and coloured lights", materials()},
@@ -164,8 +164,8 @@ TEST_P(PovShading, PovRayAndSfrenderImagesDifferLittle) {
   if (!povtest::povrayProgram()) GTEST_SKIP() << "povray is not installed";
   const ShadedCase& c = GetParam();
   scene::PovWriteOptions options;
-  options.width = kWidth;
-  options.height = kHeight;
+  options.width = kShadedWidth;
+  options.height = kShadedHeight;
   scene::ConversionOptions conversion;
   conversion.pov = options;
   scene::DiagnosticList diagnostics;
@@ -174,17 +174,17 @@ TEST_P(PovShading, PovRayAndSfrenderImagesDifferLittle) {
   std::string name = "shaded-" + std::to_string(std::hash<std::string>{}(c.name) % 100000);
   std::string log;
   std::optional<povtest::Image8> povImage =
-      povtest::renderWithPovray(*pov, kWidth, kHeight, name, log);
+      povtest::renderWithPovray(*pov, kShadedWidth, kShadedHeight, name, log);
   ASSERT_TRUE(povImage.has_value()) << log;
 
   render::RenderSettings settings;
-  settings.width = kWidth;
-  settings.height = kHeight;
+  settings.width = kShadedWidth;
+  settings.height = kShadedHeight;
   render::Image ours = render::renderImage(render::RenderScene(c.scene), settings);
   double sum = 0.0;
   int worst = 0;
   std::size_t offPixels = 0;
-  std::size_t pixels = static_cast<std::size_t>(kWidth) * kHeight;
+  std::size_t pixels = static_cast<std::size_t>(kShadedWidth) * kShadedHeight;
   for (std::size_t p = 0; p < pixels; ++p) {
     int pixelWorst = 0;
     for (int ch = 0; ch < 3; ++ch) {
@@ -209,7 +209,7 @@ TEST_P(PovShading, PovRayAndSfrenderImagesDifferLittle) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PovShading, ::testing::ValuesIn(cases()),
+INSTANTIATE_TEST_SUITE_P(Scenes, PovShading, ::testing::ValuesIn(shadedCases()),
                          [](const ::testing::TestParamInfo<ShadedCase>& info) {
                            std::string n;
                            for (char ch : info.param.name) {

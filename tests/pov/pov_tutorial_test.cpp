@@ -28,8 +28,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kAgreement = 0.98;
-constexpr int kWidth = 200;
+constexpr double kTutorialAgreement = 0.98;
+constexpr int kTutorialWidth = 200;
 
 using scene::testing::readText;
 
@@ -69,16 +69,16 @@ TEST_P(PovTutorial, SfrenderDrawsTheObjectsWherePovRayDoes) {
   std::string text = readText(GetParam());
   std::string name = GetParam().stem().string();
   scene::ReadOptions options;
-  options.pov.imageWidth = kWidth;
-  options.pov.imageHeight = kWidth * 3 / 4;
+  options.pov.imageWidth = kTutorialWidth;
+  options.pov.imageHeight = kTutorialWidth * 3 / 4;
   scene::PovImport imported = scene::importPov(text, name + ".pov", options);
   ASSERT_TRUE(imported.read.ok()) << imported.read.diagnostics.items().front().message;
   const scene::Scene& scene = imported.read.scene;
   ASSERT_FALSE(scene.objects.empty());
 
   // The image that POV-Ray's camera is for, as the reader reports it.
-  int width = kWidth;
-  int height = static_cast<int>(std::lround(kWidth / imported.view.aspectRatio));
+  int width = kTutorialWidth;
+  int height = static_cast<int>(std::lround(kTutorialWidth / imported.view.aspectRatio));
   std::string log;
   // A hand-written scene's own assumed_gamma decides POV-Ray's output: the
   // flat colours are decoded from linear levels.
@@ -96,7 +96,7 @@ TEST_P(PovTutorial, SfrenderDrawsTheObjectsWherePovRayDoes) {
   std::cout << "[ pov ] " << name << " (--fov " << scene::formatNumber(settings.verticalFovDegrees)
             << (imported.view.mirrored ? ", mirrored" : "") << "): " << 100.0 * same
             << "% of pixels show the same object\n";
-  EXPECT_GE(same, kAgreement);
+  EXPECT_GE(same, kTutorialAgreement);
   // Every object shows: the test is about all of them.
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     EXPECT_NE(std::find(povIds.begin(), povIds.end(), static_cast<std::int32_t>(i)), povIds.end())

@@ -56,7 +56,7 @@ std::vector<ToolCommandLine> allTools() {
 }
 
 // What the tool prints for `args` (its name first), and the exit status.
-struct Outcome {
+struct ParseOutcome {
   std::optional<ExitCode> status;
   std::string out;
   std::string err;
@@ -66,7 +66,7 @@ std::string firstLine(const std::string& text) {
   return text.substr(0, text.find('\n'));
 }
 
-Outcome parse(CLI::App& app, std::vector<std::string> args) {
+ParseOutcome parse(CLI::App& app, std::vector<std::string> args) {
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   std::ostringstream out, err;
@@ -78,7 +78,7 @@ Outcome parse(CLI::App& app, std::vector<std::string> args) {
 TEST(CommandLine, AnUnknownOptionIsNamedWithTheClosestKnownOne) {
   SfrenderOptions o;
   auto app = makeSfrenderCommandLine(o);
-  Outcome r = parse(*app, {"sfrender", "--widht", "3"});
+  ParseOutcome r = parse(*app, {"sfrender", "--widht", "3"});
   EXPECT_EQ(r.status, ExitCode::Usage);
   EXPECT_EQ(r.err,
             "sfrender: error: unknown option '--widht'; did you mean '--width'?\n"
@@ -145,7 +145,7 @@ TEST(CommandLine, EveryNumericOptionOfEveryToolRefusesAWordAsNoNumber) {
       }
       std::string name = "--" + option->get_lnames().front();
       auto app = tool.make();
-      Outcome r = parse(*app, {tool.name, name, "abc"});
+      ParseOutcome r = parse(*app, {tool.name, name, "abc"});
       EXPECT_EQ(r.status, ExitCode::Usage) << tool.name << " " << name;
       EXPECT_NE(r.err.find(name + ": 'abc' is not a number"), std::string::npos)
           << tool.name << " " << name << ": " << r.err;
@@ -170,11 +170,11 @@ TEST(CommandLine, EveryToolHasTheCommonFlags) {
       EXPECT_NE(app->get_option_no_throw(flag), nullptr) << tool.name << " " << flag;
     }
     app = tool.make();
-    Outcome version = parse(*app, {tool.name, "-V"});
+    ParseOutcome version = parse(*app, {tool.name, "-V"});
     EXPECT_EQ(version.status, ExitCode::Success);
     EXPECT_EQ(version.out, tool.name + " " + SCENEFILE_VERSION + "\n");
     app = tool.make();
-    Outcome both = parse(*app, {tool.name, "-q", "-v"});
+    ParseOutcome both = parse(*app, {tool.name, "-q", "-v"});
     EXPECT_EQ(both.status, ExitCode::Usage) << tool.name;
     EXPECT_NE(both.err.find("--quiet and --verbose cannot be used together"), std::string::npos)
         << both.err;
@@ -190,7 +190,7 @@ TEST(CommandLine, EveryToolHasTheCommonFlags) {
 TEST(CommandLine, HelpShowsEveryOptionAndItsDefault) {
   for (const ToolCommandLine& tool : allTools()) {
     auto app = tool.make();
-    Outcome help = parse(*app, {tool.name, "--help"});
+    ParseOutcome help = parse(*app, {tool.name, "--help"});
     EXPECT_EQ(help.status, ExitCode::Success);
     EXPECT_EQ(help.out.rfind("Usage: " + tool.name + " [OPTIONS]", 0), 0u) << help.out;
     std::istringstream lines(help.out);
@@ -301,7 +301,7 @@ TEST(CommandLine, EveryNumericOptionOfEveryToolReadsANumberOneWay) {
           }
           args.insert(args.end(), tool.arguments.begin(), tool.arguments.end());
           auto app = tool.make();
-          Outcome r;
+          ParseOutcome r;
           ASSERT_NO_THROW(r = parse(*app, args));
           if (r.status) {
             ++refused;
@@ -341,7 +341,7 @@ TEST(CommandLine, AnEmptyValueOrAnOptionGivenTwiceIsAUsageErrorForEveryOption) {
                                             std::vector<std::string>{tool.name, name, ""}}) {
         args.insert(args.end(), tail.begin(), tail.end());
         auto app = tool.make();
-        Outcome r = parse(*app, args);
+        ParseOutcome r = parse(*app, args);
         EXPECT_EQ(r.status, ExitCode::Usage);
         EXPECT_TRUE(r.err.find(name + ": '' ") != std::string::npos ||
                     r.err.find(name + ": the value is empty") != std::string::npos)
@@ -364,7 +364,7 @@ TEST(CommandLine, AnEmptyValueOrAnOptionGivenTwiceIsAUsageErrorForEveryOption) {
         for (int i = 0; i < times; ++i) args.insert(args.end(), {name, *good});
         args.insert(args.end(), tail.begin(), tail.end());
         auto app = tool.make();
-        Outcome r = parse(*app, args);
+        ParseOutcome r = parse(*app, args);
         EXPECT_EQ(r.status, ExitCode::Usage);
         EXPECT_EQ(firstLine(r.err),
                   tool.name + ": error: " + name + " given " + (times == 2 ? "twice" : "3 times"));

@@ -10,7 +10,7 @@ namespace {
 
 // A triangle that covers the window, its texture coordinates upside down:
 // the frame's rows go from the top, OpenGL's from the bottom.
-const char* kVertexShader = R"(#version 330 core
+const char* kImageVertexShader = R"(#version 330 core
 out vec2 uv;
 void main() {
   vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
@@ -19,7 +19,7 @@ void main() {
 }
 )";
 
-const char* kFragmentShader = R"(#version 330 core
+const char* kImageFragmentShader = R"(#version 330 core
 in vec2 uv;
 uniform sampler2D image;
 out vec4 fragment;
@@ -31,7 +31,7 @@ void main() {
 }  // namespace
 
 RayTracedView::RayTracedView() {
-  program_ = linkGlProgram(kVertexShader, kFragmentShader, "the ray-traced view's");
+  program_ = linkGlProgram(kImageVertexShader, kImageFragmentShader, "the ray-traced view's");
   glGenVertexArrays(1, &vao_);
   glGenTextures(1, &texture_);
   glBindTexture(GL_TEXTURE_2D, texture_);

@@ -13,7 +13,7 @@
 namespace sfbuild {
 namespace {
 
-struct FakeFiles {
+struct FakeSceneFiles {
   std::map<std::string, std::string> files;
   FileSystem fs() {
     return {[this](const std::string& n) { return files.count(n) != 0; },
@@ -39,7 +39,7 @@ std::string asSceneFile(const scene::Scene& s) {
 // A sphere with a material of its own and a light.
 BuilderState shinySphere() {
   BuilderState state = initialState(640, 480);
-  FakeFiles none;
+  FakeSceneFiles none;
   handleKey(state, '3', none.fs());
   handleKey(state, 'L', none.fs());
   scene::Material material = state.scene.objects[0].material;
@@ -51,7 +51,7 @@ BuilderState shinySphere() {
 
 TEST(SceneFiles, TheExtensionPicksTheFormatAndAnInstructionFileKeepsTheMaterials) {
   BuilderState state = shinySphere();
-  FakeFiles files;
+  FakeSceneFiles files;
   ASSERT_TRUE(saveSceneAs(state, "shiny.txt", files.fs())) << state.lastSave;
   EXPECT_EQ(state.lastSave, "saved shiny.txt");
   ASSERT_TRUE(saveSceneAs(state, "plain.sf", files.fs())) << state.lastSave;
@@ -69,7 +69,7 @@ TEST(SceneFiles, TheExtensionPicksTheFormatAndAnInstructionFileKeepsTheMaterials
 
 TEST(SceneFiles, RefusesANameWithoutAFormatAndAnotherFileThatExists) {
   BuilderState state = shinySphere();
-  FakeFiles files;
+  FakeSceneFiles files;
   files.files["taken.sf"] = "old";
   EXPECT_FALSE(saveSceneAs(state, "scene", files.fs()));
   EXPECT_NE(state.lastSave.find("the extension names no format (.sf, .txt"), std::string::npos)
@@ -85,7 +85,7 @@ TEST(SceneFiles, RefusesANameWithoutAFormatAndAnotherFileThatExists) {
 // reader takes back, as sfconvert names it.
 TEST(SceneFiles, AnInstructionFileNamesItsImageAfterItselfInAFormThatReadsBack) {
   BuilderState state = shinySphere();
-  FakeFiles files;
+  FakeSceneFiles files;
   ASSERT_TRUE(saveSceneAs(state, "my scene.txt", files.fs())) << state.lastSave;
   EXPECT_EQ(files.files["my scene.txt"].substr(0, 25), "OUTPUT_FILE my_scene.ppm\n");
   EXPECT_TRUE(openSceneFile(state, "my scene.txt", files.fs())) << state.lastSave;
@@ -93,7 +93,7 @@ TEST(SceneFiles, AnInstructionFileNamesItsImageAfterItselfInAFormThatReadsBack) 
 
 TEST(SceneFiles, OpeningIsAStepOfTheHistory) {
   BuilderState saved = shinySphere();
-  FakeFiles files;
+  FakeSceneFiles files;
   ASSERT_TRUE(saveSceneAs(saved, "shiny.txt", files.fs()));
 
   BuilderState state = initialState(640, 480);
@@ -116,7 +116,7 @@ TEST(SceneFiles, OpeningIsAStepOfTheHistory) {
 TEST(SceneFiles, AnErrorIsToldAtItsPlaceAndTheSceneStays) {
   BuilderState state = shinySphere();
   scene::Scene before = state.scene;
-  FakeFiles files;
+  FakeSceneFiles files;
   // A good scene file, and a line that is no record after it.
   std::string text = asSceneFile(state.scene);
   std::string line = std::to_string(std::count(text.begin(), text.end(), '\n') + 1);

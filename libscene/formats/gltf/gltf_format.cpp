@@ -15,8 +15,8 @@ constexpr std::string_view kGltfExtensions[] = {".gltf"};
 constexpr std::string_view kGlbExtensions[] = {".glb"};
 // glTF holds the Phong values in its materials' extensions and extras, and
 // the camera's field of view and aspect ratio.
-constexpr FormatHolds kHolds{.materials = true, .transformLists = true, .outputFile = true,
-                             .view = true};
+constexpr FormatHolds kHolds{
+    .materials = true, .transformLists = true, .outputFile = true, .view = true};
 
 Recognition recogniseGltf(std::string_view bytes) {
   return looksLikeGltfJson(bytes) ? Recognition::Certain : Recognition::None;

@@ -60,7 +60,7 @@ Json written(const Scene& scene) {
 double roughnessOf(double shininess) {
   return std::pow(2.0 / (shininess + 2.0), 0.25);
 }
-double decode(double v) {
+double decodeSrgb(double v) {
   return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
 
@@ -70,7 +70,7 @@ TEST(GltfMaterials, AMirrorIsASmoothMetalAndGlassASmoothTransmitter) {
   // linear weight of REFLECTIVITY 0.9; metallic is that weight's share.
   const Json& mirror = doc["materials"][0];
   const Json& pbr = mirror["pbrMetallicRoughness"];
-  double g = decode(0.9);
+  double g = decodeSrgb(0.9);
   double metallic = g / (0.05 + g);
   EXPECT_NEAR(pbr["metallicFactor"].get<double>(), metallic, 1e-15);
   EXPECT_GT(metallic, 0.9);

@@ -24,7 +24,7 @@ namespace scene {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian");
 
@@ -34,20 +34,21 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedShort = 5123;
 constexpr int kUnsignedInt = 5125;
 
-Json vec3Json(const glm::dvec3& v) {
-  return Json::array({v.x, v.y, v.z});
+OrderedJson vec3Json(const glm::dvec3& v) {
+  return OrderedJson::array({v.x, v.y, v.z});
 }
 
 // Row by row, as a scene file writes it: the form a person reads in extras.
-Json rowsJson(const glm::dmat4& m) {
-  Json rows = Json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back(Json::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
+OrderedJson rowsJson(const glm::dmat4& m) {
+  OrderedJson rows = OrderedJson::array();
+  for (int r = 0; r < 4; ++r)
+    rows.push_back(OrderedJson::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
   return rows;
 }
 
 // Column by column, as glTF's `matrix` wants it; GLM holds m[column][row].
-Json columnsJson(const glm::dmat4& m) {
-  Json out = Json::array();
+OrderedJson columnsJson(const glm::dmat4& m) {
+  OrderedJson out = OrderedJson::array();
   for (int c = 0; c < 4; ++c) {
     for (int r = 0; r < 4; ++r) out.push_back(m[c][r]);
   }
@@ -56,7 +57,7 @@ Json columnsJson(const glm::dmat4& m) {
 
 // Our exact values under `extras` (gltf_extras.h), unless the glTF is
 // written without them.
-void putExtras(Json& into, Json sf, bool extras) {
+void putExtras(OrderedJson& into, OrderedJson sf, bool extras) {
   if (extras) into["extras"] = gltf::extrasJson(std::move(sf));
 }
 
@@ -103,7 +104,7 @@ std::string uriFromFileName(std::string_view name) {
 
 // JSON text indented by two spaces, but with arrays of numbers and strings
 // on one line: a matrix reads as one line, not sixteen.
-void appendPretty(std::string& out, const Json& j, int depth) {
+void appendPretty(std::string& out, const OrderedJson& j, int depth) {
   auto newline = [&out](int level) {
     out += '\n';
     out.append(static_cast<std::size_t>(2 * level), ' ');
@@ -115,17 +116,18 @@ void appendPretty(std::string& out, const Json& j, int depth) {
       if (!first) out += ',';
       first = false;
       newline(depth + 1);
-      out += Json(key).dump();
+      out += OrderedJson(key).dump();
       out += ": ";
       appendPretty(out, value, depth + 1);
     }
     newline(depth);
     out += '}';
   } else if (j.is_array() && !j.empty() &&
-             std::any_of(j.begin(), j.end(), [](const Json& e) { return e.is_structured(); })) {
+             std::any_of(j.begin(), j.end(),
+                         [](const OrderedJson& e) { return e.is_structured(); })) {
     out += '[';
     bool first = true;
-    for (const Json& value : j) {
+    for (const OrderedJson& value : j) {
       if (!first) out += ',';
       first = false;
       newline(depth + 1);
@@ -162,7 +164,7 @@ class BufferBuilder {
         {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", length}, {"target", target}});
     return static_cast<int>(views_.size() - 1);
   }
-  int addAccessor(Json accessor) {
+  int addAccessor(OrderedJson accessor) {
     accessors_.push_back(std::move(accessor));
     return static_cast<int>(accessors_.size() - 1);
   }
@@ -170,13 +172,13 @@ class BufferBuilder {
     data_.append((4 - data_.size() % 4) % 4, '\0');
     return data_;
   }
-  Json& views() { return views_; }
-  Json& accessors() { return accessors_; }
+  OrderedJson& views() { return views_; }
+  OrderedJson& accessors() { return accessors_; }
 
  private:
   std::string data_;
-  Json views_ = Json::array();
-  Json accessors_ = Json::array();
+  OrderedJson views_ = OrderedJson::array();
+  OrderedJson accessors_ = OrderedJson::array();
 };
 
 struct MeshAccessors {
@@ -194,7 +196,7 @@ MeshAccessors addMesh(BufferBuilder& buffer, const TriangleMesh& mesh) {
     hi = glm::max(hi, p);
   }
   auto floats = [](const glm::vec3& v) {
-    return Json::array(
+    return OrderedJson::array(
         {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)});
   };
   out.position = buffer.addAccessor({{"bufferView", buffer.addView(mesh.positions, kArrayBuffer)},
@@ -241,23 +243,24 @@ std::string lowerCase(std::string_view name) {
   return out;
 }
 
-Json materialJson(const Material& material, ObjectKind kind, bool extras,
-                  std::set<std::string>& extensions, int number) {
+OrderedJson materialJson(const Material& material, ObjectKind kind, bool extras,
+                         std::set<std::string>& extensions, int number) {
   gltf::PbrMaterial pbr = gltf::pbrFromMaterial(material, kind);
-  Json out = {{"name", "material " + std::to_string(number)}};
+  OrderedJson out = {{"name", "material " + std::to_string(number)}};
   out["pbrMetallicRoughness"] = {
-      {"baseColorFactor", Json::array({pbr.baseColor.r, pbr.baseColor.g, pbr.baseColor.b, 1.0})},
+      {"baseColorFactor",
+       OrderedJson::array({pbr.baseColor.r, pbr.baseColor.g, pbr.baseColor.b, 1.0})},
       {"metallicFactor", pbr.metallic},
       {"roughnessFactor", pbr.roughness}};
   if (pbr.doubleSided) out["doubleSided"] = true;
-  Json ext = Json::object();
+  OrderedJson ext = OrderedJson::object();
   if (pbr.ior) ext["KHR_materials_ior"] = {{"ior", *pbr.ior}};
   if (pbr.transmission)
     ext["KHR_materials_transmission"] = {{"transmissionFactor", *pbr.transmission}};
   if (pbr.specular) ext["KHR_materials_specular"] = {{"specularFactor", *pbr.specular}};
   for (const auto& [name, value] : ext.items()) extensions.insert(name);
   if (!ext.empty()) out["extensions"] = std::move(ext);
-  Json sf = {{"colour", vec3Json(material.colour)}};
+  OrderedJson sf = {{"colour", vec3Json(material.colour)}};
   for (MaterialProperty p : kMaterialProperties) {
     sf[lowerCase(materialPropertyName(p))] = materialValue(material, p);
   }
@@ -265,10 +268,10 @@ Json materialJson(const Material& material, ObjectKind kind, bool extras,
   return out;
 }
 
-Json transformsJson(const std::vector<TransformOp>& ops) {
-  Json out = Json::array();
+OrderedJson transformsJson(const std::vector<TransformOp>& ops) {
+  OrderedJson out = OrderedJson::array();
   for (const TransformOp& op : ops) {
-    Json entry = Json::array({std::string(transformKindName(op.kind))});
+    OrderedJson entry = OrderedJson::array({std::string(transformKindName(op.kind))});
     if (op.kind == TransformKind::Scale || op.kind == TransformKind::Translate) {
       entry.insert(entry.end(), {op.value.x, op.value.y, op.value.z});
     } else {
@@ -282,15 +285,16 @@ Json transformsJson(const std::vector<TransformOp>& ops) {
 // The nodes of one record: one, or a chain (gltf::nodeChain) whose last
 // node carries the content and the record's name. The first goes into the
 // scene's roots; the last is returned.
-std::size_t addRecordNodes(Json& nodes, Json& roots, const glm::dmat4& m, const std::string& name) {
+std::size_t addRecordNodes(OrderedJson& nodes, OrderedJson& roots, const glm::dmat4& m,
+                           const std::string& name) {
   std::vector<glm::dmat4> chain = gltf::nodeChain(gltf::withinFloatRange(m));
   roots.push_back(nodes.size());
   for (std::size_t i = 0; i < chain.size(); ++i) {
     std::string part = i + 1 == chain.size() ? name
                        : i == 0              ? name + " translation and rotation"
                                              : name + " scale";
-    Json node = {{"name", part}, {"matrix", columnsJson(chain[i])}};
-    if (i + 1 < chain.size()) node["children"] = Json::array({nodes.size() + 1});
+    OrderedJson node = {{"name", part}, {"matrix", columnsJson(chain[i])}};
+    if (i + 1 < chain.size()) node["children"] = OrderedJson::array({nodes.size() + 1});
     nodes.push_back(std::move(node));
   }
   return nodes.size() - 1;
@@ -475,7 +479,7 @@ void reportLosses(const Scene& scene, float planeSize, const gltf::ReferencePoin
 // The JSON pointer of the first number in `j` that is not finite, which
 // nlohmann would write as null: a last check over every derived value (a
 // node of a chain, a light's intensity, the plane's square).
-std::optional<std::string> firstNonFinite(const Json& j, const std::string& at) {
+std::optional<std::string> firstNonFinite(const OrderedJson& j, const std::string& at) {
   if (j.is_number_float()) {
     if (std::isfinite(j.get<double>())) return std::nullopt;
     return at.empty() ? "/" : at;
@@ -496,34 +500,35 @@ std::optional<std::string> firstNonFinite(const Json& j, const std::string& at) 
 // the scene's roots, the extensions used, the materials and meshes, and
 // the binary buffer they point into.
 struct Parts {
-  Json nodes = Json::array();
-  Json roots = Json::array();
+  OrderedJson nodes = OrderedJson::array();
+  OrderedJson roots = OrderedJson::array();
   std::set<std::string> extensions;
-  Json materials = Json::array();
-  Json meshes = Json::array();
+  OrderedJson materials = OrderedJson::array();
+  OrderedJson meshes = OrderedJson::array();
   BufferBuilder buffer;
 };
 
-void addCamera(const Scene& scene, const GltfWriteOptions& options, Json& doc, Parts& parts) {
+void addCamera(const Scene& scene, const GltfWriteOptions& options, OrderedJson& doc,
+               Parts& parts) {
   // The options' field of view and aspect ratio where they give one, else
   // the scene's View's.
   double yfov = options.yfovDegrees.value_or(scene.view ? scene.view->verticalFovDegrees
                                                         : gltf::kDefaultYfovDegrees);
-  Json perspective = {{"yfov", yfov * std::numbers::pi / 180.0}, {"znear", gltf::kZnear}};
+  OrderedJson perspective = {{"yfov", yfov * std::numbers::pi / 180.0}, {"znear", gltf::kZnear}};
   if (options.width > 0 && options.height > 0) {
     perspective["aspectRatio"] = static_cast<double>(options.width) / options.height;
   } else if (scene.view && scene.view->aspectRatio) {
     perspective["aspectRatio"] = *scene.view->aspectRatio;
   }
   bool defaultView = !scene.view && !options.yfovDegrees && !perspective.contains("aspectRatio");
-  doc["cameras"] = Json::array(
+  doc["cameras"] = OrderedJson::array(
       {{{"name", "CAMERA"}, {"type", "perspective"}, {"perspective", std::move(perspective)}}});
   std::size_t node = addRecordNodes(parts.nodes, parts.roots,
                                     gltf::cameraNodeMatrix(scene.camera.matrix), "CAMERA");
   parts.nodes[node]["camera"] = 0;
-  Json sf = {{"record", "CAMERA"},
-             {"colour", vec3Json(scene.camera.colour)},
-             {"matrix", rowsJson(scene.camera.matrix)}};
+  OrderedJson sf = {{"record", "CAMERA"},
+                    {"colour", vec3Json(scene.camera.colour)},
+                    {"matrix", rowsJson(scene.camera.matrix)}};
   if (scene.camera.lookAt) sf["lookAt"] = vec3Json(*scene.camera.lookAt);
   // A scene without a View, written with the default field of view, reads
   // back without one: the yfov is then the writer's, not the scene's.
@@ -531,10 +536,10 @@ void addCamera(const Scene& scene, const GltfWriteOptions& options, Json& doc, P
   putExtras(parts.nodes[node], std::move(sf), options.extras);
 }
 
-void addLights(const Scene& scene, const std::vector<LightPlan>& plans, bool extras, Json& doc,
-               Parts& parts) {
+void addLights(const Scene& scene, const std::vector<LightPlan>& plans, bool extras,
+               OrderedJson& doc, Parts& parts) {
   if (plans.empty()) return;
-  Json lights = Json::array();
+  OrderedJson lights = OrderedJson::array();
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& light = scene.lights[i];
     std::string name = "LIGHT " + std::to_string(i + 1);
@@ -546,9 +551,9 @@ void addLights(const Scene& scene, const std::vector<LightPlan>& plans, bool ext
     std::size_t node =
         addRecordNodes(parts.nodes, parts.roots, gltf::lightNodeMatrix(light.matrix), name);
     parts.nodes[node]["extensions"] = {{"KHR_lights_punctual", {{"light", i}}}};
-    Json sf = {{"record", "LIGHT"},
-               {"colour", vec3Json(light.colour)},
-               {"matrix", rowsJson(light.matrix)}};
+    OrderedJson sf = {{"record", "LIGHT"},
+                      {"colour", vec3Json(light.colour)},
+                      {"matrix", rowsJson(light.matrix)}};
     if (plans[i].distance) sf["referenceDistance"] = *plans[i].distance;
     putExtras(parts.nodes[node], std::move(sf), extras);
   }
@@ -563,7 +568,7 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
   std::map<ObjectKind, MeshAccessors> kindAccessors;
   std::map<std::vector<std::uint64_t>, std::size_t> materialIndex;
   std::map<std::pair<ObjectKind, std::size_t>, std::size_t> meshIndex;
-  std::map<std::size_t, Json> meshObjects;
+  std::map<std::size_t, OrderedJson> meshObjects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     auto accessors = kindAccessors.find(object.kind);
@@ -589,16 +594,16 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
       parts.meshes.push_back(
           {{"name", std::string(objectKindName(object.kind))},
            {"primitives",
-            Json::array({{{"attributes", {{"POSITION", a.position}, {"NORMAL", a.normal}}},
-                          {"indices", a.indices},
-                          {"material", material->second}}})}});
+            OrderedJson::array({{{"attributes", {{"POSITION", a.position}, {"NORMAL", a.normal}}},
+                                 {"indices", a.indices},
+                                 {"material", material->second}}})}});
     }
     std::string name = std::string(objectKindName(object.kind)) + " " + std::to_string(i + 1);
     std::size_t node = addRecordNodes(parts.nodes, parts.roots, object.matrix, name);
     parts.nodes[node]["mesh"] = mesh->second;
-    Json sf = {{"record", std::string(objectKindName(object.kind))},
-               {"matrix", rowsJson(object.matrix)},
-               {"object", i + 1}};
+    OrderedJson sf = {{"record", std::string(objectKindName(object.kind))},
+                      {"matrix", rowsJson(object.matrix)},
+                      {"object", i + 1}};
     if (object.transforms) sf["transforms"] = transformsJson(*object.transforms);
     meshObjects[mesh->second].push_back(sf);
     putExtras(parts.nodes[node], std::move(sf), options.extras);
@@ -613,11 +618,11 @@ void addObjects(const Scene& scene, const GltfWriteOptions& options, float plane
 
 // The scene, the nodes, materials and meshes after what `doc` holds, with
 // extensionsUsed first among the top-level keys after asset.
-void assemble(Json& doc, Parts& parts) {
+void assemble(OrderedJson& doc, Parts& parts) {
   if (!parts.extensions.empty()) {
-    Json used = Json::array();
+    OrderedJson used = OrderedJson::array();
     for (const std::string& name : parts.extensions) used.push_back(name);
-    Json reordered;
+    OrderedJson reordered;
     for (auto& [key, value] : doc.items()) {
       reordered[key] = value;
       if (key == "asset") reordered["extensionsUsed"] = used;
@@ -625,7 +630,7 @@ void assemble(Json& doc, Parts& parts) {
     doc = std::move(reordered);
   }
   doc["scene"] = 0;
-  doc["scenes"] = Json::array({{{"name", "scene"}, {"nodes", std::move(parts.roots)}}});
+  doc["scenes"] = OrderedJson::array({{{"name", "scene"}, {"nodes", std::move(parts.roots)}}});
   doc["nodes"] = std::move(parts.nodes);
   if (!parts.materials.empty()) doc["materials"] = std::move(parts.materials);
   if (!parts.meshes.empty()) doc["meshes"] = std::move(parts.meshes);
@@ -633,13 +638,14 @@ void assemble(Json& doc, Parts& parts) {
 
 // The file (and for a .gltf with an external buffer, the buffer's), once
 // the buffer is in the document: embedded in a .gltf as base64, or beside.
-GltfFiles encode(Json& doc, BufferBuilder& buffer, const GltfWriteOptions& options, bool binary) {
+GltfFiles encode(OrderedJson& doc, BufferBuilder& buffer, const GltfWriteOptions& options,
+                 bool binary) {
   GltfFiles files;
   std::string& bin = buffer.data();
   if (!bin.empty()) {
     doc["accessors"] = std::move(buffer.accessors());
     doc["bufferViews"] = std::move(buffer.views());
-    Json b = {{"byteLength", bin.size()}};
+    OrderedJson b = {{"byteLength", bin.size()}};
     if (!binary) {
       if (options.externalBuffer.empty()) {
         b["uri"] = "data:application/octet-stream;base64," + base64(bin);
@@ -648,7 +654,7 @@ GltfFiles encode(Json& doc, BufferBuilder& buffer, const GltfWriteOptions& optio
         files.buffer = bin;
       }
     }
-    doc["buffers"] = Json::array({std::move(b)});
+    doc["buffers"] = OrderedJson::array({std::move(b)});
   }
   if (binary) {
     files.main = encodeGlb(doc.dump(), bin);
@@ -673,8 +679,8 @@ std::optional<GltfFiles> writeGltf(const Scene& scene, const ConversionOptions& 
   reportLosses(scene, planeSize, reference, lights, report);
   if (out.errorCount() != errorsBefore) return std::nullopt;
 
-  Json doc;
-  Json asset = {{"version", "2.0"}, {"generator", options.generator}};
+  OrderedJson doc;
+  OrderedJson asset = {{"version", "2.0"}, {"generator", options.generator}};
   if (scene.outputFile && options.extras)
     asset["extras"] = {{gltf::kExtrasKey, {{"outputFile", *scene.outputFile}}}};
   doc["asset"] = std::move(asset);

@@ -13,7 +13,7 @@
 namespace scene {
 namespace {
 
-constexpr std::string_view kExtensions[] = {".txt"};
+constexpr std::string_view kInstructionExtensions[] = {".txt"};
 
 // An instruction file starts with OUTPUT_FILE (or, missing it, START); a
 // misspelt one is still recognised, so that its reader can say what is wrong.
@@ -48,7 +48,7 @@ FormatInfo instructionFileFormat() {
   row.name = "instructions";
   row.singular = "an instruction file";
   row.plural = "instruction files";
-  row.extensions = kExtensions;
+  row.extensions = kInstructionExtensions;
   row.startsWith = "OUTPUT_FILE";
   row.holds = {.materials = true, .transformLists = true, .outputFile = true};
   row.recognise = recogniseInstructionFile;

@@ -13,7 +13,7 @@
 namespace scene {
 namespace {
 
-constexpr std::string_view kExtensions[] = {".obj"};
+constexpr std::string_view kObjExtensions[] = {".obj"};
 // The comments hold every value of the scene (obj_exact.h).
 constexpr FormatHolds kHolds{
     .materials = true, .transformLists = true, .outputFile = true, .view = true};
@@ -51,7 +51,7 @@ FormatInfo objFormat() {
   row.name = "obj";
   row.singular = "a Wavefront OBJ file";
   row.plural = "Wavefront OBJ";
-  row.extensions = kExtensions;
+  row.extensions = kObjExtensions;
   row.startsWith = "a 'v', 'f', 'o' or 'mtllib' statement";
   row.readsUnrecognisedByExtension = true;
   row.holds = kHolds;

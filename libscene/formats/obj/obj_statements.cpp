@@ -26,7 +26,7 @@ struct Word {
   std::uint32_t column = 0;
 };
 
-bool isBlank(char c) {
+bool isSpaceOrTab(char c) {
   return c == ' ' || c == '\t';
 }
 
@@ -37,9 +37,9 @@ constexpr std::size_t kMaxKeptWords = 9;
 template <typename F>
 void forEachWord(std::string_view line, std::size_t from, F&& f) {
   for (std::size_t i = from; i < line.size();) {
-    while (i < line.size() && isBlank(line[i])) ++i;
+    while (i < line.size() && isSpaceOrTab(line[i])) ++i;
     std::size_t start = i;
-    while (i < line.size() && !isBlank(line[i])) ++i;
+    while (i < line.size() && !isSpaceOrTab(line[i])) ++i;
     if (i > start &&
         !f(Word{line.substr(start, i - start), static_cast<std::uint32_t>(start + 1)})) {
       return;
@@ -158,7 +158,7 @@ bool StatementReader::line(std::string_view l) {
 
 bool StatementReader::comment(std::string_view l) {
   if (!l.starts_with(kObjExactComment) || l.size() == kObjExactComment.size() ||
-      !isBlank(l[kObjExactComment.size()])) {
+      !isSpaceOrTab(l[kObjExactComment.size()])) {
     return true;
   }
   std::optional<ObjectComment> object;

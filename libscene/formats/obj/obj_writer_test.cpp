@@ -18,19 +18,19 @@ namespace {
 
 using testing::withCode;
 
-constexpr std::string_view kScene =
+constexpr std::string_view kObjScene =
     "CAMERA\n0 0 0\n1 0 0 0\n0 1 0 1\n0 0 1 8\n0 0 0 1\n\n"
     "LIGHT\n1 1 1\n1 0 0 5\n0 1 0 5\n0 0 1 5\n0 0 0 1\n\n"
     "CUBE\n1 0 0\n1 0 0 10\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
 
-Scene read(std::string_view text) {
+Scene readObj(std::string_view text) {
   ReadResult r = parseScene(text, "a.sf");
   EXPECT_TRUE(r.ok());
   return r.scene;
 }
 
 TEST(ObjWriter, TheCameraAndTheLightsAreLossesErrorsUnderNoLoss) {
-  Scene scene = read(kScene);
+  Scene scene = readObj(kObjScene);
   DiagnosticList out;
   ConversionOptions options;
   ASSERT_TRUE(writeObj(scene, options, out).has_value());
@@ -47,7 +47,7 @@ TEST(ObjWriter, TheCameraAndTheLightsAreLossesErrorsUnderNoLoss) {
 }
 
 TEST(ObjWriter, VerticesAreInWorldSpaceAndTheMtlIsTheSidecar) {
-  Scene scene = read(kScene);
+  Scene scene = readObj(kObjScene);
   DiagnosticList out;
   ConversionOptions options;
   options.obj.materialLibrary = "scene.mtl";
@@ -74,10 +74,10 @@ TEST(ObjWriter, VerticesAreInWorldSpaceAndTheMtlIsTheSidecar) {
 // OBJ numbers the vertices and the normals each on their own: a box writes
 // no normals, so the sphere after it counts its normals from 1.
 TEST(ObjWriter, FacesNameNormalsByTheirOwnNumbers) {
-  std::string text(kScene);
+  std::string text(kObjScene);
   text += "\nSPHERE\n1 1 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
   DiagnosticList out;
-  std::string obj = writeObj(read(text), {}, out)->main;
+  std::string obj = writeObj(readObj(text), {}, out)->main;
   std::size_t normals = 0, vertices = 0, largest = 0, smallest = SIZE_MAX;
   std::istringstream lines(obj);
   for (std::string line; std::getline(lines, line);) {
@@ -111,7 +111,7 @@ TEST(ObjWriter, IllumSaysPlainReflectiveOrGlass) {
 // A mirroring matrix turns the triangles: each face is written the other
 // way round, so that it still turns counter-clockwise seen from outside.
 TEST(ObjWriter, AMirroredObjectKeepsItsFacesOutward) {
-  Scene scene = read(kScene);
+  Scene scene = readObj(kObjScene);
   Scene mirrored = scene;
   mirrored.objects[0].matrix[0][0] = -1.0;
   DiagnosticList out;
@@ -126,7 +126,7 @@ TEST(ObjWriter, AMirroredObjectKeepsItsFacesOutward) {
 }
 
 TEST(ObjWriter, AMeshBeyondTheDoublesIsRefused) {
-  Scene scene = read(kScene);
+  Scene scene = readObj(kObjScene);
   scene.objects[0].matrix[0][0] = 1.7e308;
   scene.objects[0].matrix[3][0] = 1.7e308;
   DiagnosticList out;

@@ -9,7 +9,7 @@
 namespace scene {
 namespace {
 
-constexpr std::string_view kExtensions[] = {".pov"};
+constexpr std::string_view kPovExtensions[] = {".pov"};
 
 Recognition recognisePov(std::string_view text) {
   return looksLikePov(text) ? Recognition::Certain : Recognition::None;
@@ -34,7 +34,7 @@ FormatInfo povFormat() {
   row.name = "pov";
   row.singular = "a POV-Ray scene";
   row.plural = "POV-Ray scenes";
-  row.extensions = kExtensions;
+  row.extensions = kPovExtensions;
   row.startsWith = "a directive such as #version or a statement such as camera {";
   // The language has no signature: a .pov that says nothing else is one.
   row.readsUnrecognisedByExtension = true;

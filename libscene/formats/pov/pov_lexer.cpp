@@ -17,7 +17,7 @@ bool isWordStart(char c) {
 bool isWordChar(char c) {
   return isWordStart(c) || isDigit(c);
 }
-bool isBlank(char c) {
+bool isPovSpace(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
 
@@ -59,7 +59,7 @@ void PovLexer::skipBlanksAndComments() {
       ++pos_;
       ++line_;
       lineStart_ = pos_;
-    } else if (isBlank(c)) {
+    } else if (isPovSpace(c)) {
       ++pos_;
     } else if (text_.compare(pos_, 2, "//") == 0) {
       std::size_t end = text_.find('\n', pos_);

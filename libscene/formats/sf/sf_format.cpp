@@ -14,7 +14,7 @@
 namespace scene {
 namespace {
 
-constexpr std::string_view kExtensions[] = {".sf"};
+constexpr std::string_view kSfExtensions[] = {".sf"};
 
 // A scene file starts with a record name; one whose names are misspelt or in
 // lower case is still a scene file, whose reader says what is wrong with
@@ -74,7 +74,7 @@ FormatInfo sceneFileFormat() {
   row.name = "sf";
   row.singular = "a scene file";
   row.plural = "scene files";
-  row.extensions = kExtensions;
+  row.extensions = kSfExtensions;
   row.startsWith = "a CAMERA record";
   row.recognise = recogniseSceneFile;
   row.read = readSceneFileFormat;
