@@ -144,7 +144,11 @@ struct BinExtent {
     const float* p = item.planes;
     const __m128d half = _mm_set1_pd(0.5);
     __m128 lo = _mm_loadu_ps(p);
-    __m128 hiXY = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p + 3)));
+    // The high x and y planes as one 8-byte load, copied: they lie on a
+    // float's alignment, not a double's.
+    double highXY;
+    std::memcpy(&highXY, p + 3, sizeof highXY);
+    __m128 hiXY = _mm_castpd_ps(_mm_set_sd(highXY));
     xy = _mm_mul_pd(_mm_add_pd(_mm_cvtps_pd(lo), _mm_cvtps_pd(hiXY)), half);
     z = _mm_mul_sd(_mm_add_sd(_mm_cvtss_sd(_mm_setzero_pd(), _mm_movehl_ps(lo, lo)),
                               _mm_cvtss_sd(_mm_setzero_pd(), _mm_load_ss(p + 5))),
