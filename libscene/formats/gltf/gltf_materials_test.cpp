@@ -40,7 +40,7 @@ Scene mirrorAndGlass() {
   return read.scene;
 }
 
-Json written(const Scene& scene) {
+Json materialsWritten(const Scene& scene) {
   DiagnosticList out;
   std::optional<GltfFiles> files = writeGltf(scene, {}, false, out);
   EXPECT_TRUE(files.has_value());
@@ -65,7 +65,7 @@ double decodeSrgb(double v) {
 }
 
 TEST(GltfMaterials, AMirrorIsASmoothMetalAndGlassASmoothTransmitter) {
-  Json doc = written(mirrorAndGlass());
+  Json doc = materialsWritten(mirrorAndGlass());
   // The mirror: diffuse colour 0.05 (AMBIENT + DIFFUSE is 1) plus the
   // linear weight of REFLECTIVITY 0.9; metallic is that weight's share.
   const Json& mirror = doc["materials"][0];
@@ -107,7 +107,7 @@ TEST(GltfMaterials, AMirrorIsASmoothMetalAndGlassASmoothTransmitter) {
 
 TEST(GltfMaterials, OwnMaterialsReadBackExactlyFromExtras) {
   Scene scene = mirrorAndGlass();
-  ReadResult back = parseScene(written(scene).dump(), "own.gltf");
+  ReadResult back = parseScene(materialsWritten(scene).dump(), "own.gltf");
   ASSERT_TRUE(back.ok());
   ASSERT_EQ(back.scene.objects.size(), 3u);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(back.scene.objects[i].material, scene.objects[i].material);
@@ -116,7 +116,7 @@ TEST(GltfMaterials, OwnMaterialsReadBackExactlyFromExtras) {
 
 TEST(GltfMaterials, WithoutExtrasTheMappingIsInvertedWhereGltfHoldsTheValue) {
   Scene scene = mirrorAndGlass();
-  Json doc = written(scene);
+  Json doc = materialsWritten(scene);
   for (Json& material : doc["materials"]) material.erase("extras");
   ReadResult back = parseScene(doc.dump(), "stripped.gltf");
   ASSERT_TRUE(back.ok());
