@@ -1,11 +1,12 @@
 #include "tools/common/resource_guard.h"
 
 #include <array>
-#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <new>
 #include <system_error>
+
+#include <sys/mman.h>
 
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/exit_code.h"
@@ -22,17 +23,23 @@ namespace {
 // again; one that fails otherwise throws at once and leaves the reserve
 // whole (a library may catch that std::bad_alloc and go on: tinygltf does).
 // Only address space until then (it is never touched): 8 parts of 16 MiB;
-// a million-node JSON array's stack is 16 MB.
+// a million-node JSON array's stack is 16 MB. Mapped, not allocated: a
+// sanitizer's allocator would poison and fill 128 MiB of it at every start
+// and end of a tool, which was most of a sanitized tool's start-up.
 constexpr std::size_t kReserveParts = 8;
 constexpr std::size_t kReservePartBytes = std::size_t{16} << 20;
 std::array<void*, kReserveParts> reserve{};
+
+void unmapReservePart(void*& part) {
+  munmap(part, kReservePartBytes);
+  part = nullptr;
+}
 
 void releaseReserveOrThrow() {
   if (std::uncaught_exceptions() > 0) {
     for (void*& part : reserve) {
       if (part) {
-        std::free(part);
-        part = nullptr;
+        unmapReservePart(part);
         return;  // operator new tries again
       }
     }
@@ -45,15 +52,17 @@ class MemoryReserve {
  public:
   MemoryReserve() {
     for (void*& part : reserve) {
-      if (!part) part = std::malloc(kReservePartBytes);
+      if (part) continue;
+      void* mapped = mmap(nullptr, kReservePartBytes, PROT_READ | PROT_WRITE,
+                          MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+      part = mapped == MAP_FAILED ? nullptr : mapped;
     }
     previous_ = std::set_new_handler(&releaseReserveOrThrow);
   }
   ~MemoryReserve() {
     std::set_new_handler(previous_);
     for (void*& part : reserve) {
-      std::free(part);
-      part = nullptr;
+      if (part) unmapReservePart(part);
     }
   }
   MemoryReserve(const MemoryReserve&) = delete;
