@@ -59,10 +59,12 @@ SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_aft
   LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizers/lsan.supp:print_suppressions=0
 .PHONY: test-sanitize
 # -O1 -g1 (line tables): what AddressSanitizer's own documentation advises,
-# and half the compile time of -O2 -g, which was most of this stage.
+# and half the compile time of -O2 -g, which was most of this stage. A unity
+# build (several sources to a translation unit) compiles each header fewer
+# times: this stage and test-valgrind build from scratch.
 test-sanitize: deps
 	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON \
 	  -DSCENEFILE_SANITIZE=address,undefined >/dev/null
 	@cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	@cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE slurm
@@ -79,7 +81,7 @@ VALGRIND = valgrind;-q;--read-inline-info=no;--error-exitcode=99;--leak-check=fu
 .PHONY: test-valgrind
 test-valgrind: deps
 	@cmake -S . -B $(VALGRIND_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON \
 	  "-DSCENEFILE_TOOL_LAUNCHER=$(VALGRIND)" >/dev/null
 	@cmake --build $(VALGRIND_DIR) -j $(JOBS) --target sfcheck sfconvert sfrender sfrender_oiio
 	@cd $(VALGRIND_DIR) && ctest -L valgrind -LE slurm --output-on-failure -j $(JOBS)
