@@ -1,12 +1,12 @@
 #include "tools/common/resource_guard.h"
 
+#include <sys/mman.h>
+
 #include <array>
 #include <exception>
 #include <filesystem>
 #include <new>
 #include <system_error>
-
-#include <sys/mman.h>
 
 #include "tools/common/diagnostic_printer.h"
 #include "tools/common/exit_code.h"
@@ -31,7 +31,7 @@ constexpr std::size_t kReservePartBytes = std::size_t{16} << 20;
 std::array<void*, kReserveParts> reserve{};
 
 void unmapReservePart(void*& part) {
-  munmap(part, kReservePartBytes);
+  ::munmap(part, kReservePartBytes);
   part = nullptr;
 }
 
@@ -53,8 +53,8 @@ class MemoryReserve {
   MemoryReserve() {
     for (void*& part : reserve) {
       if (part) continue;
-      void* mapped = mmap(nullptr, kReservePartBytes, PROT_READ | PROT_WRITE,
-                          MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+      void* mapped = ::mmap(nullptr, kReservePartBytes, PROT_READ | PROT_WRITE,
+                            MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
       part = mapped == MAP_FAILED ? nullptr : mapped;
     }
     previous_ = std::set_new_handler(&releaseReserveOrThrow);
