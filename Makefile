@@ -10,8 +10,8 @@ deps:
 	@bash scripts/install-deps.sh
 
 # A unity build (several sources to a translation unit) compiles each header
-# fewer times: a fresh build takes two thirds of the time, with the same
-# images and speed. UNITY_BUILD=OFF compiles each source alone.
+# fewer times: a fresh build is quicker, and renders the same images as
+# fast. UNITY_BUILD=OFF compiles each source alone.
 UNITY_BUILD ?= ON
 configure: deps
 	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=$(UNITY_BUILD) >/dev/null
