@@ -8,6 +8,7 @@
 set -euo pipefail
 sfconvert=$1 make_random=$2 testdata=$3 work=$4
 here=$(cd "$(dirname "$0")" && pwd)
+source "$here/every_nth_scene.sh"
 if ! command -v node >/dev/null 2>&1; then
   echo "SKIP: node is not installed (scripts/install-deps.sh installs it)"; exit 77
 fi
@@ -17,11 +18,7 @@ fi
 rm -rf "$work" && mkdir -p "$work/in" "$work/out"
 cp "$testdata"/valid/*.sf "$testdata"/valid/*.txt "$work/in/"
 "$make_random" "$work/in" 60 4242
-every=${EVERY_NTH_SCENE:-1} n=0
-for input in "$work"/in/*; do
-  n=$((n + 1))
-  (( n % every == 0 )) || rm "$input"
-done
+keep_every_nth_scene "$work/in"
 files=()
 for input in "$work"/in/*; do
   name=$(basename "$input"); name=${name%.*}-${input##*.}
