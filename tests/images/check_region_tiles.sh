@@ -24,10 +24,10 @@ width=61
 height=46  # 4 bands of 12, 12, 11 and 11 rows
 failures=0
 
-# same CROP FULL PART: adds the comparison of PART with FULL cut to CROP
+# add_comparison CROP FULL PART: adds the comparison of PART with FULL cut to CROP
 # (WxH+X+Y) to those compare_all makes.
 comparisons=()
-same() {
+add_comparison() {
   # The crop stays in memory, in the file's own pixel type. A region's EXR
   # keeps its place in the full image (its data window within the display
   # window: --crop); a PPM holds the pixels alone (--cut moves them to 0, 0).
@@ -59,11 +59,11 @@ check() {
   for i in 0 1 2 3; do
     local rows=$(( i < 2 ? 12 : 11 ))
     "$sfrender" "${flags[@]}" --tile "$i/4" -o "tile$i.$ext" "${scene_args[@]}"
-    same "${width}x${rows}+0+$y" "full.$ext" "tile$i.$ext"
+    add_comparison "${width}x${rows}+0+$y" "full.$ext" "tile$i.$ext"
     y=$((y + rows))
   done
   "$sfrender" "${flags[@]}" --region 7,5,40,31 -o "region.$ext" "${scene_args[@]}"
-  same "33x26+7+5" "full.$ext" "region.$ext"
+  add_comparison "33x26+7+5" "full.$ext" "region.$ext"
   compare_all
 }
 
