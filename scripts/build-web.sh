@@ -19,7 +19,8 @@ if [ ! -d "$EM_CACHE" ]; then
 fi
 export NODE_PATH=/usr/share/nodejs
 
-emcmake cmake -S "$root" -B "$build/web-wasm" -DCMAKE_BUILD_TYPE=Release \
+# A unity build, as make build's: cold here, 2.3 min instead of 6.1.
+emcmake cmake -S "$root" -B "$build/web-wasm" -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON \
   -DSCENEFILE_WEB_OUTPUT="$out" >/dev/null
 cmake --build "$build/web-wasm" -j "$jobs"
 node "$root/web/build.mjs" "$out"
