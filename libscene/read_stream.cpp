@@ -7,13 +7,17 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <memory>
+#include <new>
 #include <string>
 #include <system_error>
 #include <thread>
 #include <vector>
 
 #include "libscene/core/finite_check.h"
+#include "libscene/core/populate_pages.h"
 #include "libscene/formats/sf/sf_reader.h"
 #include "scenefile/read_file.h"
 #include "scenefile/validation.h"
@@ -65,6 +69,44 @@ StreamReadResult readWhole(const std::filesystem::path& path, const ReadOptions&
   return result;
 }
 
+// Room for a window's bytes, in whole 2 MiB pages advised huge
+// (adviseHugePages) and left unset until read into: a vector of chars
+// zeroes its room first, a 4 KiB page at a time, and the first window's
+// buffers were most of the 40 ms before the first parse at 1,000,000
+// objects.
+class WindowBytes {
+ public:
+  static constexpr std::size_t kPage = std::size_t{1} << 21;
+
+  char* data() const { return bytes_.get(); }
+  std::size_t size() const { return size_; }
+  std::size_t room() const { return room_; }
+  // `size` bytes, the first `kept` of the old ones kept where the room
+  // grows.
+  void resize(std::size_t size, std::size_t kept) {
+    if (size > room_) {
+      // Small windows (tests, mostly) in room of their own size.
+      const std::size_t unit = size >= kPage ? kPage : 64;
+      std::size_t room = (size + unit - 1) / unit * unit;
+      std::unique_ptr<char, Free> grown(static_cast<char*>(std::aligned_alloc(unit, room)));
+      if (!grown) throw std::bad_alloc();
+      adviseHugePages(grown.get(), grown.get() + room);
+      if (kept > 0) std::memcpy(grown.get(), bytes_.get(), kept);
+      bytes_ = std::move(grown);
+      room_ = room;
+    }
+    size_ = size;
+  }
+
+ private:
+  struct Free {
+    void operator()(char* bytes) const { std::free(bytes); }
+  };
+  std::unique_ptr<char, Free> bytes_;
+  std::size_t size_ = 0;
+  std::size_t room_ = 0;
+};
+
 // The bytes of an open file, read into a buffer that holds one window and
 // the start of the next. While a window is parsed, the next one is read into
 // a second buffer on a thread of its own (readAhead, takeAhead).
@@ -79,7 +121,7 @@ class WindowBuffer {
   // that it holds included (so that its room is made once); false where the
   // read failed.
   bool fill() {
-    if (bytes_.size() < window_) bytes_.resize(window_);
+    if (bytes_.size() < window_) bytes_.resize(window_, held_);
     if (failed_ || !readInto(bytes_, held_)) {
       failed_ = true;
       return false;
@@ -92,8 +134,9 @@ class WindowBuffer {
   // 0 where the buffer holds no such line past its first.
   std::size_t windowEnd() const {
     if (atEnd_) return held_;
+    const char* bytes = bytes_.data();
     for (std::size_t at = held_; at > 1; --at) {
-      if (bytes_[at - 1] == '\n' && at < held_ && bytes_[at] >= 'A' && bytes_[at] <= 'Z') {
+      if (bytes[at - 1] == '\n' && at < held_ && bytes[at] >= 'A' && bytes[at] <= 'Z') {
         return at;
       }
     }
@@ -106,7 +149,7 @@ class WindowBuffer {
   // can start, here and now). The window's text stays as it is until
   // takeAhead.
   void readAhead(std::size_t end) {
-    ahead_.resize(std::max(window_, held_ - end));
+    ahead_.resize(std::max(window_, held_ - end), 0);
     std::memcpy(ahead_.data(), bytes_.data() + end, held_ - end);
     aheadHeld_ = held_ - end;
     readingAhead_ = true;
@@ -136,12 +179,12 @@ class WindowBuffer {
   std::string_view held() const { return {bytes_.data(), held_}; }
   bool empty() const { return held_ == 0; }
   std::uint64_t total() const { return total_; }
-  std::uint64_t capacity() const { return bytes_.capacity() + ahead_.capacity(); }
+  std::uint64_t capacity() const { return bytes_.room() + ahead_.room(); }
 
  private:
   // Reads the file into `bytes` from `held` on, until it is full or the
   // file ends; false where the read failed.
-  bool readInto(std::vector<char>& bytes, std::size_t& held) {
+  bool readInto(WindowBytes& bytes, std::size_t& held) {
     while (!atEnd_ && held < bytes.size()) {
       ssize_t n = ::read(fd_, bytes.data() + held, bytes.size() - held);
       if (n < 0 && errno == EINTR) continue;
@@ -155,13 +198,13 @@ class WindowBuffer {
 
   int fd_;
   std::size_t window_;
-  std::vector<char> bytes_;
+  WindowBytes bytes_;
   std::size_t held_ = 0;
   std::uint64_t total_ = 0;
   bool atEnd_ = false;
   bool failed_ = false;
   // The next window's buffer, while readAhead's thread fills it.
-  std::vector<char> ahead_;
+  WindowBytes ahead_;
   std::size_t aheadHeld_ = 0;
   bool readingAhead_ = false;
   bool aheadRead_ = true;
@@ -171,6 +214,12 @@ class WindowBuffer {
 // What the windows read so far made of the file.
 struct StreamedScene {
   std::uint64_t fileBytes = 0;
+  // Whether to keep headerText: the first window's lines up to its last
+  // CAMERA or LIGHT record's, what the quotes of the whole-file checks
+  // (finishStream) may show. A copy of the whole first window cost 10 ms
+  // at 1,000,000 objects, a quarter of the time before the first parse.
+  bool keepHeaderText = false;
+  std::string headerText;
   const ObjectCountEstimate* estimate = nullptr;
   Scene header;
   std::uint64_t handed = 0;
@@ -178,6 +227,16 @@ struct StreamedScene {
   std::uint32_t nextLine = 1;
   StreamReadMemory memory;
 };
+
+// The first `count` lines of `text`, each with its line break.
+std::string_view leadingLines(std::string_view text, std::uint32_t count) {
+  std::size_t end = 0;
+  for (std::uint32_t line = 0; line < count && end < text.size(); ++line) {
+    std::size_t newline = text.find('\n', end);
+    end = newline == std::string_view::npos ? text.size() : newline + 1;
+  }
+  return text.substr(0, end);
+}
 
 // One window: read, checked and handed over; false where it sends the file
 // to the whole-file reader.
@@ -207,6 +266,11 @@ bool readWindow(std::string_view text, const ReadOptions& options, unsigned thre
     done.header.lights.insert(done.header.lights.end(), scene.lights.begin(), scene.lights.end());
     if (!scene.objects.empty()) sink(scene.objects);
     done.handed += scene.objects.size();
+  }
+  if (window.first && done.keepHeaderText) {
+    std::uint32_t lastLine = done.header.camera.span.line;
+    for (const Light& light : done.header.lights) lastLine = std::max(lastLine, light.span.line);
+    done.headerText = std::string(leadingLines(text, lastLine));
   }
   done.objectsSeen += read.objectsSeen;
   done.nextLine += read.lines;
@@ -243,10 +307,9 @@ unsigned threadCount(const ReadOptions& options) {
 
 // The streamed file's result: its header's whole-file checks (as
 // SceneFileParser::finish and parseScene's last check make them), the
-// quotes taken from its first window, where the camera is.
+// quotes taken from its first window's header (StreamedScene::headerText).
 StreamReadResult finishStream(StreamedScene done, const std::filesystem::path& path,
-                              const ReadOptions& options, std::string_view firstWindow,
-                              SourceExcerpts* quotes) {
+                              const ReadOptions& options, SourceExcerpts* quotes) {
   StreamReadResult result;
   result.format = Format::SceneFile;
   result.objectCount = done.handed;
@@ -257,7 +320,7 @@ StreamReadResult finishStream(StreamedScene done, const std::filesystem::path& p
     checkSceneLevel(result.read.scene, result.read.diagnostics);
     checkFramingFinite(result.read.scene, result.read.diagnostics);
   }
-  if (quotes) quotes->capture(path.string(), firstWindow, result.read.diagnostics);
+  if (quotes) quotes->capture(path.string(), done.headerText, result.read.diagnostics);
   return result;
 }
 
@@ -276,9 +339,9 @@ StreamReadResult streamSceneFile(const std::filesystem::path& path, const ReadOp
   }
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return readWhole(path, options, sink, quotes, estimate, 0, {});
-  std::string firstWindow;
   bool streamed = false;
   StreamedScene done;
+  done.keepHeaderText = quotes != nullptr;
   done.fileBytes = static_cast<std::uint64_t>(info.st_size);
   done.estimate = &estimate;
   {
@@ -290,13 +353,11 @@ StreamReadResult streamSceneFile(const std::filesystem::path& path, const ReadOp
     } file{fd};
     WindowBuffer buffer(file.fd, window);
     if (buffer.fill() && detectFormat(buffer.held(), path.string()) == Format::SceneFile) {
-      // The camera's lines, for the quotes of the whole-file checks.
-      if (quotes) firstWindow = buffer.held();
       streamed = readWindows(buffer, options, threads, sink, done);
     }
   }
   if (!streamed) return readWhole(path, options, sink, quotes, estimate, done.handed, done.memory);
-  return finishStream(std::move(done), path, options, firstWindow, quotes);
+  return finishStream(std::move(done), path, options, quotes);
 }
 
 }  // namespace scene

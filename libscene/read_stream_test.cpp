@@ -17,6 +17,7 @@
 #include "libscene/testing/test_support.h"
 #include "scenefile/diagnostic_format.h"
 #include "scenefile/read_file.h"
+#include "scenefile/source_excerpt.h"
 
 namespace scene {
 namespace {
@@ -221,6 +222,31 @@ std::size_t openFiles() {
     ++count;
   }
   return count;
+}
+
+// The whole-file checks of a streamed file quote its lines as a whole read
+// does: a file with no LIGHT is warned at its CAMERA, whose line is
+// quoted, at any window and thread count.
+TEST(ReadStream, QuotesTheHeaderAsTheWholeReadDoes) {
+  const std::string text = manySpheres(3000);
+  fs::path path = writeFile("read_stream_quotes.sf", text);
+  SourceExcerpts wholeQuotes;
+  ReadResult whole = readSceneFile(path, ReadOptions{});
+  wholeQuotes.capture(path.string(), text, whole.diagnostics);
+  ASSERT_EQ(whole.diagnostics.items().size(), 1u);
+  ASSERT_EQ(whole.diagnostics.items()[0].code, DiagnosticCode::NoLight);
+  const std::string expected = formatDiagnostics(whole.diagnostics, {}, &wholeQuotes);
+  ASSERT_NE(expected.find("CAMERA"), std::string::npos) << expected;
+  for (std::size_t window : {std::size_t{777}, std::size_t{4096}}) {
+    for (unsigned threads : {1u, 2u}) {
+      SourceExcerpts quotes;
+      StreamReadResult streamed = streamSceneFile(
+          path, withWindow(window, threads), [](std::span<const Object>) {}, &quotes);
+      EXPECT_FALSE(streamed.readWhole);
+      EXPECT_EQ(formatDiagnostics(streamed.read.diagnostics, {}, &quotes), expected)
+          << "window " << window << ", threads " << threads;
+    }
+  }
 }
 
 // A sink that throws (a caller's limit, memory) ends the read with its
