@@ -8,18 +8,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "libscene/testing/test_support.h"
 #include "scenefile/diagnostic_format.h"
 
 namespace scene {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path writeFile(const std::string& name, const std::string& text) {
-  fs::path path = fs::path(::testing::TempDir()) / name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
 
 TEST(ReadFile, ReadsAndParsesByPath) {
   fs::path path = fs::path(SCENE_TESTDATA_DIR) / ".." / "examples" / "red-sphere.sf";
@@ -47,7 +42,7 @@ TEST(ReadFile, AFolderOrAMissingFileIsCannotReadFile) {
 }
 
 TEST(ReadFile, AFileAboveTheLimitIsRefusedByItsSize) {
-  fs::path path = writeFile("read_file_large.sf", std::string(100, '#'));
+  fs::path path = testing::writeTempFile("read_file_large.sf", std::string(100, '#'));
   ReadOptions options;
   options.maxFileSize = 99;
   SourceText source = readSourceFile(path, options, "shown.sf");
@@ -74,7 +69,7 @@ TEST(ReadFile, AStreamIsReadToOneBytePastTheLimit) {
 }
 
 TEST(ReadFile, QuotesTheLinesItsDiagnosticsPointAt) {
-  fs::path path = writeFile("read_file_bad.sf", "CAMERA\n0 0 nan\n");
+  fs::path path = testing::writeTempFile("read_file_bad.sf", "CAMERA\n0 0 nan\n");
   SourceExcerpts quotes;
   ReadResult result = readSceneFile(path, {}, &quotes);
   ASSERT_FALSE(result.ok());

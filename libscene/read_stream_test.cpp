@@ -26,12 +26,6 @@ namespace fs = std::filesystem;
 using testing::kCameraRecord;
 using testing::kLightRecord;
 
-fs::path writeFile(const std::string& name, const std::string& text) {
-  fs::path path = fs::path(::testing::TempDir()) / name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
-
 struct Streamed {
   StreamReadResult result;
   std::vector<Object> objects;  // as the sink saw them, batch after batch
@@ -108,7 +102,7 @@ TEST(ReadStream, RandomScenesReadAsWhole) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     testing::RandomSceneGenerator generator(seed);
     Scene scene = generator.scene(seed % 2 == 0);
-    fs::path path = writeFile("read_stream_random.sf", writeSceneFile(scene));
+    fs::path path = testing::writeTempFile("read_stream_random.sf", writeSceneFile(scene));
     for (unsigned threads : {1u, 2u, 3u}) {
       for (std::size_t window : kWindows) expectSameAsWhole(path, withWindow(window, threads));
     }
@@ -129,7 +123,7 @@ std::string manySpheres(int count, int lightEvery = 0) {
 }
 
 TEST(ReadStream, TheSinkSeesEveryObjectOnceInOrder) {
-  fs::path path = writeFile("read_stream_order.sf", manySpheres(3000, 100));
+  fs::path path = testing::writeTempFile("read_stream_order.sf", manySpheres(3000, 100));
   for (unsigned threads : {1u, 2u, 3u}) {
     std::vector<std::uint64_t> estimates;
     Streamed streamed;
@@ -165,7 +159,7 @@ TEST(ReadStream, ErrorsInLaterWindowsAreWhereTheyAre) {
     std::string text = kCameraRecord;
     for (int k = 0; k < kSpheres; ++k)
       text += k == at ? "SPHERE\n0.5 0.5 oops\n1 0 0 0\n0 1 0 0\n0 0 1 -10\n0 0 0 1\n" : sphere(k);
-    fs::path path = writeFile("read_stream_error.sf", text);
+    fs::path path = testing::writeTempFile("read_stream_error.sf", text);
     ReadOptions options = withWindow(500, 2);
     Streamed streamed = stream(path, options);
     EXPECT_TRUE(streamed.result.readWhole);
@@ -179,7 +173,7 @@ TEST(ReadStream, ErrorsInLaterWindowsAreWhereTheyAre) {
 }
 
 TEST(ReadStream, TheLimitsHoldAsForTheWholeRead) {
-  fs::path path = writeFile("read_stream_limits.sf", manySpheres(200));
+  fs::path path = testing::writeTempFile("read_stream_limits.sf", manySpheres(200));
   ReadOptions options = withWindow(300, 2);
   options.maxObjects = 150;
   expectSameAsWhole(path, options);
@@ -200,7 +194,7 @@ TEST(ReadStream, MemoryStaysWithinTheWindow) {
   const std::size_t kWindow = 16384;
   std::string text = manySpheres(1);
   while (text.size() < 50 * kWindow) text += sphere(static_cast<int>(text.size() % 1000));
-  fs::path path = writeFile("read_stream_memory.sf", text);
+  fs::path path = testing::writeTempFile("read_stream_memory.sf", text);
   for (unsigned threads : {1u, 2u}) {
     Streamed streamed = stream(path, withWindow(kWindow, threads));
     ASSERT_TRUE(streamed.result.read.ok());
@@ -229,7 +223,7 @@ std::size_t openFiles() {
 // quoted, at any window and thread count.
 TEST(ReadStream, QuotesTheHeaderAsTheWholeReadDoes) {
   const std::string text = manySpheres(3000);
-  fs::path path = writeFile("read_stream_quotes.sf", text);
+  fs::path path = testing::writeTempFile("read_stream_quotes.sf", text);
   SourceExcerpts wholeQuotes;
   ReadResult whole = readSceneFile(path, ReadOptions{});
   wholeQuotes.capture(path.string(), text, whole.diagnostics);
@@ -252,7 +246,7 @@ TEST(ReadStream, QuotesTheHeaderAsTheWholeReadDoes) {
 // A sink that throws (a caller's limit, memory) ends the read with its
 // exception, the file closed and the reading thread stopped.
 TEST(ReadStream, ASinksExceptionLeavesNoFileOpen) {
-  fs::path path = writeFile("read_stream_throwing_sink.sf", manySpheres(3000));
+  fs::path path = testing::writeTempFile("read_stream_throwing_sink.sf", manySpheres(3000));
   const std::size_t before = openFiles();
   for (unsigned threads : {1u, 2u}) {
     std::size_t batches = 0;

@@ -30,6 +30,13 @@ inline std::string readText(const std::filesystem::path& path) {
   return text.str();
 }
 
+// A file of `text` named `name` in the tests' temporary folder: its path.
+inline std::filesystem::path writeTempFile(const std::string& name, const std::string& text) {
+  std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
 // Every diagnostic of `list` with `code`.
 inline std::vector<Diagnostic> withCode(const DiagnosticList& list, DiagnosticCode code) {
   std::vector<Diagnostic> out;

@@ -18,6 +18,7 @@
 #include "libscene/formats/gltf/gltf_extras.h"
 #include "libscene/formats/gltf/gltf_light_units.h"
 #include "libscene/formats/gltf/gltf_reference_point.h"
+#include "libscene/formats/object_label.h"
 #include "libscene/text/number.h"
 
 namespace scene {
@@ -298,10 +299,6 @@ std::size_t addRecordNodes(OrderedJson& nodes, OrderedJson& roots, const glm::dm
     nodes.push_back(std::move(node));
   }
   return nodes.size() - 1;
-}
-
-std::string objectLabel(const Object& object, std::size_t index) {
-  return std::string(objectKindName(object.kind)) + " object " + std::to_string(index + 1);
 }
 
 std::string colourText(const glm::dvec3& c) {

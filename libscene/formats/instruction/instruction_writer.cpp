@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "libscene/formats/object_label.h"
 #include "libscene/text/number.h"
 #include "scenefile/transform.h"
 #include "scenefile/validation.h"
@@ -33,10 +34,6 @@ void appendOp(std::string& out, const TransformOp& op) {
   } else {
     appendLine(out, 2, name, {op.value.x});
   }
-}
-
-std::string objectLabel(const Object& object, std::size_t index) {
-  return std::string(objectKindName(object.kind)) + " object " + std::to_string(index + 1);
 }
 
 // Every matrix entry that the approximation moved, as notes.
