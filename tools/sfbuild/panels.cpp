@@ -115,7 +115,10 @@ void Panels::drawProperties(BuilderState& state, float top) {
   if (!state.selection && cameraShown_) {
     scene::LookAtCamera camera = scene::lookAtFromCamera(state.scene.camera.matrix);
     ImGui::TextUnformatted("CAMERA");
-    if (editTriple("eye", camera.location) | editTriple("look at", camera.lookAt)) {
+    // Every field drawn every frame, whichever was edited.
+    bool eyeEdited = editTriple("eye", camera.location);
+    bool lookAtEdited = editTriple("look at", camera.lookAt);
+    if (eyeEdited || lookAtEdited) {
       setCameraView(state, camera.location, camera.lookAt);
     }
   } else if (state.selection && state.selection->light &&
@@ -124,7 +127,9 @@ void Panels::drawProperties(BuilderState& state, float top) {
     const scene::Light& light = state.scene.lights[i];
     glm::dvec3 position = light.position(), colour = light.colour;
     ImGui::Text("LIGHT %zu", i + 1);
-    if (editTriple("position", position) | editTriple("colour", colour)) {
+    bool positionEdited = editTriple("position", position);
+    bool colourEdited = editTriple("colour", colour);
+    if (positionEdited || colourEdited) {
       setLight(state, i, position, colour);
     }
   } else if (state.selection && !state.selection->light &&
@@ -134,8 +139,10 @@ void Panels::drawProperties(BuilderState& state, float top) {
     ImGui::TextUnformatted(objectLabel(object, i).c_str());
     scene::TransformDecomposition d = scene::decomposeTransform(object.matrix);
     glm::dvec3 degrees = d.rotation * (180.0 / std::numbers::pi);
-    if (editTriple("position", d.translation) | editTriple("rotation", degrees) |
-        editTriple("scale", d.scale)) {
+    bool transformEdited = editTriple("position", d.translation);
+    transformEdited = editTriple("rotation", degrees) || transformEdited;
+    transformEdited = editTriple("scale", d.scale) || transformEdited;
+    if (transformEdited) {
       setObjectTransform(state, i, d.translation, degrees, d.scale);
     }
     if (!d.exact()) ImGui::TextDisabled("(sheared: shown as its nearest)");

@@ -332,7 +332,9 @@ TEST(EditorGrammars, TextMateGrammarsTokenizeEveryKeywordAtItsPlace) {
     }
     for (const KeywordInfo& row : scene::keywords()) {
       if (row.format != file.format) continue;
-      auto [line, begin] = lineWith(row);
+      auto [line, wordBegin] = lineWith(row);
+      // Named apart: clang before 16 captures no structured binding.
+      const auto begin = wordBegin;
       std::vector<Token> tokens = tokenize(compiled, line);
       bool keyword = std::any_of(tokens.begin(), tokens.end(), [&](const Token& token) {
         return token.begin == begin && token.end == begin + row.word.size() &&

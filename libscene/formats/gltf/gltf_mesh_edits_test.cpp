@@ -244,7 +244,10 @@ TEST(GltfMeshEdits, AMeshStillItsPrimitiveIsReadFromItsExtrasBitForBit) {
       {"welded, permuted, reordered", {weldPositions, permuteVertices, reorderTriangles}},
   };
   for (const Case& c : randomCases(testing::randomCases(150))) {
-    for (const auto& [name, steps] : edits) {
+    for (const auto& [name, stepList] : edits) {
+      // A copy of the binding's reference: clang before 16 captures no
+      // structured binding.
+      const auto& steps = stepList;
       Edit all = [&steps](MeshData& m, std::mt19937& r) {
         for (const Edit& step : steps) step(m, r);
       };
