@@ -111,3 +111,15 @@ for n in $sizes; do
 done
 echo
 echo "$(date -u '+%Y-%m-%d'), $(cpu_model), $(nproc) cores, $(memory_total), load $(cut -d ' ' -f 1-3 /proc/loadavg), commit $(short_commit "$root"), $threads threads"
+# The floor under the system times above: what the kernel charges for a
+# process's first writes to fresh memory, and for memory given back and
+# taken again (bench/first_touch.cpp).
+if [[ -x $bin/first_touch ]]; then
+  "$bin/first_touch" --gib 2 --passes 2 >"$work/touch"
+  read -r _ wall1 sys1 _ < <(sed -n 2p "$work/touch")
+  read -r _ wall2 sys2 _ < <(sed -n 3p "$work/touch")
+  echo
+  echo "First writes to fresh memory (\`first_touch --gib 2 --passes 2\`, 2 MiB pages):" \
+    "$(fmt 2 "$(calc "$sys1 / 2.147")") s of system time a GB ($wall1 s wall for 2 GiB);" \
+    "the same memory given back and written again: $(fmt 2 "$(calc "$sys2 / 2.147")") s a GB."
+fi
