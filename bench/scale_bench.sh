@@ -9,7 +9,9 @@
 # markdown table on standard output: the wall, user and system time, the
 # peak resident set, and what each stage held (sfrender -v), in bytes an
 # object. The limits are raised to the file's size and object count, one
-# flag each.
+# flag each. Under the table, from bench/first_touch run before the renders:
+# the system time a GB of a process's first writes to memory, the floor
+# under the table's system times.
 #
 # A render that fails (one that does not fit in memory is refused, exit 4)
 # gets a row with its exit status and its last message.
@@ -63,6 +65,19 @@ held() { sed -n "s/.*[:,] $1 [0-9.]* MB (\([0-9]*\) B\/object).*/\1/p" "$2" | he
 # took STEP FILE: the seconds sfrender -v says STEP took.
 took() { sed -n "s/^sfrender: $1 took \([0-9.]*\) s/\1/p" "$2" | head -n 1; }
 
+# The floor under the system times below: what the kernel charges for a
+# process's first writes to memory it has not touched lately, and for
+# memory given back and written again at once (bench/first_touch.cpp). It
+# runs first, after a pause, before the renders give memory back.
+touch_line=
+if [[ -x $bin/first_touch ]]; then
+  sleep 5
+  "$bin/first_touch" --gib 2 --passes 2 >"$work/touch"
+  read -r _ wall1 sys1 _ < <(sed -n 2p "$work/touch")
+  read -r _ _ sys2 _ < <(sed -n 3p "$work/touch")
+  touch_line="First writes to memory (\`first_touch --gib 2 --passes 2\`, 2 MiB pages, before the renders): $(fmt 2 "$(calc "$sys1 / 2.147")") s of system time a GB ($wall1 s wall for 2 GiB); given back and written again at once: $(fmt 2 "$(calc "$sys2 / 2.147")") s a GB."
+fi
+
 echo "| objects | file | wall | user | sys | peak | per object | text | model | records | BVH | grids | image | read | prepare | render | write |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in $sizes; do
@@ -111,15 +126,4 @@ for n in $sizes; do
 done
 echo
 echo "$(date -u '+%Y-%m-%d'), $(cpu_model), $(nproc) cores, $(memory_total), load $(cut -d ' ' -f 1-3 /proc/loadavg), commit $(short_commit "$root"), $threads threads"
-# The floor under the system times above: what the kernel charges for a
-# process's first writes to fresh memory, and for memory given back and
-# taken again (bench/first_touch.cpp).
-if [[ -x $bin/first_touch ]]; then
-  "$bin/first_touch" --gib 2 --passes 2 >"$work/touch"
-  read -r _ wall1 sys1 _ < <(sed -n 2p "$work/touch")
-  read -r _ wall2 sys2 _ < <(sed -n 3p "$work/touch")
-  echo
-  echo "First writes to fresh memory (\`first_touch --gib 2 --passes 2\`, 2 MiB pages):" \
-    "$(fmt 2 "$(calc "$sys1 / 2.147")") s of system time a GB ($wall1 s wall for 2 GiB);" \
-    "the same memory given back and written again: $(fmt 2 "$(calc "$sys2 / 2.147")") s a GB."
-fi
+[[ -z $touch_line ]] || printf '\n%s\n' "$touch_line"
