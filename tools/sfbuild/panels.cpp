@@ -139,10 +139,10 @@ void Panels::drawProperties(BuilderState& state, float top) {
     ImGui::TextUnformatted(objectLabel(object, i).c_str());
     scene::TransformDecomposition d = scene::decomposeTransform(object.matrix);
     glm::dvec3 degrees = d.rotation * (180.0 / std::numbers::pi);
-    bool transformEdited = editTriple("position", d.translation);
-    transformEdited = editTriple("rotation", degrees) || transformEdited;
-    transformEdited = editTriple("scale", d.scale) || transformEdited;
-    if (transformEdited) {
+    bool positionEdited = editTriple("position", d.translation);
+    bool rotationEdited = editTriple("rotation", degrees);
+    bool scaleEdited = editTriple("scale", d.scale);
+    if (positionEdited || rotationEdited || scaleEdited) {
       setObjectTransform(state, i, d.translation, degrees, d.scale);
     }
     if (!d.exact()) ImGui::TextDisabled("(sheared: shown as its nearest)");
