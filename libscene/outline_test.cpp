@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -209,28 +211,66 @@ TEST(OutlineOf, AnyTextInEitherFormat) {
   }
 }
 
-// Texts that nest or repeat without end cost time in proportion to their
-// size, and a place in them no more than a few thousand lines' reading.
-TEST(OutlineOf, EndlessNestingAndRepetitionInLinearTime) {
+// Texts that nest or repeat without end, `blocks` times over.
+struct EndlessTexts {
   std::string nested = "OUTPUT_FILE a.ppm\n";
   std::string repeated;
   std::string unended = "OUTPUT_FILE a.ppm\nSTART OBJECT SPHERE\n";
-  for (int i = 0; i < 300'000; ++i) {
-    nested += "START OBJECT SPHERE\nSTART MATERIAL\n";
-    repeated += "CAMERA\n";
-    unended += "SCALE 1 1 1\nEND MATERIAL\n";
-  }
-  auto start = std::chrono::steady_clock::now();
-  EXPECT_EQ(outlineOf(nested, Format::InstructionFile).items.size(), 600'001u);
-  EXPECT_EQ(outlineOf(repeated, Format::SceneFile).items.size(), 300'000u);
-  EXPECT_EQ(outlineOf(unended, Format::InstructionFile).items.size(), 2u);
-  for (const std::string* text : {&nested, &unended}) {
-    std::size_t lastLine = text->rfind('\n', text->size() - 2) + 1;
-    for (int i = 0; i < 100; ++i) {
-      placeAt(*text, Format::InstructionFile, lastLine, 600'001, 1);
+
+  explicit EndlessTexts(int blocks) {
+    for (int i = 0; i < blocks; ++i) {
+      nested += "START OBJECT SPHERE\nSTART MATERIAL\n";
+      repeated += "CAMERA\n";
+      unended += "SCALE 1 1 1\nEND MATERIAL\n";
     }
   }
-  EXPECT_LT(testing::secondsSince(start), 2.0);
+};
+
+// A place on the last line of an instruction file, `times` over.
+void placeAtTheEnd(const std::string& text, int times) {
+  std::size_t lastLine = text.rfind('\n', text.size() - 2) + 1;
+  auto line = static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
+  for (int i = 0; i < times; ++i) placeAt(text, Format::InstructionFile, lastLine, line, 1);
+}
+
+// Texts that nest or repeat without end cost time in proportion to their
+// size, and a place in them no more than a few thousand lines' reading.
+// Both are ratios of times taken in one run, so that a slow machine or a
+// sanitizer divides out: ten times the text costs about ten times the
+// outline's time (a hundred, were it quadratic) and the same time for a
+// place at its end (ten times, were the whole text read back). Each time is
+// the fastest of three, taken in turn, so that what else the machine runs
+// weighs on neither side alone.
+TEST(OutlineOf, EndlessNestingAndRepetitionInLinearTime) {
+  EndlessTexts small(10'000);
+  EndlessTexts large(100'000);
+  EXPECT_EQ(outlineOf(large.nested, Format::InstructionFile).items.size(), 200'001u);
+  EXPECT_EQ(outlineOf(large.repeated, Format::SceneFile).items.size(), 100'000u);
+  EXPECT_EQ(outlineOf(large.unended, Format::InstructionFile).items.size(), 2u);
+
+  auto outlineTime = [](const EndlessTexts& texts) {
+    auto start = std::chrono::steady_clock::now();
+    outlineOf(texts.nested, Format::InstructionFile);
+    outlineOf(texts.repeated, Format::SceneFile);
+    outlineOf(texts.unended, Format::InstructionFile);
+    return testing::secondsSince(start);
+  };
+  auto placeTime = [](const EndlessTexts& texts) {
+    auto start = std::chrono::steady_clock::now();
+    placeAtTheEnd(texts.nested, 50);
+    placeAtTheEnd(texts.unended, 50);
+    return testing::secondsSince(start);
+  };
+  double inf = std::numeric_limits<double>::infinity();
+  double smallOutline = inf, largeOutline = inf, smallPlace = inf, largePlace = inf;
+  for (int run = 0; run < 3; ++run) {
+    smallOutline = std::min(smallOutline, outlineTime(small));
+    largeOutline = std::min(largeOutline, outlineTime(large));
+    smallPlace = std::min(smallPlace, placeTime(small));
+    largePlace = std::min(largePlace, placeTime(large));
+  }
+  EXPECT_LT(largeOutline, 30 * smallOutline) << smallOutline << " s, then " << largeOutline;
+  EXPECT_LT(largePlace, 4 * smallPlace) << smallPlace << " s, then " << largePlace;
 }
 
 TEST(PlaceAt, SceneFileLinesInTheirRecord) {
