@@ -91,7 +91,8 @@ void resetPeakRss() {
 // Builds the render scene as sfrender's streaming read does, and prints
 // the build's times and memory by stage.
 render::RenderScene buildInBatches(const scene::Scene& scene, int threads,
-                                   const std::string& lightGrids, std::uint64_t samples) {
+                                   const std::string& lightGrids, std::uint64_t samples,
+                                   std::uint64_t imageSamples) {
   constexpr std::size_t kBatch = 65536;
   const double objects = std::max<double>(1.0, static_cast<double>(scene.objects.size()));
   resetPeakRss();
@@ -107,9 +108,10 @@ render::RenderScene buildInBatches(const scene::Scene& scene, int threads,
   const double add = since(t0);
   t0 = Clock::now();
   render::RenderScene compiled = std::move(builder).finish(
-      scene, lightGrids == "auto"
-                 ? render::RenderScene::lightGridsPay(scene.objects.size(), samples)
-                 : lightGrids == "1");
+      scene,
+      lightGrids == "auto" ? render::RenderScene::lightGridsPay(scene.objects.size(), samples)
+                           : lightGrids == "1",
+      imageSamples);
   const double finish = since(t0);
   const long peak = peakRssBytes();
   render::RenderSceneMemory memory = compiled.memory();
@@ -153,8 +155,9 @@ int timeScene(const std::string& path, const render::RenderSettings& settings,
   std::string().swap(text);
   std::printf("objects: %zu\n", result.scene.objects.size());
   std::printf("parse_s: %.6f\n", parse);
-  const render::RenderScene compiled = buildInBatches(result.scene, settings.threads, lightGrids,
-                                                      render::uniformSampleCount(settings));
+  const render::RenderScene compiled =
+      buildInBatches(result.scene, settings.threads, lightGrids,
+                     render::uniformSampleCount(settings), render::fullImageSampleCount(settings));
   render::RenderStatistics stats;
   t0 = Clock::now();
   render::Image image = render::renderImage(compiled, settings, &stats);

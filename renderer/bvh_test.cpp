@@ -388,6 +388,22 @@ TEST(BvhBuild, CompactTreesHaveLeavesOfTwoItemsOrMoreAndFewerNodesThanBoxes) {
   EXPECT_EQ(Bvh::mostNodes(from, Bvh::minLeafItemsFor(Bvh::nodeCostFor(from))), from - 1);
 }
 
+// With the whole image's samples known, a tree is compact from
+// kMinCompactBoxes boxes where the image takes fewer than
+// kFullTreeSamplesPerBox samples a box, and from kCompactFromBoxes boxes
+// whatever it takes.
+TEST(BvhBuild, FewSamplesABoxPriceTheCompactTree) {
+  const std::uint64_t least = Bvh::kMinCompactBoxes;
+  const std::uint64_t rate = Bvh::kFullTreeSamplesPerBox;
+  EXPECT_EQ(Bvh::nodeCostFor(least - 1, 0), Bvh::kNodeCost);
+  EXPECT_EQ(Bvh::nodeCostFor(least, rate * least - 1), Bvh::kCompactNodeCost);
+  EXPECT_EQ(Bvh::nodeCostFor(least, rate * least), Bvh::kNodeCost);
+  EXPECT_EQ(Bvh::nodeCostFor(1'000'000, 1920 * 1080), Bvh::kCompactNodeCost);
+  EXPECT_EQ(Bvh::nodeCostFor(1'000'000, 1920 * 1080 * 8), Bvh::kNodeCost);
+  EXPECT_EQ(Bvh::nodeCostFor(Bvh::kCompactFromBoxes, UINT64_MAX), Bvh::kCompactNodeCost);
+  EXPECT_EQ(Bvh::nodeCostFor(Bvh::kCompactFromBoxes - 1, UINT64_MAX), Bvh::kNodeCost);
+}
+
 // The outward rounding of box planes to float is std::nextafter's step from
 // the nearest float, for doubles of every magnitude, at and between floats,
 // at zeros, at the ends of the float range and past them, and NaN.

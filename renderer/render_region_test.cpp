@@ -92,6 +92,23 @@ TEST(RenderRegion, AFullRenderSaysSo) {
   EXPECT_EQ(cut.height, 2);
 }
 
+// What a region's render chooses by the image's samples (the BVH's kind)
+// counts the whole image's, so that it chooses as the full render does; the
+// samples it takes are its own.
+TEST(RenderRegion, TheWholeImagesSamplesWhateverTheRegion) {
+  RenderSettings settings;
+  settings.width = 20;
+  settings.height = 10;
+  settings.samplesPerPixel = 4;
+  EXPECT_EQ(fullImageSampleCount(settings), 800u);
+  EXPECT_EQ(uniformSampleCount(settings), 800u);
+  settings.region = PixelRegion{15, 8, 30, 30};
+  EXPECT_EQ(fullImageSampleCount(settings), 800u);
+  EXPECT_EQ(uniformSampleCount(settings), 40u);
+  settings.samplesPerPixel = 0;
+  EXPECT_EQ(fullImageSampleCount(settings), 200u);
+}
+
 TEST(RenderRegion, EveryRegionAndTileHoldsTheFullRendersPixels) {
   struct Case {
     std::string name;

@@ -124,7 +124,9 @@ class RenderScene {
   /// core), which changes how long that takes, never what it builds.
   /// `lightGrids` false leaves out the lights' direction grids (lightGrid),
   /// for the tests and benchmarks that compare: the answers are the same.
-  explicit RenderScene(const scene::Scene& scene, int threads = 0, bool lightGrids = true);
+  /// `imageSamples` as RenderSceneBuilder::finish takes them.
+  explicit RenderScene(const scene::Scene& scene, int threads = 0, bool lightGrids = true,
+                       std::optional<std::uint64_t> imageSamples = std::nullopt);
 
   /// What the build (RenderSceneBuilder) allocates for a scene of `objects`
   /// objects, `lights` lights and `materials` distinct materials (colour

@@ -34,11 +34,12 @@ std::array<std::uint64_t, 7> propertyBits(const scene::Material& m) {
 
 // Here rather than in render_scene.cpp, which the builder's header would
 // otherwise include back: a whole scene is one batch.
-RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids) {
+RenderScene::RenderScene(const scene::Scene& scene, int threads, bool lightGrids,
+                         std::optional<std::uint64_t> imageSamples) {
   RenderSceneBuilder builder(threads);
   builder.reserve(scene.objects.size());
   builder.add(scene.objects);
-  *this = std::move(builder).finish(scene, lightGrids);
+  *this = std::move(builder).finish(scene, lightGrids, imageSamples);
 }
 
 RenderSceneBuilder::RenderSceneBuilder(int threads)
@@ -129,7 +130,8 @@ void RenderSceneBuilder::permute(const std::vector<std::uint32_t>& order) {
                  std::span<glm::dvec3>(colours_));
 }
 
-RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGrids) && {
+RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGrids,
+                                       std::optional<std::uint64_t> imageSamples) && {
   const auto count = static_cast<std::uint32_t>(objects_.size());
   const std::uint32_t planeCount = planes_;
   const std::uint32_t boundedCount = count - planeCount;
@@ -152,7 +154,9 @@ RenderScene RenderSceneBuilder::finish(const scene::Scene& header, bool lightGri
   scene.bvh_ = Bvh(
       boundedCount,
       [&](std::uint32_t item) { return *worldBounds(objects_[order[planeCount + item]]); },
-      threads_);
+      threads_,
+      imageSamples ? Bvh::nodeCostFor(boundedCount, *imageSamples)
+                   : Bvh::nodeCostFor(boundedCount));
   {
     std::vector<std::uint32_t> byPlace = scene.bvh_.takeOrder();
     for (std::uint32_t& item : byPlace) item = order[planeCount + item];

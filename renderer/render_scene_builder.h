@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -33,8 +34,12 @@ class RenderSceneBuilder {
 
   /// The finished scene: the BVH and the light grids over every object
   /// added; `header` gives the camera and the lights (its objects are
-  /// ignored). Frees every build temporary before it returns.
-  RenderScene finish(const scene::Scene& header, bool lightGrids = true) &&;
+  /// ignored). `imageSamples`, where known, are the camera samples of the
+  /// whole image to be rendered (fullImageSampleCount): few of them for the
+  /// objects build a compact BVH (Bvh::nodeCostFor). Frees every build
+  /// temporary before it returns.
+  RenderScene finish(const scene::Scene& header, bool lightGrids = true,
+                     std::optional<std::uint64_t> imageSamples = std::nullopt) &&;
 
   /// The distinct materials (colour aside) of the objects added.
   std::uint64_t materialCount() const { return materials_.size(); }

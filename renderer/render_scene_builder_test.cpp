@@ -79,6 +79,55 @@ TEST(RenderSceneBuilder, BatchesRenderTheSameImage) {
   }
 }
 
+// The whole image's samples choose the tree's kind (Bvh::nodeCostFor): for
+// a grid of kMinCompactBoxes small objects, one fewer than
+// kFullTreeSamplesPerBox a box builds the compact tree, leaves of two or
+// more, and as many the full one, as no count does. No two objects of the
+// grid meet a ray at one distance, so each ray's hit is the same object,
+// and each image the same, bit for bit.
+TEST(RenderSceneBuilder, FewSamplesAnObjectBuildACompactTreeOfTheSameHits) {
+  Random random(5);
+  scene::Scene s = sceneLookingAt({0, 0, 200}, {0, 0, 0});
+  constexpr scene::ObjectKind kKinds[] = {scene::ObjectKind::Sphere, scene::ObjectKind::Cube,
+                                          scene::ObjectKind::Cylinder};
+  for (int i = 0; i < 256; ++i) {
+    for (int j = 0; j < 256; ++j) {
+      s.objects.push_back(
+          object(kKinds[random.below(3)],
+                 {scale(random.uniform(0.2, 0.4)), rotateX(random.uniform(-3, 3)),
+                  rotateZ(random.uniform(-3, 3)), translate(i - 128.0, j - 128.0, 0)},
+                 scene::Material{}));
+    }
+  }
+  s.lights.push_back(light({50, 80, 300}));
+  const std::uint64_t boxes = s.objects.size();
+  ASSERT_EQ(boxes, Bvh::kMinCompactBoxes);
+  const std::uint64_t fewest = Bvh::kFullTreeSamplesPerBox * boxes;
+  RenderScene compact(s, 2, false, fewest - 1);
+  RenderScene full(s, 2, false, fewest);
+  RenderScene uncounted(s, 2, false);
+  EXPECT_LT(compact.bvh().nodes().size(), boxes);
+  EXPECT_EQ(full.bvh().nodes().size(), uncounted.bvh().nodes().size());
+  EXPECT_GT(full.bvh().nodes().size(), boxes);
+  EXPECT_LT(compact.memory().bvh, full.memory().bvh);
+  for (int k = 0; k < 2000; ++k) {
+    glm::dvec3 target(random.uniform(-130, 130), random.uniform(-130, 130), 0);
+    Ray ray{random.point(100.0) + glm::dvec3(0, 0, 150), {}};
+    ray.direction = glm::normalize(target - ray.origin);
+    std::optional<Hit> a = compact.closestHit(ray, RaySource{});
+    std::optional<Hit> b = full.closestHit(ray, RaySource{});
+    ASSERT_EQ(a.has_value(), b.has_value()) << "ray " << k;
+    if (!a) continue;
+    EXPECT_EQ(a->t, b->t) << "ray " << k;
+    EXPECT_EQ(compact.sceneObject(a->object), full.sceneObject(b->object)) << "ray " << k;
+    EXPECT_EQ(a->normal, b->normal) << "ray " << k;
+  }
+  RenderSettings settings;
+  settings.width = 64;
+  settings.height = 48;
+  EXPECT_EQ(renderImage(compact, settings).rgb, renderImage(full, settings).rgb);
+}
+
 // Materials are numbered by their first use in the order added, whatever
 // the batches and threads: here in batches past the size made in parts,
 // most of whose objects share the last material found, a few of which

@@ -23,6 +23,12 @@ std::uint64_t uniformSampleCount(const RenderSettings& settings) {
          static_cast<std::uint64_t>(std::max(1, settings.samplesPerPixel));
 }
 
+std::uint64_t fullImageSampleCount(const RenderSettings& settings) {
+  return static_cast<std::uint64_t>(std::max(0, settings.width)) *
+         static_cast<std::uint64_t>(std::max(0, settings.height)) *
+         static_cast<std::uint64_t>(std::max(1, settings.samplesPerPixel));
+}
+
 Image blankImageFor(const RenderSettings& settings) {
   PixelRegion region = regionToRender(settings);
   Image image;

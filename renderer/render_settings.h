@@ -70,6 +70,13 @@ bool samplesAdaptively(const RenderSettings& settings);
 /// of regionToRender times samplesPerPixel (at least 1).
 std::uint64_t uniformSampleCount(const RenderSettings& settings);
 
+/// The camera samples a uniform render of the whole image with `settings`
+/// takes, whatever its region: width times height times samplesPerPixel
+/// (at least 1). What is chosen by it (the BVH's kind, Bvh::nodeCostFor)
+/// is the same for every region, so that a region's pixels are the whole
+/// image's.
+std::uint64_t fullImageSampleCount(const RenderSettings& settings);
+
 /// An image of the pixels `settings` asks for (regionToRender), every
 /// value 0, with its place in the full image, and coverage when asked for:
 /// what each device's render fills in.

@@ -49,7 +49,8 @@ RenderedImage renderScene(const Scene& scene, const RenderSettings& settings,
   std::stop_callback onStop(control.stop, [&cancel] { cancel.request(); });
   render::RenderScene compiled(
       scene, 0,
-      render::RenderScene::lightGridsPay(scene.objects.size(), render::uniformSampleCount(full)));
+      render::RenderScene::lightGridsPay(scene.objects.size(), render::uniformSampleCount(full)),
+      render::fullImageSampleCount(full));
   return render::renderImage(compiled, full, nullptr, control.progress, &cancel);
 }
 

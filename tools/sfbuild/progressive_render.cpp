@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <optional>
 #include <utility>
 
 #include "renderer/image.h"
@@ -11,6 +12,21 @@ namespace sfbuild {
 std::vector<RenderLevel> defaultRenderLevels() {
   return {{8, 1, 0.0}, {4, 1, 0.0}, {2, 1, 0.0}, {1, 1, 0.0}, {1, 16, 0.03}};
 }
+
+namespace {
+
+// The settings of one level of a job's render: its size and sampling.
+render::RenderSettings levelSettings(const render::RenderSettings& job, const RenderLevel& level) {
+  render::RenderSettings settings = job;
+  int divisor = std::max(level.divisor, 1);
+  settings.width = std::max(1, (job.width + divisor - 1) / divisor);
+  settings.height = std::max(1, (job.height + divisor - 1) / divisor);
+  settings.samplesPerPixel = level.samplesPerPixel;
+  settings.adaptiveThreshold = level.adaptiveThreshold;
+  return settings;
+}
+
+}  // namespace
 
 ProgressiveRender::ProgressiveRender(std::vector<RenderLevel> levels, int threads)
     : levels_(std::move(levels)), threads_(threads), worker_([this] { run(); }) {}
@@ -83,17 +99,18 @@ void ProgressiveRender::renderJob(const Job& job) {
   };
   try {
     // Building the BVH cannot be cancelled: a scene of 100,000 objects
-    // takes tens of milliseconds, during which a newer job waits.
-    render::RenderScene compiled(job.scene);
+    // takes tens of milliseconds, during which a newer job waits. Its kind
+    // is the one sfrender chooses for the last level's image, so that the
+    // last image is sfrender's.
+    std::optional<std::uint64_t> imageSamples;
+    if (!levels_.empty()) {
+      imageSamples = render::fullImageSampleCount(levelSettings(job.settings, levels_.back()));
+    }
+    render::RenderScene compiled(job.scene, 0, true, imageSamples);
     for (std::size_t i = 0; i < levels_.size(); ++i) {
       if (cancel->requested()) return cancelled();
       const RenderLevel& level = levels_[i];
-      render::RenderSettings settings = job.settings;
-      int divisor = std::max(level.divisor, 1);
-      settings.width = std::max(1, (job.settings.width + divisor - 1) / divisor);
-      settings.height = std::max(1, (job.settings.height + divisor - 1) / divisor);
-      settings.samplesPerPixel = level.samplesPerPixel;
-      settings.adaptiveThreshold = level.adaptiveThreshold;
+      render::RenderSettings settings = levelSettings(job.settings, level);
       settings.threads = threads_;
       render::Image image = render::renderImage(compiled, settings, nullptr, {}, cancel.get());
       RenderedFrame frame;

@@ -80,7 +80,8 @@ RenderOutcome renderScene(const scene::Scene& scene, render::RenderSettings sett
   // The lights' grids only where they pay, as sfrender decides.
   render::RenderScene compiled(scene, tools::renderThreadCount(settings.threads),
                                render::RenderScene::lightGridsPay(
-                                   scene.objects.size(), render::uniformSampleCount(settings)));
+                                   scene.objects.size(), render::uniformSampleCount(settings)),
+                               render::fullImageSampleCount(settings));
   if (cancel.requested()) return cancelledOutcome();
   std::string rendering =
       "rendering " + std::to_string(settings.width) + "x" + std::to_string(settings.height);

@@ -11,8 +11,8 @@
 #include <iomanip>
 #include <memory>
 #include <optional>
-#include <stop_token>
 #include <sstream>
+#include <stop_token>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -540,7 +540,10 @@ MaybeFailure RenderJob::run() {
   const bool lightGrids =
       settings_.device != render::RenderDevice::Gpu &&
       render::RenderScene::lightGridsPay(objectCount_, render::uniformSampleCount(settings_));
-  render::RenderScene compiled = std::move(*builder_).finish(job_.scene, lightGrids);
+  // The tree's kind by the whole image's samples, as every tool's render
+  // of it, and each of its regions, chooses it.
+  render::RenderScene compiled =
+      std::move(*builder_).finish(job_.scene, lightGrids, render::fullImageSampleCount(settings_));
   builder_.reset();
   output_.step("preparing the scene");
   render::RenderStatistics statistics;

@@ -82,7 +82,9 @@ RenderSession::RenderSession(std::string_view text, const std::string& name,
     return;
   }
   try {
-    compiled_ = std::make_unique<render::RenderScene>(result_.scene, settings_.threads);
+    // The tree's kind by the whole image's samples, as sfrender chooses it.
+    compiled_ = std::make_unique<render::RenderScene>(result_.scene, settings_.threads, true,
+                                                      render::fullImageSampleCount(settings_));
   } catch (const std::bad_alloc&) {
     error_ = "the render ran out of memory";
   }
