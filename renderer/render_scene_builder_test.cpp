@@ -80,9 +80,10 @@ TEST(RenderSceneBuilder, BatchesRenderTheSameImage) {
 }
 
 // The whole image's samples choose the tree's kind (Bvh::nodeCostFor): for
-// a grid of kMinCompactBoxes small objects, one fewer than
-// kFullTreeSamplesPerBox a box builds the compact tree, leaves of two or
-// more, and as many the full one, as no count does. No two objects of the
+// a grid of kMinCompactBoxes small objects, one sample fewer than
+// kFullTreeSamplesPerBox a box builds the compact tree (leaves of two or
+// more, fewer nodes than objects), and exactly that many the full one, as
+// no count at all does. No two objects of the
 // grid meet a ray at one distance, so each ray's hit is the same object,
 // and each image the same, bit for bit.
 TEST(RenderSceneBuilder, FewSamplesAnObjectBuildACompactTreeOfTheSameHits) {
