@@ -14,6 +14,8 @@
 #include <thread>
 #include <vector>
 
+#include "renderer/bvh_build_item.h"
+#include "renderer/bvh_morton.h"
 #include "renderer/huge_pages.h"
 #include "renderer/parallel_parts.h"
 #include "renderer/saturating.h"
@@ -32,31 +34,9 @@ constexpr std::uint32_t kMaxLeafItems = Bvh::kMaxLeafItems;
 // tree within the traversal stack (Bvh::kStackSize) for any item count.
 constexpr int kMaxDepth = 64;
 
-// An item as the build moves it: its box beside its index, so that each
-// pass over a node's items reads memory in order. With the indices alone,
-// every pass gathered boxes from all over the list, and at 1,000,000 boxes
-// the cache misses of the top levels made most of the build's time. The box
-// is in float, rounded outward as the nodes' are (every node's box, a union
-// of its items', comes out the same): 32 bytes, not 56.
-struct BuildItem {
-  float planes[6];
-  std::uint32_t index;
-  // The item's bin in its node's split, set by the binning pass for the
-  // partition after it, which would work it out again.
-  std::uint32_t bin;
-  Bounds box() const {
-    return Bounds{glm::dvec3(planes[0], planes[1], planes[2]),
-                  glm::dvec3(planes[3], planes[4], planes[5])};
-  }
-  // Bounds::centre's value of box(), bit for bit, but 0 where that is NaN
-  // (a box from -infinity to infinity, of planes past the float range),
-  // so that the centres order.
-  double centre(int axis) const {
-    double c = 0.5 * (static_cast<double>(planes[axis]) + static_cast<double>(planes[3 + axis]));
-    return c == c ? c : 0.0;
-  }
-  glm::dvec3 centre() const { return glm::dvec3(centre(0), centre(1), centre(2)); }
-};
+using bvh_build::BuildItem;
+using bvh_build::writeBox;
+using bvh_build::writeLeaf;
 
 // What a node's split works with: the items and the nodes being written,
 // shared by every thread of a build (each writes only its own range of
@@ -404,20 +384,6 @@ bool leafIsCheaper(const BuildInput& in, std::uint32_t count, double area, doubl
   return count <= kMaxLeafItems && count * area <= in.nodeCost * area + splitCost;
 }
 
-// A node's box: its bounds rounded outward to floats. The first write of
-// every node, which clears it whole (the node's room was never written).
-void writeBox(BvhNode& node, const Bounds& bounds) {
-  node = BvhNode{};
-  floatPlanesAround(bounds, node.planes);
-}
-
-void writeLeaf(BvhNode& node, std::uint32_t begin, std::uint32_t count, const Bounds& bounds) {
-  writeBox(node, bounds);
-  node.offset = begin;
-  node.count = static_cast<std::uint16_t>(count);
-  node.axis = 0;
-}
-
 // Fills in the node over items [begin, end), of the given extent: its box,
 // and either a leaf's items or a split, for which it orders the items (those
 // of the first child first), sets the children's extents, and returns where
@@ -553,15 +519,15 @@ struct TopRange {
   NodeExtent extent;
 };
 
-// The top of the tree, above the subtrees of at most `largest` items (and
-// above kMaxDepth, where buildSubtree makes the leaves), built a level at a
-// time, the splits of a level side by side on `threads` threads. Each node
+// The top of the tree from the ranges of `level` down, above the subtrees
+// of at most `largest` items (and above kMaxDepth, where buildSubtree makes
+// the leaves), built a level at a time, the splits of a level side by side
+// on `threads` threads. Each node
 // sits where it would if every subtree took all it may: a range of c items
 // keeps in.mostNodes(c), so the second child of a split at `at` is at
 // at + 1 + in.mostNodes(mid - begin). Leaves `subtrees` in node order.
 void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
-             std::uint32_t count, const NodeExtent& extent, int threads) {
-  std::vector<TopRange> level{TopRange{0, 0, count, 0, extent}};
+             std::vector<TopRange> level, int threads) {
   std::vector<TopRange> splitting, next;
   std::vector<std::uint32_t> mids;
   std::vector<std::array<NodeExtent, 2>> children;
@@ -690,6 +656,12 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
       kMaxBuildThreads * (sizeof(Bins) + sizeof(std::exception_ptr));
   constexpr std::uint64_t kParallelBytes = kMaxSubtrees * kSubtreeBytes + kLevelBytes +
                                            kRootBinBytes + kMaxBuildThreads * sizeof(std::thread);
+  // A Morton top's ranges and splits (at most kMaxSubtrees each), the
+  // ranges it has yet to split (at most two a level of its 30), and its
+  // sort's places, a set a thread; its second list is the nodes' room.
+  constexpr std::uint64_t kMortonBytes =
+      kMaxSubtrees * (sizeof(bvh_build::MortonRange) + sizeof(std::uint32_t)) +
+      64 * sizeof(bvh_build::MortonRange) + kMaxBuildThreads * bvh_build::kSortBytesPerThread;
   std::uint64_t perBox = sizeof(std::uint32_t) + sizeof(BuildItem);
   // The nodes' room (mostNodes, and a node over).
   std::uint64_t nodeRoom =
@@ -701,7 +673,8 @@ std::uint64_t Bvh::bytesFor(std::uint64_t boxes) {
           : 0;
   return saturatingSum(
       saturatingSum(saturatingSum(saturatingProduct(boxes, perBox), nodeRoom), partitionBytes),
-      boxes >= kMinParallelBoxes ? kParallelBytes : 0);
+      (boxes >= kMinParallelBoxes ? kParallelBytes : 0) +
+          (boxes >= kMinMortonTopBoxes ? kMortonBytes : 0));
 }
 
 Bvh::Bvh(const std::vector<Bounds>& boxes, int threads)
@@ -727,13 +700,17 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   std::vector<BuildItem> items;
   allocateHere(items, n);
   const std::uint32_t minLeafItems = minLeafItemsFor(nodeCost);
-  nodes_ = BvhNodes(mostNodes(n, minLeafItems));
+  const bool mortonTop = minLeafItems >= 2 && n >= kMinMortonTopBoxes;
+  // A Morton top's sort takes the nodes' room, before any node is written,
+  // for its second list: one node more than the tree may take.
+  static_assert(sizeof(BuildItem) == sizeof(BvhNode));
+  nodes_ = BvhNodes(mortonTop ? n : mostNodes(n, minLeafItems));
   // Both on 2 MiB pages where the system has them: a 512th of the faults as
   // they are first written, and fewer TLB misses in the passes over them
   // (the build took about a sixth less CPU time at floor-1000000 and
   // floor-10000000).
   adviseHugePages(items.data(), items.data() + n);
-  adviseHugePages(nodes_.data(), nodes_.data() + mostNodes(n, minLeafItems));
+  adviseHugePages(nodes_.data(), nodes_.data() + nodes_.span().size());
   items.resize(n);
   const std::size_t parts = static_cast<std::size_t>(threads);
   std::vector<NodeExtent> extents(parts);
@@ -764,7 +741,7 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
     });
     std::vector<BuildItem>().swap(items);
   };
-  if (threads == 1) {
+  if (threads == 1 && !mortonTop) {
     nodes_.shrink(buildSubtree(in, 0, 0, n, 0, extent));
     keepOrder();
     return;
@@ -776,50 +753,30 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   std::uint32_t largest = std::max<std::uint32_t>(n / (kTasksPerThread * threads), 1);
   std::vector<Subtree> subtrees;
   subtrees.reserve(kMaxSubtrees);
-  planTop(in, largest, subtrees, n, extent, threads);
-  buildSubtrees(in, subtrees, threads);
+  if (mortonTop) {
+    // The top from the Morton order, on any thread count, down to ranges
+    // of at most four times `least` items, at least `least` each: at most
+    // kMaxSubtrees of them.
+    bvh_build::sortByMortonCode(items.data(), n, extent.centres, threads,
+                                reinterpret_cast<BuildItem*>(nodes_.data()));
+    const std::uint32_t least = static_cast<std::uint32_t>((n + kMaxSubtrees - 1) / kMaxSubtrees);
+    std::vector<std::uint32_t> splits;
+    std::vector<bvh_build::MortonRange> ranges = bvh_build::mortonTop(
+        items.data(), n, 4 * least, least, minLeafItems, nodes_.data(), splits);
+    std::vector<TopRange> level(ranges.size());
+    runParts(ranges.size(), threads, [&](std::size_t k) {
+      const bvh_build::MortonRange& r = ranges[k];
+      level[k] = TopRange{r.at, r.begin, r.end, r.depth, extentOf(items.data(), r.begin, r.end)};
+    });
+    planTop(in, largest, subtrees, std::move(level), threads);
+    buildSubtrees(in, subtrees, threads);
+    bvh_build::boxSplits(splits, nodes_.data());
+  } else {
+    planTop(in, largest, subtrees, {TopRange{0, 0, n, 0, extent}}, threads);
+    buildSubtrees(in, subtrees, threads);
+  }
   nodes_.shrink(closeGaps(in, subtrees, in.mostNodes(n)));
   keepOrder();
-}
-
-BvhNodes::BvhNodes(std::size_t room) {
-  if (room == 0) return;
-  data_ = static_cast<BvhNode*>(std::malloc(room * sizeof(BvhNode)));
-  if (!data_) throw std::bad_alloc();
-  size_ = room;
-}
-
-BvhNodes::BvhNodes(const BvhNodes& other) : BvhNodes(other.size_) {
-  if (size_ > 0) std::memcpy(data_, other.data_, size_ * sizeof(BvhNode));
-}
-
-BvhNodes& BvhNodes::operator=(const BvhNodes& other) {
-  if (this != &other) *this = BvhNodes(other);
-  return *this;
-}
-
-BvhNodes& BvhNodes::operator=(BvhNodes&& other) noexcept {
-  std::swap(data_, other.data_);
-  std::swap(size_, other.size_);
-  return *this;
-}
-
-BvhNodes::~BvhNodes() {
-  std::free(data_);
-}
-
-void BvhNodes::shrink(std::size_t size) {
-  if (size >= size_) return;
-  if (size == 0) {
-    *this = BvhNodes();
-    return;
-  }
-  // Smaller: realloc cannot fail, and where the room was mapped apart
-  // (a large one) it unmaps the rest rather than copying.
-  if (void* smaller = std::realloc(data_, size * sizeof(BvhNode))) {
-    data_ = static_cast<BvhNode*>(smaller);
-  }
-  size_ = size;
 }
 
 std::vector<std::uint32_t> Bvh::takeOrder() {

@@ -14,6 +14,7 @@
 #endif
 
 #include "renderer/bounds.h"
+#include "renderer/bvh_node.h"
 
 namespace render {
 
@@ -23,50 +24,6 @@ inline std::uint8_t directionSigns(const glm::dvec3& d) {
   return static_cast<std::uint8_t>((std::signbit(d.x) ? 1 : 0) | (std::signbit(d.y) ? 2 : 0) |
                                    (std::signbit(d.z) ? 4 : 0));
 }
-
-// 32 bytes: the box in float, rounded outward from the double bounds so that
-// it still contains them (a ray can only meet more boxes, never fewer), which
-// puts twice as many nodes in each cache line as double boxes did.
-struct BvhNode {
-  // The low corner (x, y, z), then the high one: one array, so that a ray
-  // picks the planes it meets first and last on each axis by an index
-  // worked out once from its direction's signs (Bvh::NodeRay).
-  float planes[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
-  // Interior: index of the second child (the first follows this node).
-  // Leaf: its first item (its items are numbered in a row).
-  std::uint32_t offset = 0;
-  std::uint16_t count = 0;  // items in a leaf; 0 for an interior node
-  std::uint8_t axis = 0;    // split axis of an interior node
-  // Zero: every byte of a node is a member's, so a node written whole
-  // leaves none unset (BvhNodes' room is never cleared).
-  std::uint8_t unused = 0;
-};
-static_assert(sizeof(BvhNode) == 32);
-
-// The nodes of a Bvh, in one block from malloc, so that a build can reserve
-// room for the most nodes a tree can have, write only those it makes (a
-// page never written is never memory) and give back the rest with
-// realloc, which moves no node where the block was mapped on its own.
-class BvhNodes {
- public:
-  BvhNodes() = default;
-  /// Room for `room` nodes, none written.
-  explicit BvhNodes(std::size_t room);
-  BvhNodes(const BvhNodes& other);
-  BvhNodes(BvhNodes&& other) noexcept { *this = std::move(other); }
-  BvhNodes& operator=(const BvhNodes& other);
-  BvhNodes& operator=(BvhNodes&& other) noexcept;
-  ~BvhNodes();
-
-  /// Keeps the first `size` nodes (all written), giving back the rest.
-  void shrink(std::size_t size);
-  BvhNode* data() { return data_; }
-  std::span<const BvhNode> span() const { return {data_, size_}; }
-
- private:
-  BvhNode* data_ = nullptr;
-  std::size_t size_ = 0;
-};
 
 class Bvh {
  public:
@@ -104,6 +61,10 @@ class Bvh {
   /// of two equal ones a camera ray takes does (docs/TRACING.md), so the
   /// count is the whole image's, the same for each of its regions.
   static constexpr std::uint64_t kMinCompactBoxes = std::uint64_t{1} << 16;
+  /// From this many boxes a compact tree's top levels split where the
+  /// Morton codes of the boxes' centres differ (renderer/bvh_morton.h):
+  /// one sort in place of a pass over every box at each of those levels.
+  static constexpr std::uint64_t kMinMortonTopBoxes = std::uint64_t{1} << 16;
   static constexpr std::uint64_t kFullTreeSamplesPerBox = 3;
   static constexpr double nodeCostFor(std::uint64_t boxes, std::uint64_t imageSamples) {
     bool fewSamples = boxes >= kMinCompactBoxes && imageSamples / kFullTreeSamplesPerBox < boxes;
@@ -125,7 +86,7 @@ class Bvh {
   /// holds twice its size while it moves); only the pages of the nodes made
   /// become memory (BvhNodes).
   static constexpr std::uint64_t mostNodes(std::uint64_t boxes, std::uint32_t minLeafItems) {
-    return boxes > 1 ? boxes * (2 / minLeafItems) - 1 : boxes;
+    return mostBvhNodes(boxes, minLeafItems);
   }
 
   /// The most threads a build starts, whatever it is asked for: enough

@@ -380,12 +380,57 @@ TEST(BvhBuild, CompactTreesHaveLeavesOfTwoItemsOrMoreAndFewerNodesThanBoxes) {
     expectCompact(one, boxes.size(), "seed " + std::to_string(seed));
     expectSameTree(one, Bvh(boxes, 3, Bvh::kCompactNodeCost), 3);
   }
+  // From kMinMortonTopBoxes boxes, with the top split in the Morton order
+  // (of one centre, a line and a grid too, where it splits little).
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    std::vector<Bounds> boxes =
+        compactTrialBoxes(seed, static_cast<int>(Bvh::kMinMortonTopBoxes) + 3001);
+    Bvh one(boxes, 1, Bvh::kCompactNodeCost);
+    expectCompact(one, boxes.size(), "Morton top, seed " + std::to_string(seed));
+    expectSameTree(one, Bvh(boxes, 3, Bvh::kCompactNodeCost), 3);
+  }
   // The bound the estimate counts: 64 bytes of nodes a box below the
   // compact price, 32 from it.
   const std::uint64_t from = Bvh::kCompactFromBoxes;
   EXPECT_EQ(Bvh::bytesFor(from + 2) - Bvh::bytesFor(from), 2 * 32 + 2 * 36);
   EXPECT_EQ(Bvh::bytesFor(from - 1) - Bvh::bytesFor(from - 3), 2 * 64 + 2 * 36);
   EXPECT_EQ(Bvh::mostNodes(from, Bvh::minLeafItemsFor(Bvh::nodeCostFor(from))), from - 1);
+}
+
+// The surface area heuristic's price of a tree: each node's area (a
+// fraction of the root's) times kCompactNodeCost, and each leaf's times its
+// items.
+double treePrice(const Bvh& bvh) {
+  auto area = [](const BvhNode& node) {
+    double x = node.planes[3] - node.planes[0], y = node.planes[4] - node.planes[1],
+           z = node.planes[5] - node.planes[2];
+    return x * y + y * z + z * x;
+  };
+  double price = 0.0;
+  for (const BvhNode& node : bvh.nodes()) {
+    price += area(node) * (node.count > 0 ? node.count : Bvh::kCompactNodeCost);
+  }
+  return price / area(bvh.nodes()[0]);
+}
+
+// A floor of boxes of a few sizes, 2,000 wide and 20 high (as sfgen lays
+// them out). The top of its compact tree split in the Morton order prices
+// within 2% of the tree the heuristic splits alone: the same boxes but one,
+// too few for the Morton top.
+TEST(BvhBuild, AMortonTopPricesTheTreeAsTheHeuristicAlone) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> across(-1000.0, 1000.0), up(0.0, 20.0), size(0.5, 6.0);
+  std::vector<Bounds> boxes;
+  for (std::uint64_t i = 0; i < Bvh::kMinMortonTopBoxes; ++i) {
+    glm::dvec3 centre(across(rng), up(rng), across(rng));
+    glm::dvec3 half(size(rng), size(rng), size(rng));
+    boxes.push_back(Bounds{centre - half, centre + half});
+  }
+  const double withMorton = treePrice(Bvh(boxes, 2, Bvh::kCompactNodeCost));
+  boxes.pop_back();
+  const double heuristicAlone = treePrice(Bvh(boxes, 2, Bvh::kCompactNodeCost));
+  EXPECT_LT(withMorton, 1.02 * heuristicAlone);
+  EXPECT_GT(withMorton, 0.98 * heuristicAlone);
 }
 
 // With the whole image's samples known, a tree is compact from
