@@ -522,10 +522,10 @@ struct TopRange {
 // The top of the tree from the ranges of `level` down, above the subtrees
 // of at most `largest` items (and above kMaxDepth, where buildSubtree makes
 // the leaves), built a level at a time, the splits of a level side by side
-// on `threads` threads. Each node
-// sits where it would if every subtree took all it may: a range of c items
-// keeps in.mostNodes(c), so the second child of a split at `at` is at
-// at + 1 + in.mostNodes(mid - begin). Leaves `subtrees` in node order.
+// on `threads` threads. Each node sits where it would if every subtree took
+// all it may: a range of c items keeps in.mostNodes(c), so the second child
+// of a split at `at` is at at + 1 + in.mostNodes(mid - begin). Leaves
+// `subtrees` in node order.
 void planTop(const BuildInput& in, std::uint32_t largest, std::vector<Subtree>& subtrees,
              std::vector<TopRange> level, int threads) {
   std::vector<TopRange> splitting, next;
@@ -696,7 +696,8 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   // The list in parts side by side, each part's extent merged after (a
   // union of boxes, the same whatever the parts): most of it is the first
   // touch of its fresh pages. The nodes' room is only reserved: a page
-  // becomes memory when a node is first written in it.
+  // becomes memory when a node is first written in it (or, under a Morton
+  // top, when its sort writes there).
   std::vector<BuildItem> items;
   allocateHere(items, n);
   const std::uint32_t minLeafItems = minLeafItemsFor(nodeCost);

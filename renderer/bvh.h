@@ -61,15 +61,15 @@ class Bvh {
   /// of two equal ones a camera ray takes does (docs/TRACING.md), so the
   /// count is the whole image's, the same for each of its regions.
   static constexpr std::uint64_t kMinCompactBoxes = std::uint64_t{1} << 16;
-  /// From this many boxes a compact tree's top levels split where the
-  /// Morton codes of the boxes' centres differ (renderer/bvh_morton.h):
-  /// one sort in place of a pass over every box at each of those levels.
-  static constexpr std::uint64_t kMinMortonTopBoxes = std::uint64_t{1} << 16;
   static constexpr std::uint64_t kFullTreeSamplesPerBox = 3;
   static constexpr double nodeCostFor(std::uint64_t boxes, std::uint64_t imageSamples) {
     bool fewSamples = boxes >= kMinCompactBoxes && imageSamples / kFullTreeSamplesPerBox < boxes;
     return fewSamples ? kCompactNodeCost : nodeCostFor(boxes);
   }
+  /// From this many boxes a compact tree's top levels split where the
+  /// Morton codes of the boxes' centres differ (renderer/bvh_morton.h):
+  /// one sort in place of a pass over every box at each of those levels.
+  static constexpr std::uint64_t kMinMortonTopBoxes = std::uint64_t{1} << 16;
   /// The fewest items a leaf holds in a tree priced at `nodeCost` (a tree
   /// of one box aside): 2 at kCompactNodeCost or more, so that such a tree
   /// has at most n / 2 leaves, so n - 1 nodes, and Bvh::bytesFor need count

@@ -1,5 +1,5 @@
 // What a BVH build moves and writes: its items and its nodes' writes,
-// shared by the build (bvh.cpp) and its leaves made first (bvh_clusters).
+// shared by the build (bvh.cpp) and its Morton top (bvh_morton.h).
 #pragma once
 
 #include <cstdint>
@@ -19,8 +19,8 @@ struct BuildItem {
   float planes[6];
   std::uint32_t index;
   // The item's bin in its node's split, set by the binning pass for the
-  // partition after it, which would work it out again (and before the
-  // build, the Morton code that orders the clusters' items).
+  // partition after it, which would work it out again (and before that,
+  // under a Morton top, its Morton code).
   std::uint32_t bin;
   Bounds box() const {
     return Bounds{glm::dvec3(planes[0], planes[1], planes[2]),
@@ -37,7 +37,8 @@ struct BuildItem {
 };
 
 // A node's box: its bounds rounded outward to floats. The first write of
-// every node, which clears it whole (the node's room was never written).
+// every node, which clears it whole (the node's room was never written, or
+// held a Morton top's sort).
 inline void writeBox(BvhNode& node, const Bounds& bounds) {
   node = BvhNode{};
   floatPlanesAround(bounds, node.planes);

@@ -34,10 +34,9 @@ struct MortonRange {
 };
 
 // The top of the tree over the n items of `sorted` (sortByMortonCode's
-// order): a range of
-// more than `most` items is split where its first and last codes' highest
-// differing bit changes, unless a side would hold fewer than `least` (or
-// every code is the same). Each split's node is written at its place, as
+// order): a range of more than `most` items is split where its first and
+// last codes' highest differing bit changes, unless a side would hold
+// fewer than `least` (or every code is the same). Each split's node is written at its place, as
 // the build lays out a tree whose subtrees each take all the room
 // mostBvhNodes(count, minLeafItems) gives them (the first child next, the
 // second past the first's room), with its axis, its second child, and no
