@@ -45,7 +45,7 @@ std::uint32_t partBegin(std::uint32_t n, std::size_t part, std::size_t parts) {
 // each part counts its digits, then moves its items to where the digits of
 // the parts before it end, so the order is the same for any part count.
 void radixPass(const BuildItem* from, BuildItem* to, std::uint32_t n, int shift, int threads) {
-  const std::size_t parts = static_cast<std::size_t>(threads);
+  const std::size_t parts = static_cast<std::size_t>(std::max(threads, 1));
   std::vector<std::array<std::uint32_t, kDigits>> places(parts);
   auto digit = [shift](const BuildItem& item) { return (item.bin >> shift) & (kDigits - 1); };
   runParts(parts, threads, [&](std::size_t k) {
