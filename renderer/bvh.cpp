@@ -754,28 +754,27 @@ Bvh::Bvh(std::uint32_t n, const std::function<Bounds(std::uint32_t)>& boxOf, int
   std::uint32_t largest = std::max<std::uint32_t>(n / (kTasksPerThread * threads), 1);
   std::vector<Subtree> subtrees;
   subtrees.reserve(kMaxSubtrees);
+  // The ranges the heuristic's top starts from: the root, or under a
+  // Morton top its ranges, on any thread count, of at most four times
+  // `least` items, at least `least` each: at most kMaxSubtrees of them.
+  std::vector<TopRange> level{TopRange{0, 0, n, 0, extent}};
+  std::vector<std::uint32_t> splits;
   if (mortonTop) {
-    // The top from the Morton order, on any thread count, down to ranges
-    // of at most four times `least` items, at least `least` each: at most
-    // kMaxSubtrees of them.
     bvh_build::sortByMortonCode(items.data(), n, extent.centres, threads,
                                 reinterpret_cast<BuildItem*>(nodes_.data()));
     const std::uint32_t least = static_cast<std::uint32_t>((n + kMaxSubtrees - 1) / kMaxSubtrees);
-    std::vector<std::uint32_t> splits;
     std::vector<bvh_build::MortonRange> ranges = bvh_build::mortonTop(
         items.data(), n, 4 * least, least, minLeafItems, nodes_.data(), splits);
-    std::vector<TopRange> level(ranges.size());
+    level.resize(ranges.size());
     runParts(ranges.size(), threads, [&](std::size_t k) {
       const bvh_build::MortonRange& r = ranges[k];
       level[k] = TopRange{r.at, r.begin, r.end, r.depth, extentOf(items.data(), r.begin, r.end)};
     });
-    planTop(in, largest, subtrees, std::move(level), threads);
-    buildSubtrees(in, subtrees, threads);
-    bvh_build::boxSplits(splits, nodes_.data());
-  } else {
-    planTop(in, largest, subtrees, {TopRange{0, 0, n, 0, extent}}, threads);
-    buildSubtrees(in, subtrees, threads);
   }
+  planTop(in, largest, subtrees, std::move(level), threads);
+  buildSubtrees(in, subtrees, threads);
+  // The Morton splits' boxes, once their children's are written.
+  bvh_build::boxSplits(splits, nodes_.data());
   nodes_.shrink(closeGaps(in, subtrees, in.mostNodes(n)));
   keepOrder();
 }

@@ -103,11 +103,13 @@ std::vector<MortonRange> mortonTop(const BuildItem* sorted, std::uint32_t n, std
   while (!pending.empty()) {
     const MortonRange r = pending.back();
     pending.pop_back();
-    const std::uint32_t differ = sorted[r.begin].bin ^ sorted[r.end - 1].bin;
+    // The highest bit in which the range's codes differ (its first and
+    // last, the items sorted by their codes).
+    const int bitIndex = std::bit_width(sorted[r.begin].bin ^ sorted[r.end - 1].bin) - 1;
     std::uint32_t mid = r.begin;
-    if (r.end - r.begin > most && differ != 0) {
-      // The first item with the bit set, the items sorted by their codes.
-      const std::uint32_t bit = std::uint32_t{1} << (31 - std::countl_zero(differ));
+    if (r.end - r.begin > most && bitIndex >= 0) {
+      // The first item with the bit set.
+      const std::uint32_t bit = std::uint32_t{1} << bitIndex;
       mid = static_cast<std::uint32_t>(
           std::partition_point(sorted + r.begin, sorted + r.end,
                                [bit](const BuildItem& item) { return (item.bin & bit) == 0; }) -
@@ -119,7 +121,6 @@ std::vector<MortonRange> mortonTop(const BuildItem* sorted, std::uint32_t n, std
     }
     // Bits 3k + 2, 3k + 1 and 3k hold x, y and z: the lower codes of the
     // bit's axis come first, as a split's first child.
-    const int bitIndex = 31 - std::countl_zero(differ);
     BvhNode& node = nodes[r.at];
     node = BvhNode{};
     node.axis = static_cast<std::uint8_t>(2 - bitIndex % 3);
