@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "renderer/huge_pages.h"
 #include "renderer/render_scene.h"
 
 namespace render {
@@ -292,7 +293,7 @@ class TileEdgeCorners {
   int x0_, y0_, width_, height_, tileSize_;
   // The edge rows, (width + 1) corners each, then the edge columns,
   // (height + 1) each (their corners on edge rows unused).
-  std::vector<SampleColour> samples_;
+  std::vector<SampleColour, HugePageAllocator<SampleColour>> samples_;
   std::vector<Run> runs_;
 
   int edgeRows() const { return (height_ + tileSize_ - 1) / tileSize_ + 1; }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/camera.h"
+#include "renderer/huge_pages.h"
 #include "renderer/render_scene.h"
 
 namespace render {
@@ -46,7 +47,7 @@ class AnchorBlocks {
   };
   int span_;
   int columns_, rows_;
-  std::vector<Block> blocks_;
+  std::vector<Block, HugePageAllocator<Block>> blocks_;
 
   void mark(int i0, int i1, int j0, int j1, std::uint32_t object);
 };

@@ -29,5 +29,24 @@ TEST(HugePages, AdviceChangesNoByteInTheRangeOrAroundIt) {
   for (std::size_t i = written; i < bytes.size(); ++i) ASSERT_EQ(bytes[i], 0xA5) << i;
 }
 
+TEST(HugePageAllocator, BigArraysStartOnAHugePageAndHoldWhatIsWrittenAsSmallOnesDo) {
+  // Below half a huge page, at it, past one huge page and a half, and
+  // grown through those sizes by push_back.
+  for (std::size_t count : {std::size_t{1000}, kHugePageBytes / 2 / sizeof(double),
+                            3 * kHugePageBytes / 2 / sizeof(double) + 7}) {
+    std::vector<double, HugePageAllocator<double>> values(count, 0.5);
+    bool big = kHugePagesAdvised && count * sizeof(double) >= kHugePageBytes / 2;
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(values.data()) % kHugePageBytes == 0, big) << count;
+    for (std::size_t i = 0; i < count; ++i) values[i] = static_cast<double>(i) * 0.25;
+    for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(values[i], static_cast<double>(i) * 0.25);
+  }
+  std::vector<std::uint32_t, HugePageAllocator<std::uint32_t>> grown;
+  for (std::uint32_t i = 0; i < kHugePageBytes; ++i) grown.push_back(i ^ 0x5a5a5a5au);
+  for (std::uint32_t i = 0; i < kHugePageBytes; ++i) ASSERT_EQ(grown[i], i ^ 0x5a5a5a5au);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(grown.data()) % kHugePageBytes == 0,
+            kHugePagesAdvised);
+  EXPECT_TRUE(HugePageAllocator<int>() == HugePageAllocator<double>());
+}
+
 }  // namespace
 }  // namespace render
