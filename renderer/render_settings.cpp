@@ -42,9 +42,9 @@ Image blankImageFor(const RenderSettings& settings) {
   image.fullHeight = std::max(0, settings.height);
   std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
   // Advised before it is first written: the whole huge pages within it
-  // fault in 2 MiB at a time (11 MB at 1280x720: a tenth of the CPU time of
-  // a render at --adaptive 0.15, a third of it system time, on the machine
-  // of docs/PERFORMANCE.md).
+  // fault in 2 MiB at a time. Faulted in 4 KiB at a time, its 11 MB at
+  // 1280x720 were a tenth of the CPU time of the default scene at
+  // --adaptive 0.15 (docs/PERFORMANCE.md, "Equal error").
   image.rgb.reserve(pixels * Image::kChannels);
   adviseHugePages(image.rgb.data(), image.rgb.data() + image.rgb.capacity());
   image.rgb.assign(pixels * Image::kChannels, 0.0f);
