@@ -78,7 +78,7 @@ struct HugePageAllocator {
       std::allocator<T>().deallocate(room, n);
       return;
     }
-    ::operator delete(room, roomFor(bytes), kAlignment);
+    ::operator delete(room, kAlignment);
   }
 
   template <class U>
