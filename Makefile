@@ -14,7 +14,8 @@ deps:
 # fast. UNITY_BUILD=OFF compiles each source alone.
 UNITY_BUILD ?= ON
 configure: deps
-	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=$(UNITY_BUILD) >/dev/null
+	@cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=$(UNITY_BUILD) \
+	  -DSCENEFILE_TOOL_LAUNCHER= >/dev/null
 
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -65,7 +66,7 @@ SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_aft
 # -O1 -g1 (line tables): what AddressSanitizer's own documentation advises,
 # and half the compile time of -O2 -g, which was most of this stage. A unity
 # build (several sources to a translation unit) compiles each header fewer
-# times: this stage and test-valgrind build from scratch.
+# times: this stage builds from scratch.
 test-sanitize: deps
 	@cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON \
@@ -75,20 +76,21 @@ test-sanitize: deps
 
 # The tools' end-to-end tests (ctest label "valgrind") with every run of sfcheck,
 # sfconvert and sfrender under valgrind: any invalid access, use of an
-# uninitialised value, or definite or indirect leak fails the test. Line
-# tables (-g1) are all valgrind's reports need. Without the inlined frames
-# in its stacks (--read-inline-info=no; each report still names the file
-# and line of the function around them) a tool starts in 1.6 s under
-# valgrind instead of 2.1: start-up is most of each of the stage's 259 tests.
-VALGRIND_DIR ?= build-valgrind
+# uninitialised value, or definite or indirect leak fails the test. They run
+# the Release build's tools ($(BUILD_DIR)), compiled once for make test and
+# this: its tree takes valgrind as the tools' launcher for the run, and drops
+# it after (configure names no launcher, should a run be cut short). Its
+# binaries have no line tables, so a report names each frame's function, not
+# its line. Without the inlined frames in its stacks (--read-inline-info=no)
+# a tool starts in 1.6 s under valgrind instead of 2.1: start-up is most of
+# each of the stage's 275 tests.
 VALGRIND = valgrind;-q;--read-inline-info=no;--error-exitcode=99;--leak-check=full;--errors-for-leak-kinds=definite,indirect;--show-leak-kinds=definite,indirect;--suppressions=$(CURDIR)/tests/sanitizers/valgrind.supp
 .PHONY: test-valgrind
-test-valgrind: deps
-	@cmake -S . -B $(VALGRIND_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON \
-	  "-DSCENEFILE_TOOL_LAUNCHER=$(VALGRIND)" >/dev/null
-	@cmake --build $(VALGRIND_DIR) -j $(JOBS) --target sfcheck sfconvert sfrender sfrender_oiio
-	@cd $(VALGRIND_DIR) && ctest -L valgrind -LE slurm --output-on-failure -j $(JOBS)
+test-valgrind: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target sfcheck sfconvert sfrender sfrender_oiio
+	@cmake -S . -B $(BUILD_DIR) "-DSCENEFILE_TOOL_LAUNCHER=$(VALGRIND)" >/dev/null
+	@status=0; (cd $(BUILD_DIR) && ctest -L valgrind -LE slurm --output-on-failure -j $(JOBS)) || \
+	  status=$$?; cmake -S . -B $(BUILD_DIR) -DSCENEFILE_TOOL_LAUNCHER= >/dev/null; exit $$status
 
 # libFuzzer on every reader and on sfconvert's whole path, under ASan and
 # UBSan (tests/fuzz, scripts/fuzz.sh): FUZZ_SECONDS per target (FUZZ_JOBS
